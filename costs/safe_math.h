@@ -1,0 +1,23 @@
+// Autodiff-safe helpers shared by the cost functors (architecture.md, fact 5).
+#ifndef DRAPE_COSTS_SAFE_MATH_H_
+#define DRAPE_COSTS_SAFE_MATH_H_
+
+#include <cmath>
+
+#include "costs/nested_jet.h"
+
+namespace drape {
+
+// |d| for d = b − a, with a zero derivative (not NaN) when the two points coincide.
+template <typename T>
+T SafeDistance(const T* a, const T* b) {
+  using std::sqrt;
+  const T dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
+  const T squared = dx * dx + dy * dy + dz * dz;
+  if (squared > 0.0) return sqrt(squared);
+  return T();
+}
+
+}  // namespace drape
+
+#endif  // DRAPE_COSTS_SAFE_MATH_H_

@@ -1,0 +1,18 @@
+// Factories of the solver methods (each defined in its own solver_*.cc file).
+#ifndef DRAPE_SRC_SOLVERS_H_
+#define DRAPE_SRC_SOLVERS_H_
+
+#include <ceres/types.h>
+
+#include <memory>
+
+#include "src/solver.h"
+
+namespace drape {
+
+std::unique_ptr<Solver> NewCeresLbfgsSolver();
+std::unique_ptr<Solver> NewCeresLeastSquaresSolver(ceres::TrustRegionStrategyType strategy);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_SOLVERS_H_

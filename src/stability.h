@@ -1,0 +1,20 @@
+// Whether an equilibrium is a stable minimum: the unprojected Hessian over the free coordinates
+// is positive definite.
+#ifndef DRAPE_SRC_STABILITY_H_
+#define DRAPE_SRC_STABILITY_H_
+
+#include "src/model.h"
+
+namespace drape {
+
+struct Stability {
+  bool computed = false;        // false when the Hessian could not be evaluated
+  bool stable = false;          // the free Hessian factorises as positive definite
+  double min_eigenvalue = 0.0;  // estimate of the most negative eigenvalue when not stable, N/m
+};
+
+Stability AnalyseStability(const Model& model, const double* positions);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_STABILITY_H_

@@ -1,0 +1,20 @@
+// Result files: summary.json, nodes.csv, history.csv, mesh.vtk, mesh.obj. Each is written to a
+// temporary name in the output folder and renamed, so no half-written file is ever left.
+#ifndef DRAPE_SRC_WRITERS_H_
+#define DRAPE_SRC_WRITERS_H_
+
+#include <string>
+
+#include "src/model.h"
+#include "src/run.h"
+#include "src/scene.h"
+
+namespace drape {
+
+// Writes what scene.output.write asks for into `directory` (created if needed).
+void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
+                  const std::string& directory);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_WRITERS_H_

@@ -1,0 +1,125 @@
+// Checks every cost functor passes (through its Term): derivatives against central differences,
+// rigid-motion invariance, balanced forces. Shared by the per-cost test files.
+#ifndef DRAPE_TESTS_TERM_CHECKS_H_
+#define DRAPE_TESTS_TERM_CHECKS_H_
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "src/term.h"
+
+namespace drape::testing {
+
+// Largest node id of the term + 1, so that `positions` can be sized.
+inline int NodesSpanned(const Term& term) {
+  int count = 0;
+  for (int node : term.nodes()) count = std::max(count, node + 1);
+  return count;
+}
+
+// Energy and its gradient/Hessian from the term agree with central differences of the energy
+// (and of the gradient), to `tolerance` relative to the largest entry.
+inline void ExpectDerivativesMatchDifferences(const Term& term, std::vector<double> positions,
+                                              double tolerance = 1e-6) {
+  const int n = term.num_coordinates();
+  std::vector<double> gradient(n), hessian(n * n), g_plus(n), g_minus(n);
+  double energy = 0.0, energy_h = 0.0;
+  ASSERT_TRUE(term.EnergyGradient(positions.data(), &energy, gradient.data()));
+  ASSERT_TRUE(term.EnergyHessian(positions.data(), &energy_h, g_plus.data(), hessian.data()));
+  double plain = 0.0;
+  ASSERT_TRUE(term.Energy(positions.data(), &plain));
+  EXPECT_NEAR(energy, plain, 1e-12 * (1.0 + std::abs(plain)));
+  EXPECT_NEAR(energy_h, plain, 1e-12 * (1.0 + std::abs(plain)));
+
+  double scale = 0.0;
+  for (double p : positions) scale = std::max(scale, std::abs(p));
+  const double h = 1e-6 * std::max(scale, 1e-3);
+  std::vector<double> numeric_gradient(n), numeric_hessian(n * n);
+  for (int k = 0; k < n; ++k) {
+    const int global = 3 * term.nodes()[k / 3] + k % 3;
+    const double saved = positions[global];
+    double e_plus, e_minus, unused;
+    positions[global] = saved + h;
+    ASSERT_TRUE(term.Energy(positions.data(), &e_plus));
+    ASSERT_TRUE(term.EnergyGradient(positions.data(), &unused, g_plus.data()));
+    positions[global] = saved - h;
+    ASSERT_TRUE(term.Energy(positions.data(), &e_minus));
+    ASSERT_TRUE(term.EnergyGradient(positions.data(), &unused, g_minus.data()));
+    positions[global] = saved;
+    numeric_gradient[k] = (e_plus - e_minus) / (2 * h);
+    for (int r = 0; r < n; ++r) numeric_hessian[r * n + k] = (g_plus[r] - g_minus[r]) / (2 * h);
+  }
+  double g_scale = 1e-12, h_scale = 1e-12;
+  for (int k = 0; k < n; ++k) g_scale = std::max(g_scale, std::abs(gradient[k]));
+  for (int k = 0; k < n * n; ++k) h_scale = std::max(h_scale, std::abs(hessian[k]));
+  for (int k = 0; k < n; ++k) {
+    EXPECT_NEAR(gradient[k], numeric_gradient[k], tolerance * g_scale) << "gradient entry " << k;
+  }
+  for (int k = 0; k < n * n; ++k) {
+    EXPECT_NEAR(hessian[k], numeric_hessian[k], tolerance * h_scale) << "Hessian entry " << k;
+    EXPECT_NEAR(hessian[k], hessian[(k % n) * n + k / n], 1e-9 * h_scale) << "symmetry " << k;
+  }
+}
+
+// The energy does not change under a rigid translation and rotation of the term's nodes.
+inline void ExpectRigidMotionInvariant(const Term& term, const std::vector<double>& positions) {
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix();
+  const Eigen::Vector3d shift(0.3, -1.1, 2.0);
+  std::vector<double> moved = positions;
+  for (int node : term.nodes()) {
+    const Eigen::Vector3d p(positions[3 * node], positions[3 * node + 1], positions[3 * node + 2]);
+    const Eigen::Vector3d q = rotation * p + shift;
+    for (int c = 0; c < 3; ++c) moved[3 * node + c] = q[c];
+  }
+  double before, after;
+  ASSERT_TRUE(term.Energy(positions.data(), &before));
+  ASSERT_TRUE(term.Energy(moved.data(), &after));
+  EXPECT_NEAR(before, after, 1e-10 * (1.0 + std::abs(before)));
+}
+
+// The term's nodal forces sum to zero and have zero total moment (internal forces).
+inline void ExpectForcesBalance(const Term& term, const std::vector<double>& positions) {
+  const int n = term.num_coordinates();
+  std::vector<double> gradient(n);
+  double energy;
+  ASSERT_TRUE(term.EnergyGradient(positions.data(), &energy, gradient.data()));
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+  double scale = 1e-12;
+  for (size_t a = 0; a < term.nodes().size(); ++a) {
+    const Eigen::Vector3d f(-gradient[3 * a], -gradient[3 * a + 1], -gradient[3 * a + 2]);
+    const int node = term.nodes()[a];
+    const Eigen::Vector3d p(positions[3 * node], positions[3 * node + 1], positions[3 * node + 2]);
+    force += f;
+    moment += p.cross(f);
+    scale = std::max(scale, f.norm() * (1.0 + p.norm()));
+  }
+  EXPECT_LT(force.norm(), 1e-10 * scale);
+  EXPECT_LT(moment.norm(), 1e-10 * scale);
+}
+
+// The forces vanish (the energy is stationary) at `positions`.
+inline void ExpectZeroForce(const Term& term, const std::vector<double>& positions,
+                            double tolerance = 1e-12) {
+  std::vector<double> gradient(term.num_coordinates());
+  double energy;
+  ASSERT_TRUE(term.EnergyGradient(positions.data(), &energy, gradient.data()));
+  for (double g : gradient) EXPECT_NEAR(g, 0.0, tolerance);
+}
+
+// Positions of `count` nodes drawn uniformly in a box of side `size`.
+inline std::vector<double> RandomPositions(int count, double size, unsigned seed) {
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> uniform(-0.5 * size, 0.5 * size);
+  std::vector<double> positions(3 * count);
+  for (double& p : positions) p = uniform(generator);
+  return positions;
+}
+
+}  // namespace drape::testing
+
+#endif  // DRAPE_TESTS_TERM_CHECKS_H_
