@@ -1,0 +1,46 @@
+// Loading the repository's scene files in tests, and solving them.
+#ifndef DRAPE_TESTS_TEST_SCENES_H_
+#define DRAPE_TESTS_TEST_SCENES_H_
+
+#include <string>
+#include <vector>
+
+#include "src/model.h"
+#include "src/run.h"
+#include "src/scene.h"
+#include "src/scene_loader.h"
+
+namespace drape::testing {
+
+inline std::string SourcePath(const std::string& relative) {
+  return std::string(DRAPE_SOURCE_DIR) + "/" + relative;
+}
+
+inline Scene LoadConfig(const std::string& relative,
+                        const std::vector<std::string>& overrides = {}) {
+  return LoadScene(SourcePath(relative), overrides);
+}
+
+struct Solved {
+  Scene scene;
+  Model model;
+  RunResult result;
+};
+
+// Loads, builds and solves a scene from the repository with the given method.
+inline Solved SolveConfig(const std::string& relative, const std::string& method,
+                          const std::vector<std::string>& overrides = {}) {
+  Solved solved{LoadConfig(relative, overrides), Model{}, RunResult{}};
+  solved.model = BuildModel(solved.scene);
+  solved.result = RunSolve(solved.scene, solved.model, method);
+  return solved;
+}
+
+inline Eigen::Vector3d Position(const Model& model, int node) {
+  return Eigen::Vector3d(model.positions[3 * node], model.positions[3 * node + 1],
+                         model.positions[3 * node + 2]);
+}
+
+}  // namespace drape::testing
+
+#endif  // DRAPE_TESTS_TEST_SCENES_H_
