@@ -1,0 +1,212 @@
+// Bad input, end to end through the `drape` command (DRAPE_BINARY): every scene in tests/data/bad/
+// is rejected by `drape check` and `drape solve` with exit status 2, a message
+// "FILE:LINE:COLUMN: key.path: what is wrong" on stderr, and nothing written.
+//
+// Each fixture states what it expects on its first line:
+//   # expect: LINE:COLUMN: key.path: the start of the message
+//   # expect: LINE:COLUMN: key.path: ... words later in the message
+// and the test looks for a stderr line with "FILE:" followed by that text (and the words after
+// " ... " further along the same line).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kBadFolder = fs::path(DRAPE_SOURCE_DIR) / "tests" / "data" / "bad";
+
+struct Outcome {
+  int exit_status = -1;
+  std::string err;
+};
+
+std::string ShellQuoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// The fixtures, by file stem.
+std::vector<std::string> BadScenes() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(kBadFolder)) {
+    if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// What a fixture expects after "FILE:", from its first line.
+std::string Expectation(const fs::path& scene) {
+  std::ifstream file(scene);
+  std::string first;
+  std::getline(file, first);
+  const std::string marker = "# expect: ";
+  return first.rfind(marker, 0) == 0 ? first.substr(marker.size()) : "";
+}
+
+// Does some line of `text` hold `expected`, followed later by `later`?
+bool HasLine(const std::string& text, const std::string& expected, const std::string& later) {
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    const size_t at = line.find(expected);
+    if (at != std::string::npos && line.find(later, at + expected.size()) != std::string::npos) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Does some line of `text` start with "FILE:LINE:COLUMN: " (the located-message shape)?
+bool HasLocatedLine(const std::string& text, const std::string& file) {
+  std::istringstream lines(text);
+  std::string line;
+  const std::string prefix = file + ":";
+  while (std::getline(lines, line)) {
+    if (line.rfind(prefix, 0) != 0) continue;
+    if (std::regex_search(line.substr(prefix.size()), std::regex("^[0-9]+:[0-9]+: \\S"))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+class BadInputTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(test->name());
+    std::replace(name.begin(), name.end(), '/', '_');
+    scratch_ =
+        fs::temp_directory_path() / ("drape_bad_input_" + std::to_string(::getpid()) + "_" + name);
+    fs::remove_all(scratch_);
+    fs::create_directories(scratch_);
+    out_ = scratch_ / "out";  // must never be created
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  Outcome Drape(const std::vector<std::string>& args) const {
+    std::string command = ShellQuoted(DRAPE_BINARY);
+    for (const auto& arg : args) command += " " + ShellQuoted(arg);
+    const fs::path err = scratch_ / "stderr.txt";
+    command += " > /dev/null 2> " + ShellQuoted(err.string());
+    const int status = std::system(command.c_str());
+    Outcome outcome;
+    outcome.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    outcome.err = ReadText(err);
+    fs::remove(err);
+    return outcome;
+  }
+
+  // `drape check` and `drape solve --out` both reject `scene` with exit 2, a stderr line holding
+  // `expected` (then `later`, if given), and write nothing.
+  void ExpectRejected(const std::string& scene, const std::string& expected,
+                      const std::vector<std::string>& extra = {}, const std::string& later = "") {
+    std::vector<std::string> check = {"check", scene};
+    std::vector<std::string> solve = {"solve", scene, "--out", out_.string()};
+    check.insert(check.end(), extra.begin(), extra.end());
+    solve.insert(solve.end(), extra.begin(), extra.end());
+    for (const auto& args : {check, solve}) {
+      SCOPED_TRACE(args[0]);
+      const Outcome outcome = Drape(args);
+      EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
+      EXPECT_TRUE(HasLine(outcome.err, expected, later))
+          << "expected '" << expected << "'" << (later.empty() ? "" : " ... '" + later + "'")
+          << " on stderr, got:\n"
+          << outcome.err;
+      EXPECT_FALSE(fs::exists(out_)) << "a rejected scene wrote " << out_;
+    }
+  }
+
+  fs::path scratch_;
+  fs::path out_;
+};
+
+class BadSceneFileTest : public BadInputTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(BadSceneFileTest, IsRejectedWithALocatedMessageAndNothingWritten) {
+  const fs::path scene = kBadFolder / (GetParam() + ".yaml");
+  std::string expected = Expectation(scene), later;
+  ASSERT_FALSE(expected.empty()) << scene << " has no '# expect: ' first line";
+  ASSERT_TRUE(std::regex_search(expected, std::regex("^[0-9]+:[0-9]+: ")))
+      << "the expectation of " << scene << " starts with no LINE:COLUMN";
+  const size_t gap = expected.find(" ... ");
+  if (gap != std::string::npos) {
+    later = expected.substr(gap + 5);
+    expected = expected.substr(0, gap + 1);
+  }
+  ExpectRejected(scene.string(), scene.string() + ":" + expected, {}, later);
+  const Outcome outcome = Drape({"check", scene.string()});
+  EXPECT_TRUE(HasLocatedLine(outcome.err, scene.string())) << outcome.err;
+  // Nothing lands next to the scene either (its default output folder).
+  EXPECT_FALSE(fs::exists(kBadFolder / "out"));
+}
+
+INSTANTIATE_TEST_SUITE_P(BadInput, BadSceneFileTest, ::testing::ValuesIn(BadScenes()),
+                         [](const auto& info) { return info.param; });
+
+TEST(BadInput, EveryKindOfBadInputHasAFixture) {
+  const auto names = BadScenes();
+  for (const char* name :
+       {"unknown_key",      "wrong_type",         "list_expected",   "missing_mesh",
+        "missing_mass",     "negative_stiffness", "zero_mass",       "nan",
+        "infinity",         "duplicate_key",      "octal",           "bad_number",
+        "syntax_error",     "one_node_grid",      "one_node_circle", "repeated_coordinate",
+        "coincident_nodes", "empty_selection",    "id_out_of_range", "ij_out_of_range",
+        "unreadable_mesh",  "no_support",         "unknown_dof",     "dimension",
+        "unknown_method"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+  }
+}
+
+TEST_F(BadInputTest, UnreadableSceneFile) {
+  const std::string missing = (scratch_ / "no_such_scene.yaml").string();
+  ExpectRejected(missing, missing + ": cannot read");
+}
+
+// A valid scene, so that only the override is wrong.
+std::string WriteValidScene(const fs::path& folder) {
+  const fs::path scene = folder / "valid.yaml";
+  std::ofstream(scene) << "mesh: {kind: chain, length: 0.4, nodes: 5}\n"
+                          "material: {node_mass: 0.01, springs: {structural: 50}}\n"
+                          "fixed:\n  - nodes: {ids: [0, 4]}\n"
+                          "loads: {gravity: [0, 0, -9.81]}\n"
+                          "solver: {method: ceres-lbfgs, max_iterations: 100}\n";
+  return scene.string();
+}
+
+TEST_F(BadInputTest, MalformedOverride) {
+  ExpectRejected(WriteValidScene(scratch_), "--set:1:1: ", {"--set", "mesh.nodes"});
+}
+
+TEST_F(BadInputTest, OverrideThroughAValue) {
+  ExpectRejected(WriteValidScene(scratch_), "--set:1:11: ", {"--set", "mesh.kind.x=1"});
+}
+
+TEST_F(BadInputTest, OverrideWithABadValueIsLocatedInTheOverride) {
+  ExpectRejected(WriteValidScene(scratch_), "--set:2:20: material.node_mass: must be positive",
+                 {"--set", "solver.tolerance=1e-6", "--set", "material.node_mass=-1"});
+}
+
+}  // namespace
+}  // namespace drape
