@@ -41,6 +41,10 @@ struct SolverSummary {
   std::vector<IterationRecord> history;
   // Extra per-method figures worth reporting (e.g. "factorizations"), written to summary.json.
   std::map<std::string, double> statistics;
+  // A per-step series beyond the history (the dynamic scheme's kinetic energy, written to
+  // kinetic.csv): column names, then one row per step.
+  std::vector<std::string> trace_columns;
+  std::vector<std::vector<double>> trace;
 };
 
 class Solver {

@@ -8,6 +8,12 @@ namespace drape {
 
 const std::vector<SolverInfo>& AllSolvers() {
   static const std::vector<SolverInfo> solvers = {
+      {"newton",
+       "Newton on the exact energy: nested-Jet Hessians, per-term PSD projection far from the "
+       "solution, CHOLMOD supernodal Cholesky, pseudo-time regularisation M/dt^2 and an Armijo "
+       "line search; quadratic near the end (the default)",
+       {"regularization", "max_line_search", "exact_hessian_residual"},
+       [] { return NewNewtonSolver(); }},
       {"ceres-lbfgs",
        "L-BFGS on the exact energy (ceres::GradientProblemSolver, per-term autodiff gradients)",
        {"memory"},
@@ -21,6 +27,16 @@ const std::vector<SolverInfo>& AllSolvers() {
        "Powell's dogleg on the terms as least squares (linear potentials shifted)",
        {},
        [] { return NewCeresLeastSquaresSolver(ceres::DOGLEG); }},
+      {"puiseux-fixed-point",
+       "Puiseux's fixed point: A0 x(n+1) = A(xn) xn + f with A0 factorised once; springs and "
+       "constant forces only; the reference solver of the mass-spring model",
+       {"relaxation"},
+       [] { return NewPuiseuxFixedPointSolver(); }},
+      {"puiseux-dynamic",
+       "Puiseux's implicit dynamic scheme (A0 + M/dt^2 + beta/2dt) x(n+1) = ...; stops at rest, "
+       "at t_max or on the residual; writes kinetic.csv",
+       {"dt", "beta", "t_max", "epsilon"},
+       [] { return NewPuiseuxDynamicSolver(); }},
   };
   return solvers;
 }

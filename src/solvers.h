@@ -10,8 +10,11 @@
 
 namespace drape {
 
+std::unique_ptr<Solver> NewNewtonSolver();
 std::unique_ptr<Solver> NewCeresLbfgsSolver();
 std::unique_ptr<Solver> NewCeresLeastSquaresSolver(ceres::TrustRegionStrategyType strategy);
+std::unique_ptr<Solver> NewPuiseuxFixedPointSolver();
+std::unique_ptr<Solver> NewPuiseuxDynamicSolver();
 
 }  // namespace drape
 

@@ -14,7 +14,8 @@ namespace {
 // `span` apart, every interior node carrying `weight`. In equilibrium the horizontal tension H is
 // the same in every segment and the vertical one grows by `weight` at each node: V_i = V_0 + i w.
 // Segment i has tension T_i = √(H² + V_i²), length L0 + T_i/k, direction (H, V_i)/T_i. The span
-// and the level of the far end close the polygon: two equations for (H, V_0), solved by Newton.
+// and the level of the far end close the polygon. By symmetry V_0 = −(N − 1) w / 2 closes the
+// level; the span grows monotonically with H, so bisection finds H.
 struct Funicular {
   int segments;
   double k, rest, weight, span;
@@ -29,21 +30,13 @@ struct Funicular {
   }
 
   Eigen::Vector2d SolveTensions() const {
-    Eigen::Vector2d unknown(weight * segments, -0.5 * (segments - 1) * weight);
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      const Eigen::Vector2d f = Closure(unknown[0], unknown[1]);
-      if (f.norm() < 1e-15) break;
-      Eigen::Matrix2d jacobian;
-      for (int c = 0; c < 2; ++c) {
-        Eigen::Vector2d step = Eigen::Vector2d::Zero();
-        step[c] = 1e-7 * std::max(1.0, std::abs(unknown[c]));
-        jacobian.col(c) = (Closure(unknown[0] + step[0], unknown[1] + step[1]) -
-                           Closure(unknown[0] - step[0], unknown[1] - step[1])) /
-                          (2 * step[c]);
-      }
-      unknown -= jacobian.partialPivLu().solve(f);
+    const double V0 = -0.5 * (segments - 1) * weight;
+    double low = 1e-12, high = 1e6;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (low + high);
+      (Closure(mid, V0)[0] < 0.0 ? low : high) = mid;
     }
-    return unknown;
+    return Eigen::Vector2d(0.5 * (low + high), V0);
   }
 
   std::vector<Eigen::Vector2d> Nodes(const Eigen::Vector2d& start, double H, double V0) const {
@@ -62,7 +55,7 @@ void ExpectMatchesFunicular(const testing::Solved& solved) {
   const double g = 9.81, node_mass = 0.01;
   const Funicular polygon{segments, 50.0, 0.1, node_mass * g, 0.8};
   const Eigen::Vector2d tensions = polygon.SolveTensions();
-  ASSERT_LT(polygon.Closure(tensions[0], tensions[1]).norm(), 1e-13);
+  ASSERT_LT(polygon.Closure(tensions[0], tensions[1]).norm(), 1e-14);
   const auto expected = polygon.Nodes(Eigen::Vector2d(0.1, 0.0), tensions[0], tensions[1]);
   for (int node = 0; node < model.num_nodes; ++node) {
     const Eigen::Vector3d p = testing::Position(model, node);
@@ -95,6 +88,31 @@ TEST(FunicularChain, ExampleChainIsTheSameScene) {
   const auto solved = testing::SolveConfig("configs/examples/chain.yaml", "ceres-lbfgs");
   EXPECT_TRUE(solved.result.converged) << solved.result.summary.termination;
   ExpectMatchesFunicular(solved);
+}
+
+}  // namespace
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+TEST(FunicularChain, PuiseuxFixedPointReachesTheExactPolygon) {
+  const auto solved =
+      testing::SolveConfig("configs/validation/funicular_chain.yaml", "puiseux-fixed-point");
+  EXPECT_TRUE(solved.result.converged) << solved.result.summary.termination;
+  ExpectMatchesFunicular(solved);
+}
+
+TEST(FunicularChain, PuiseuxDynamicComesToRestOnThePolygon) {
+  const auto solved =
+      testing::SolveConfig("configs/validation/funicular_chain.yaml", "puiseux-dynamic",
+                           {"solver.puiseux-dynamic={dt: 0.05, beta: 0.05, epsilon: 1e-15}"});
+  EXPECT_TRUE(solved.result.converged) << solved.result.summary.termination;
+  ExpectMatchesFunicular(solved);
+  const auto& trace = solved.result.summary.trace;
+  ASSERT_GT(trace.size(), 2u);
+  EXPECT_GT(trace[1][2], 0.0);  // it moved
+  EXPECT_LT(trace.back()[2], trace[1][2]);
 }
 
 }  // namespace

@@ -59,8 +59,12 @@ void ExpectMatchesLaplace(const testing::Solved& solved) {
     EXPECT_NEAR(position.x(), solved.model.initial[3 * p], 1e-8 * largest);
     EXPECT_NEAR(position.y(), solved.model.initial[3 * p + 1], 1e-8 * largest);
   }
-  // The supports carry the whole load.
-  EXPECT_NEAR(solved.result.certificate.reaction_sum.z(), 0.01 * n * n, 1e-9);
+  // The supports carry the whole load, up to the free forces left unbalanced (Cauchy–Schwarz:
+  // their sum is at most √dofs × their norm).
+  const auto& certificate = solved.result.certificate;
+  const double unbalanced = std::sqrt(solved.model.num_dofs()) * certificate.relative_residual *
+                            certificate.reference_force;
+  EXPECT_NEAR(certificate.reaction_sum.z(), 0.01 * n * n, unbalanced + 1e-12);
 }
 
 TEST(LaplacianNet, CeresLbfgsSolvesTheDiscreteLaplacian) {
@@ -69,9 +73,21 @@ TEST(LaplacianNet, CeresLbfgsSolvesTheDiscreteLaplacian) {
   ExpectMatchesLaplace(solved);
 }
 
+// Least squares carries the loads as shifted square roots; the cost's roundoff limits it to a
+// relative residual near 1e-9 here (src/solver_ceres_least_squares.cc), so it is asked for 1e-8.
 TEST(LaplacianNet, CeresLevenbergMarquardtSolvesTheDiscreteLaplacian) {
-  const auto solved = testing::SolveConfig("configs/validation/laplacian_net.yaml", "ceres-lm");
+  const auto solved = testing::SolveConfig("configs/validation/laplacian_net.yaml", "ceres-lm",
+                                           {"solver.tolerance=1e-8"});
   EXPECT_TRUE(solved.result.converged) << solved.result.summary.termination;
+  ExpectMatchesLaplace(solved);
+}
+
+// A0 is exactly this net's stiffness, so Puiseux's fixed point solves it in one step.
+TEST(LaplacianNet, PuiseuxFixedPointSolvesItInOneStep) {
+  const auto solved =
+      testing::SolveConfig("configs/validation/laplacian_net.yaml", "puiseux-fixed-point");
+  EXPECT_TRUE(solved.result.converged) << solved.result.summary.termination;
+  EXPECT_LE(solved.result.summary.iterations, 2);
   ExpectMatchesLaplace(solved);
 }
 

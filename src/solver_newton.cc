@@ -1,0 +1,327 @@
+// newton: Newton's method on the total energy over the free coordinates, with exact Hessians.
+//
+// Each iteration assembles the energy, its gradient and its Hessian from the terms' nested-Jet
+// derivatives (FreeHessian), in two versions: the true Hessian H and H₊, whose every term is
+// projected to positive semidefinite. The step p solves (A + λ D) p = −g with CHOLMOD (symbolic
+// analysis once), where
+//   A = H when H + λD factorises (only H gives quadratic convergence), else H₊ (H₊ ≠ H where a
+//       term is indefinite, e.g. a compressed spring); after H fails, H₊ is used until the
+//       residual has fallen tenfold;
+//   D = the lumped masses over their mean (1 for a massless coordinate), so λ D = M/dt² is an
+//       implicit pseudo-time step of length dt = √(M̄/λ): far from equilibrium the sheet falls
+//       like a damped body instead of jumping along a near-singular Newton direction;
+//   λ = μ · s · min(1, r): s the mean diagonal of H₊ at the start (the stiffness scale, so every
+//       setting is dimensionless and the iterates do not depend on the units), r the relative
+//       residual, μ adapted by Nielsen's rule on the gain ratio of the full step, and multiplied
+//       by 10 when the matrix does not factorise or no step decreases the energy. As steps
+//       succeed, μ and r fall, dt grows without bound and the method becomes Newton's, with
+//       quadratic convergence (λ = O(‖g‖) keeps it quadratic even where H is singular, as for a
+//       sheet turning freely about one support).
+// The step is accepted by a backtracking (Armijo) line search on the true energy; a trial point
+// whose energy is not finite is never accepted, the step is shortened instead. Near the end,
+// where the predicted decrease is below the rounding of the energy, the full Newton step is
+// accepted unless the energy rises beyond that rounding.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "src/equilibrium.h"
+#include "src/solvers.h"
+#include "src/sparse_hessian.h"
+
+namespace drape {
+
+namespace {
+
+struct NewtonSettings {
+  double regularization = 1e-4;  // μ at the start (dimensionless)
+  double min_regularization = 1e-12;
+  double max_regularization = 1e16;
+  int max_line_search = 30;  // energy evaluations per step
+  // Try the unprojected H first below this relative residual (by default always; after H fails to
+  // factorise, H₊ is used until the residual has fallen tenfold).
+  double exact_hessian_residual = std::numeric_limits<double>::infinity();
+  double armijo = 1e-4;
+};
+
+NewtonSettings ReadSettings(const std::map<std::string, double>& options) {
+  NewtonSettings settings;
+  auto read = [&options](const char* key, double* value) {
+    if (auto it = options.find(key); it != options.end()) *value = it->second;
+  };
+  read("regularization", &settings.regularization);
+  read("exact_hessian_residual", &settings.exact_hessian_residual);
+  double max_line_search = settings.max_line_search;
+  read("max_line_search", &max_line_search);
+  settings.max_line_search = std::max(1, static_cast<int>(max_line_search));
+  return settings;
+}
+
+class Stopwatch {
+ public:
+  explicit Stopwatch(double* total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~Stopwatch() {
+    *total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  double* total_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+struct Counters {
+  int factorizations = 0, failed_factorizations = 0, energy_evaluations = 0;
+  int exact_hessian_steps = 0, line_search_failures = 0, projected_terms = 0;
+  double assembly_s = 0.0, factorization_s = 0.0, solve_s = 0.0, line_search_s = 0.0;
+};
+
+// Weights D of the pseudo-time term: lumped masses over their mean, 1 where there is no mass.
+std::vector<double> PseudoTimeWeights(const Model& model, const DofMap& dofs) {
+  std::vector<double> weights(dofs.num_free(), 1.0);
+  double sum = 0.0;
+  int count = 0;
+  for (int f = 0; f < dofs.num_free(); ++f) {
+    const double mass = model.mass.empty() ? 0.0 : model.mass[dofs.free_to_global()[f] / 3];
+    if (mass > 0.0) sum += mass, ++count;
+  }
+  if (count == 0) return weights;
+  const double mean = sum / count;
+  for (int f = 0; f < dofs.num_free(); ++f) {
+    const double mass = model.mass[dofs.free_to_global()[f] / 3];
+    if (mass > 0.0) weights[f] = mass / mean;
+  }
+  return weights;
+}
+
+double StiffnessScale(const FreeHessian& hessian) {
+  double projected = 0.0, exact = 0.0;
+  for (int k : hessian.diagonal()) {
+    projected += hessian.projected_values()[k];
+    exact += std::abs(hessian.values()[k]);
+  }
+  if (projected > 0.0 && std::isfinite(projected)) return projected / hessian.size();
+  if (exact > 0.0 && std::isfinite(exact)) return exact / hessian.size();
+  return 1.0;
+}
+
+class NewtonIteration {
+ public:
+  NewtonIteration(Model& model, const SolverOptions& options, SolverSummary* summary)
+      : model_(model),
+        settings_(ReadSettings(options.method_options)),
+        monitor_(model, options, summary),
+        dofs_(model),
+        hessian_(model, dofs_),
+        cholesky_(hessian_),
+        weights_(PseudoTimeWeights(model, dofs_)),
+        mu_(settings_.regularization) {}
+
+  void Run();
+  const Counters& counters() const { return counters_; }
+  double factor_nonzeros() const { return cholesky_.factor_nonzeros(); }
+
+ private:
+  bool Step(double residual);
+  void AdaptRegularization();
+  bool ComputeStep(bool exact, double residual, std::vector<double>* step);
+  bool LineSearch(const std::vector<double>& step, bool newton_like, double* alpha);
+
+  Model& model_;
+  const NewtonSettings settings_;
+  IterationMonitor monitor_;
+  const DofMap dofs_;
+  FreeHessian hessian_;
+  SparseCholesky cholesky_;
+  const std::vector<double> weights_;
+  double mu_;
+  double last_lambda_ = 0.0;
+  double full_step_gain_ = 0.0;
+  double growth_ = 2.0;
+  double WeightedSquaredNorm(const std::vector<double>& v) const {
+    double sum = 0.0;
+    for (size_t k = 0; k < v.size(); ++k) sum += v[k] * v[k] * weights_[k];
+    return sum;
+  }
+  double stiffness_scale_ = 1.0;
+  double exact_blocked_above_ = std::numeric_limits<double>::infinity();
+  FreeHessian::Assembly assembly_;
+  std::vector<double> gradient_, free_gradient_, trial_;
+  Counters counters_;
+};
+
+void NewtonIteration::Run() {
+  for (int iteration = 0;; ++iteration) {
+    bool evaluable;
+    {
+      Stopwatch watch(&counters_.assembly_s);
+      evaluable = hessian_.Assemble(model_.positions.data(), true, &assembly_, &gradient_);
+    }
+    if (!evaluable) {
+      monitor_.Stop("energy, gradient or Hessian not finite at the iterate");
+      return;
+    }
+    counters_.projected_terms = assembly_.projected_terms;
+    const double residual = RelativeResidual(model_, gradient_);
+    if (monitor_.Record(iteration, assembly_.energy, residual)) return;
+    if (iteration == 0) stiffness_scale_ = StiffnessScale(hessian_);
+    if (!Step(residual)) return;
+  }
+}
+
+// One accepted step from model.positions, raising μ until the factorisation and the line search
+// succeed. False (after Stop) if no step can be found.
+bool NewtonIteration::Step(double residual) {
+  free_gradient_.resize(dofs_.num_free());
+  dofs_.Gather(gradient_.data(), free_gradient_.data());
+  std::vector<double> step;
+  while (true) {
+    const bool exact =
+        residual < settings_.exact_hessian_residual && residual < exact_blocked_above_;
+    const bool newton_like = exact || mu_ <= settings_.min_regularization * 10.0;
+    double alpha = 0.0;
+    if (ComputeStep(exact, residual, &step) && LineSearch(step, newton_like, &alpha)) {
+      if (exact) ++counters_.exact_hessian_steps;
+      AdaptRegularization();
+      return true;
+    }
+    if (exact) {  // H is not positive definite here (or gives no descent): use H₊ until closer
+      exact_blocked_above_ = residual / 10.0;
+      continue;
+    }
+    mu_ = std::max(mu_ * 10.0, 1e-6);
+    if (mu_ > settings_.max_regularization) {
+      monitor_.Stop("no step decreases the energy (regularisation limit reached)");
+      return false;
+    }
+  }
+}
+
+// Nielsen's rule on the gain ratio ρ of the full step: μ shrinks (by up to 3) when the quadratic
+// model predicted the energy well, grows when it did not, and grows faster after each failure.
+void NewtonIteration::AdaptRegularization() {
+  const double rho = full_step_gain_;
+  if (rho > 0.0) {
+    const double factor = std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
+    mu_ = std::max(mu_ * factor, settings_.min_regularization);
+    growth_ = 2.0;
+  } else {
+    mu_ = std::max(mu_ * growth_, 1e-9);
+    growth_ *= 2.0;
+  }
+}
+
+bool NewtonIteration::ComputeStep(bool exact, double residual, std::vector<double>* step) {
+  const double lambda = mu_ * stiffness_scale_ * std::min(1.0, residual);
+  last_lambda_ = lambda;
+  std::vector<double> shift(weights_.size());
+  for (size_t k = 0; k < shift.size(); ++k) shift[k] = lambda * weights_[k];
+  ++counters_.factorizations;
+  bool factorized;
+  {
+    Stopwatch watch(&counters_.factorization_s);
+    factorized =
+        cholesky_.Factorize(exact ? hessian_.values() : hessian_.projected_values(), &shift);
+  }
+  if (!factorized) {
+    ++counters_.failed_factorizations;
+    return false;
+  }
+  Stopwatch watch(&counters_.solve_s);
+  cholesky_.Solve(free_gradient_, step);
+  for (double& value : *step) value = -value;
+  return std::all_of(step->begin(), step->end(), [](double v) { return std::isfinite(v); });
+}
+
+bool NewtonIteration::LineSearch(const std::vector<double>& step, bool newton_like, double* alpha) {
+  Stopwatch watch(&counters_.line_search_s);
+  const double energy = assembly_.energy;
+  const double slope = std::inner_product(step.begin(), step.end(), free_gradient_.begin(), 0.0);
+  if (!(slope < 0.0)) return false;
+  // The rounding error of a sum of term energies: a few ulps of the sum of their magnitudes.
+  const double rounding =
+      64.0 * std::numeric_limits<double>::epsilon() * assembly_.energy_magnitude;
+  const std::vector<int>& free_to_global = dofs_.free_to_global();
+  trial_ = model_.positions;
+  double a = 1.0;
+  for (int evaluation = 0; evaluation < settings_.max_line_search; ++evaluation) {
+    for (size_t f = 0; f < step.size(); ++f) {
+      trial_[free_to_global[f]] = model_.positions[free_to_global[f]] + a * step[f];
+    }
+    double trial_energy;
+    ++counters_.energy_evaluations;
+    const bool finite = EvaluateEnergy(model_, trial_.data(), &trial_energy);
+    const bool sufficient = finite && trial_energy <= energy + settings_.armijo * a * slope;
+    const bool within_rounding = finite && newton_like && a == 1.0 && -slope <= rounding &&
+                                 trial_energy <= energy + rounding;
+    if (evaluation == 0) {
+      // Gain ratio of the full step against its quadratic model (A + λD) p = −g:
+      // predicted decrease −g·p − ½ pᵀA p = −½ g·p + ½ λ pᵀD p.
+      const double predicted = -0.5 * slope + 0.5 * last_lambda_ * WeightedSquaredNorm(step);
+      full_step_gain_ = finite ? (energy - trial_energy) / predicted : -1.0;
+    }
+    if (sufficient || within_rounding) {
+      model_.positions.swap(trial_);
+      *alpha = a;
+      return true;
+    }
+    if (!finite) {
+      a *= 0.1;
+      continue;
+    }
+    // Minimum of the quadratic through E(0), E'(0) and E(a), kept within [0.1a, 0.5a].
+    const double curvature = trial_energy - energy - slope * a;
+    const double minimizer = curvature > 0.0 ? -slope * a * a / (2.0 * curvature) : 0.5 * a;
+    a = std::clamp(minimizer, 0.1 * a, 0.5 * a);
+  }
+  ++counters_.line_search_failures;
+  return false;
+}
+
+class NewtonSolver : public Solver {
+ public:
+  SolverSummary Solve(Model& model, const SolverOptions& options) const override {
+    SolverSummary summary;
+    if (model.num_free_dofs() == 0) return SolveWithoutFreeDofs(model, options);
+    NewtonIteration newton(model, options, &summary);
+    newton.Run();
+    const Counters& c = newton.counters();
+    summary.statistics = {
+        {"factorizations", c.factorizations},
+        {"failed_factorizations", c.failed_factorizations},
+        {"energy_evaluations", c.energy_evaluations},
+        {"exact_hessian_steps", c.exact_hessian_steps},
+        {"line_search_failures", c.line_search_failures},
+        {"projected_terms_last", c.projected_terms},
+        {"factor_nonzeros", newton.factor_nonzeros()},
+        {"assembly_s", c.assembly_s},
+        {"factorization_s", c.factorization_s},
+        {"solve_s", c.solve_s},
+        {"line_search_s", c.line_search_s},
+    };
+    return summary;
+  }
+
+ private:
+  static SolverSummary SolveWithoutFreeDofs(Model& model, const SolverOptions& options) {
+    SolverSummary summary;
+    IterationMonitor monitor(model, options, &summary);
+    double energy = 0.0;
+    std::vector<double> gradient;
+    if (!EvaluateEnergy(model, model.positions.data(), &energy, &gradient)) {
+      monitor.Stop("energy not finite at the start");
+    } else {
+      monitor.Record(0, energy, RelativeResidual(model, gradient));
+    }
+    return summary;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Solver> NewNewtonSolver() { return std::make_unique<NewtonSolver>(); }
+
+}  // namespace drape
