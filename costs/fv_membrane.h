@@ -1,0 +1,71 @@
+#ifndef DRAPE_COSTS_FV_MEMBRANE_H_
+#define DRAPE_COSTS_FV_MEMBRANE_H_
+
+#include <cassert>
+#include <cmath>
+
+#include "costs/energy_form.h"
+#include "costs/safe_math.h"
+
+namespace drape {
+
+// In-plane (membrane) energy of one quarter section bPa of control volume P (Hu/Teng §9.2.3.2,
+// eqs. 9.3–9.6), for the warp arm P→A (A = E or W) and the weft arm P→B (B = N or S):
+//   U = ½ (E1 ε1² + 2 E12 ε1 ε2 + E2 ε2² + G γ²) A_q,
+//   ε1 = (|A−P| − l_PA)/l_PA,   ε2 = (|B−P| − l_PB)/l_PB,   γ = π/2 − ∠(A−P, B−P),
+//   E1 = E_warp/(1 − ν_warp ν_weft),  E2 = E_weft/(1 − ν_warp ν_weft),
+//   E12 = ν_warp E_weft/(1 − ν_warp ν_weft),
+// A_q = l_PA l_PB / 4 the quarter's area (faces midway between grid nodes). The shear angle is
+// exact: γ = asin(u·v/(|u||v|)) for the arms u, v — smooth wherever the arms are not parallel
+// (at rest γ = 0 and asin' = 1), so no acos at the flat state (architecture.md, fact 5). The rest
+// grid is orthogonal (γ = 0 at rest). Residuals, the Cholesky factor of the form, × √A_q:
+//   r0 = √E1 ε1 + E12/√E1 ε2,   r1 = √(E2 − E12²/E1) ε2,   r2 = √G γ.
+// Needs E1 > 0 and E1 E2 ≥ E12². Units: E, G in N/m (rigidity per unit width), lengths in m,
+// U in J. Invariant under rigid motions; zero force at rest.
+struct FvMembrane {
+  static constexpr int kNumNodes = 3;
+  static constexpr int kNumOutputs = 3;
+  static constexpr EnergyForm kForm = EnergyForm::kSquares;
+
+  // e1, e2, e12: E1, E2, E12 as above (N/m); g: G (N/m); rest arm lengths l_PA, l_PB (m).
+  FvMembrane(double e1, double e2, double e12, double g, double rest_a, double rest_b)
+      : rest_a(rest_a),
+        rest_b(rest_b),
+        c11(std::sqrt(e1 * rest_a * rest_b / 4.0)),
+        c12(e12 / std::sqrt(e1) * std::sqrt(rest_a * rest_b / 4.0)),
+        c22(std::sqrt((e2 - e12 * e12 / e1) * rest_a * rest_b / 4.0)),
+        c33(std::sqrt(g * rest_a * rest_b / 4.0)) {
+    assert(e1 > 0.0 && e2 * e1 >= e12 * e12 && g >= 0.0 && rest_a > 0.0 && rest_b > 0.0);
+  }
+
+  // Nodes P, A (warp neighbour), B (weft neighbour).
+  template <typename T>
+  bool operator()(const T* const p, const T* const a, const T* const b, T* residual) const {
+    using std::asin;
+    const T da = SafeDistance(p, a), db = SafeDistance(p, b);
+    if (!(da > 0.0) || !(db > 0.0)) return false;
+    const T strain_a = (da - rest_a) / rest_a;
+    const T strain_b = (db - rest_b) / rest_b;
+    const T dot = (a[0] - p[0]) * (b[0] - p[0]) + (a[1] - p[1]) * (b[1] - p[1]) +
+                  (a[2] - p[2]) * (b[2] - p[2]);
+    const T cosine = dot / (da * db);
+    if (!(cosine < 1.0) || !(cosine > -1.0)) return false;  // arms parallel: no quarter left
+    const T shear = asin(cosine);
+    residual[0] = c11 * strain_a + c12 * strain_b;
+    residual[1] = c22 * strain_b;
+    residual[2] = c33 * shear;
+    return true;
+  }
+
+  static FvMembrane Create(double e1, double e2, double e12, double g, double rest_a,
+                           double rest_b) {
+    return FvMembrane(e1, e2, e12, g, rest_a, rest_b);
+  }
+
+  const double rest_a, rest_b;      // l_PA, l_PB, m
+  const double c11, c12, c22, c33;  // Cholesky factor of A_q [E1 E12 0; E12 E2 0; 0 0 G]
+};
+
+}  // namespace drape
+
+#endif  // DRAPE_COSTS_FV_MEMBRANE_H_

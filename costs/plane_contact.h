@@ -1,0 +1,48 @@
+#ifndef DRAPE_COSTS_PLANE_CONTACT_H_
+#define DRAPE_COSTS_PLANE_CONTACT_H_
+
+#include "costs/contact_penalty.h"
+#include "costs/energy_form.h"
+
+namespace drape {
+
+// Contact of one node with a rigid half-space (a floor or wall) through point p with unit outer
+// normal n: φ = n·(x − p),  U = ContactPenalty(φ, t, k)  (costs/contact_penalty.h).
+// One-sided: everything behind the plane is solid. Frictionless. Units: m, N/m², J.
+struct PlaneContact {
+  static constexpr int kNumNodes = 1;
+  static constexpr int kNumOutputs = 1;
+  static constexpr EnergyForm kForm = EnergyForm::kPotential;
+
+  PlaneContact(const double point[3], const double normal[3], double clearance, double stiffness)
+      : point{point[0], point[1], point[2]},
+        normal{normal[0], normal[1], normal[2]},
+        clearance(clearance),
+        stiffness(stiffness) {}
+
+  template <typename T>
+  T Distance(const T* const x) const {
+    return normal[0] * (x[0] - point[0]) + normal[1] * (x[1] - point[1]) +
+           normal[2] * (x[2] - point[2]);
+  }
+
+  template <typename T>
+  bool operator()(const T* const x, T* energy) const {
+    energy[0] = ContactPenalty(Distance(x), clearance, stiffness);
+    return true;
+  }
+
+  static PlaneContact Create(const double point[3], const double normal[3], double clearance,
+                             double stiffness) {
+    return PlaneContact(point, normal, clearance, stiffness);
+  }
+
+  const double point[3];   // m
+  const double normal[3];  // unit
+  const double clearance;  // t, m
+  const double stiffness;  // k, N/m²
+};
+
+}  // namespace drape
+
+#endif  // DRAPE_COSTS_PLANE_CONTACT_H_

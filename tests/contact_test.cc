@@ -1,0 +1,159 @@
+#include "src/contact.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "src/finite_volume.h"
+#include "src/mesh.h"
+#include "src/run.h"
+#include "tests/hand_built_models.h"
+
+namespace drape {
+namespace {
+
+ObstacleSpec Sphere(const Eigen::Vector3d& center, double radius) {
+  ObstacleSpec sphere;
+  sphere.kind = ObstacleSpec::Kind::kSphere;
+  sphere.center = center;
+  sphere.radius = radius;
+  return sphere;
+}
+
+ObstacleSpec Floor(double z) {
+  ObstacleSpec plane;
+  plane.kind = ObstacleSpec::Kind::kPlane;
+  plane.center = {0, 0, z};
+  plane.normal = {0, 0, 1};
+  return plane;
+}
+
+testing::SheetSpec SmallSheet(std::vector<int> fixed) {
+  testing::SheetSpec spec;
+  spec.nu = spec.nv = 5;
+  spec.width = spec.height = 0.2;
+  spec.fixed = std::move(fixed);
+  return spec;
+}
+
+int CountType(const Model& model, const std::string& type) {
+  int count = 0;
+  for (const auto& term : model.terms) count += term->type() == type ? 1 : 0;
+  return count;
+}
+
+TEST(Contact, StiffnessKeepsTheWholeLoadWithinATenthOfTheThickness) {
+  const Model model = testing::Sheet(SmallSheet({0}));
+  ContactSpec contact;
+  contact.thickness = 0.001;
+  double load = 0.0;
+  for (int k = 0; k < model.num_nodes; ++k) load += std::abs(model.applied[3 * k + 2]);
+  const double k = ContactStiffness(contact, model);
+  EXPECT_NEAR(k, load / std::pow(0.1 * 0.001, 2), 1e-9 * k);
+  // A node pressed by the whole load rests 10 % of the thickness deep: k g² = F.
+  EXPECT_NEAR(std::sqrt(load / k), kAllowedPenetration * contact.thickness, 1e-15);
+}
+
+TEST(Contact, EveryFreeNodeMeetsEveryObstacleWhenNothingIsAnchored) {
+  Model model = testing::Sheet(SmallSheet({}));
+  AddContactTerms({Sphere({0.1, 0.1, -0.5}, 0.1), Floor(-100.0)}, ContactSpec{}, &model);
+  EXPECT_EQ(CountType(model, "sphere_contact"), 25);
+  EXPECT_EQ(CountType(model, "plane_contact"), 25);
+}
+
+// With a node anchored, no node can travel farther than 2.5 × the fabric's size: a floor 100 m
+// below gets no terms, one just under the sheet gets one per free node.
+TEST(Contact, AnchoredFabricMeetsOnlyObstaclesWithinReach) {
+  Model model = testing::Sheet(SmallSheet({0, 4}));
+  AddContactTerms({Floor(-100.0), Floor(-0.1)}, ContactSpec{}, &model);
+  EXPECT_EQ(CountType(model, "plane_contact"), 23);
+  model.terms.clear();
+  ObstacleSpec pin;
+  pin.kind = ObstacleSpec::Kind::kPin;
+  pin.center = {0.1, 0.1, -0.01};
+  AddContactTerms({pin}, ContactSpec{}, &model);
+  EXPECT_EQ(CountType(model, "pin_contact"), 23);
+}
+
+TEST(Contact, RejectsFrictionAndZeroThickness) {
+  Model model = testing::Sheet(SmallSheet({0}));
+  ObstacleSpec rough = Floor(-0.1);
+  rough.friction = 0.3;
+  EXPECT_THROW(AddContactTerms({rough}, ContactSpec{}, &model), InputError);
+  ContactSpec thin;
+  thin.thickness = 0.0;
+  EXPECT_THROW(AddContactTerms({Floor(-0.1)}, thin, &model), InputError);
+}
+
+TEST(Contact, MeasuresTheDeepestNodeInsideTheClearance) {
+  Model model = testing::Sheet(SmallSheet({0}));
+  ContactSpec contact;
+  contact.thickness = 0.002;
+  const std::vector<ObstacleSpec> floor = {Floor(-0.0015)};  // 0.5 mm deep for every node
+  AddContactTerms(floor, contact, &model);
+  std::vector<double> x = model.positions;
+  x[3 * 7 + 2] = -0.0010;  // node 7 1 mm deep
+  const ContactReport report = MeasureContact(floor, contact, model, x.data());
+  EXPECT_EQ(report.terms, 24);
+  EXPECT_EQ(report.nodes_in_contact, 25);
+  EXPECT_NEAR(report.max_penetration, 0.0015, 1e-15);
+  EXPECT_NEAR(report.max_penetration_fraction, 0.75, 1e-12);
+  EXPECT_DOUBLE_EQ(report.stiffness, ContactStiffness(contact, model));
+}
+
+// A square sheet draped over a sphere, its centre node held sideways (x, y) and one edge node
+// held along y (no spin about the vertical), solved with newton: the stiffness rule keeps every
+// node within 10 % of the thickness, for the spring and the finite-volume fabric alike.
+void ExpectDrapeOverSphereRespectsClearance(Model model) {
+  const int nu = 15, centre = 7 * nu + 7;
+  model.fixed[3 * centre] = model.fixed[3 * centre + 1] = 1;
+  model.fixed[3 * (7 * nu + nu - 1) + 1] = 1;
+  ContactSpec contact;
+  contact.thickness = 0.001;
+  const std::vector<ObstacleSpec> sphere = {Sphere({0.15, 0.15, -0.081}, 0.08)};
+  AddContactTerms(sphere, contact, &model);
+  ValidateModel(model);
+  Scene scene;
+  scene.solver.tolerance = 1e-8;
+  scene.solver.max_iterations = 2000;
+  const RunResult run = RunSolve(scene, model, "newton");
+  EXPECT_TRUE(run.converged) << run.summary.termination;
+  const ContactReport report = MeasureContact(sphere, contact, model, model.positions.data());
+  EXPECT_GT(report.nodes_in_contact, 0);
+  EXPECT_LE(report.max_penetration_fraction, kAllowedPenetration);
+  std::printf("%d iterations, %d nodes in contact, deepest %.3f of the thickness\n",
+              run.summary.iterations, report.nodes_in_contact, report.max_penetration_fraction);
+}
+
+testing::SheetSpec DrapeSheet() {
+  testing::SheetSpec spec;
+  spec.nu = spec.nv = 15;
+  spec.width = spec.height = 0.3;
+  spec.density = 0.15;
+  return spec;
+}
+
+TEST(Contact, SpringSheetDrapedOverSphereStaysOutsideTheClearance) {
+  testing::SheetSpec spec = DrapeSheet();
+  spec.springs = {200.0, 20.0, 2.0, false};
+  ExpectDrapeOverSphereRespectsClearance(testing::Sheet(spec));
+}
+
+TEST(Contact, FiniteVolumeSheetDrapedOverSphereStaysOutsideTheClearance) {
+  testing::SheetSpec spec = DrapeSheet();
+  spec.springs = {0.0, 0.0, 0.0, false};
+  Model model = testing::Sheet(spec);
+  MeshSpec grid;
+  grid.size = {spec.width, spec.height};
+  grid.nodes = {spec.nu, spec.nv};
+  FiniteVolumeSpec cotton;
+  cotton.E_warp = cotton.E_weft = 500;
+  cotton.G = 5;
+  cotton.D_warp = cotton.D_weft = 1e-5;
+  AddFiniteVolumeTerms(cotton, BuildMesh(grid), &model);
+  ExpectDrapeOverSphereRespectsClearance(std::move(model));
+}
+
+}  // namespace
+}  // namespace drape
