@@ -5,7 +5,9 @@
 // - grid: node (i, j) has id j*nu + i. A single row (nodes [n, 1]) or column is a strip whose
 //   width is the other entry of `size`; its nodes carry length × width as area.
 // - chain: a single row of nodes (nu = n, nv = 1, grid_index (k, 0)), so that edge/corner/ij
-//   selectors address its ends; its lumped length is half of each adjacent segment.
+//   selectors address its ends; its lumped length is half of each adjacent segment. Its nodes are
+//   evenly spaced along `direction`, or the explicit `points` (offset by `origin`); a closed chain
+//   also links the last node to the first, and `loop` lists its links in order.
 // - circle: lattice points (i s, j s) of spacing s, with the origin a lattice point, inside the
 //   disc; full lattice cells give 2 triangles, cells with 3 corners inside the disc one.
 // - arc: node 0 is the centre, then ring r = 1..rings, spoke k: id 1 + (r-1)*spokes + k.
@@ -161,25 +163,45 @@ Mesh BuildGrid(const MeshSpec& spec) {
 // ---------------------------------------------------------------------------------------------
 // chain
 
-Mesh BuildChain(const MeshSpec& spec) {
+// Chain nodes: the explicit points, or `chain_nodes` evenly along `direction` over `length`.
+std::vector<Eigen::Vector3d> ChainPoints(const MeshSpec& spec) {
+  if (!spec.points.empty()) {
+    std::vector<Eigen::Vector3d> points;
+    for (const auto& p : spec.points) points.push_back(spec.origin + p);
+    return points;
+  }
   const double norm = spec.direction.norm();
   if (!(norm > 0.0)) throw InputError(spec.where, "chain direction must not be zero");
   if (spec.chain_nodes < 2) throw InputError(spec.where, "a chain needs at least 2 nodes");
   const Eigen::Vector3d step = spec.direction / norm * (spec.length / (spec.chain_nodes - 1));
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < spec.chain_nodes; ++k) points.push_back(spec.origin + k * step);
+  return points;
+}
+
+// A chain: warp links between consecutive nodes, flexion links between every other node; a closed
+// chain also links its last node back to its first (and wraps the flexion links).
+Mesh BuildChain(const MeshSpec& spec) {
   Mesh mesh;
-  const int n = spec.chain_nodes;
+  mesh.nodes = ChainPoints(spec);
+  const int n = static_cast<int>(mesh.nodes.size());
+  if (n < 2) throw InputError(spec.where, "a chain needs at least 2 nodes");
+  if (spec.closed && n < 3) throw InputError(spec.where, "a closed chain needs at least 3 nodes");
   mesh.nu = n;
   mesh.nv = 1;
-  std::vector<double> arc(n);
-  for (int k = 0; k < n; ++k) {
-    mesh.nodes.push_back(spec.origin + k * step);
-    mesh.grid_index.push_back({k, 0});
-    arc[k] = k * step.norm();
-    if (k + 1 < n) mesh.warp.push_back({k, k + 1});
-    if (k + 2 < n) mesh.flexion_warp.push_back({k, k + 2});
-  }
+  const int links = spec.closed ? n : n - 1;
+  const int flexion = spec.closed ? (n > 4 ? n : 0) : n - 2;  // no pair twice
+  for (int k = 0; k < n; ++k) mesh.grid_index.push_back({k, 0});
+  for (int k = 0; k < links; ++k) mesh.warp.push_back({k, (k + 1) % n});
+  for (int k = 0; k < flexion; ++k) mesh.flexion_warp.push_back({k, (k + 2) % n});
   mesh.lines = mesh.warp;
-  mesh.length = LumpedLengths(arc);
+  if (spec.closed) mesh.loop = mesh.warp;
+  mesh.length.assign(n, 0.0);
+  for (const Link& link : mesh.warp) {
+    const double half = 0.5 * (mesh.nodes[link[1]] - mesh.nodes[link[0]]).norm();
+    mesh.length[link[0]] += half;
+    mesh.length[link[1]] += half;
+  }
   mesh.area.assign(n, 0.0);
   return mesh;
 }

@@ -25,6 +25,7 @@ struct Mesh {
   std::vector<Link> lines;                       // line elements (chains), for output
   std::vector<double> area;                      // lumped area per node, m² (0 for a chain)
   std::vector<double> length;                    // lumped length per node, m (chains)
+  std::vector<Link> loop;  // closed chain: its links in order around the loop (else empty)
 };
 
 // Builds the mesh of `spec`. Throws InputError (at spec.where) for fewer than 2 nodes, an

@@ -48,6 +48,8 @@ struct MeshSpec {
   double length = 1.0;
   int chain_nodes = 11;
   Eigen::Vector3d direction{1.0, 0.0, 0.0};
+  std::vector<Eigen::Vector3d> points;  // explicit chain nodes (replace length/nodes/direction)
+  bool closed = false;                  // chain: a link from the last node back to the first
   // file
   std::string path;  // resolved against the scene file's folder
   Location where;
@@ -110,15 +112,28 @@ struct FixedSpec {
 
 struct ForceSpec {
   NodeSelector nodes;
-  enum class Kind { kTotal, kEach };
+  // kTotal: `value` shared equally; kEach: `value` on every node; kValues: `values[k]` on the k-th
+  // selected node in id order; kRamp: from `value` (first node) to `ramp_to` (last node), linear
+  // in the node's position along the selection.
+  enum class Kind { kTotal, kEach, kValues, kRamp };
   Kind kind = Kind::kTotal;
-  Eigen::Vector3d value = Eigen::Vector3d::Zero();  // N
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();    // N
+  std::vector<Eigen::Vector3d> values;                // N, kValues
+  Eigen::Vector3d ramp_to = Eigen::Vector3d::Zero();  // N, kRamp
+  Location values_where;                              // the `values` list (kValues)
+  Location where;
+};
+
+// Pressure on a closed 2-D chain: the potential −p × (area enclosed in the x–z plane).
+struct PressureSpec {
+  double pressure = 0.0;  // N/m (force per unit length of the profile, per unit depth)
   Location where;
 };
 
 struct LoadsSpec {
   std::optional<Eigen::Vector3d> gravity;  // m/s²
   std::vector<ForceSpec> forces;
+  std::optional<PressureSpec> pressure;
   Location where;
 };
 

@@ -56,7 +56,7 @@ const std::map<std::string, std::vector<std::string>>& MeshKeysByKind() {
       {"grid", {"kind", "size", "nodes", "u", "v", "plane", "origin"}},
       {"circle", {"kind", "radius", "spacing", "origin"}},
       {"arc", {"kind", "radius", "rings", "spokes", "origin"}},
-      {"chain", {"kind", "length", "nodes", "direction", "origin"}},
+      {"chain", {"kind", "length", "nodes", "direction", "origin", "points", "closed"}},
       {"file", {"kind", "path"}},
   };
   return keys;
@@ -143,7 +143,34 @@ void ReadGrid(const YamlMap& map, MeshSpec* spec) {
   if (const auto plane = map.Find("plane")) spec->plane = ReadChoice(*plane, {"xy", "xz"});
 }
 
+// Explicit chain nodes: a list of [x, y, z], which replaces length, nodes and direction.
+void ReadChainPoints(const YamlMap& map, const YamlValue& points, MeshSpec* spec) {
+  for (const char* key : {"length", "nodes", "direction"}) {
+    if (map.Has(key)) {
+      throw InputError(map.KeyLocation(key), std::string("'") + key +
+                                                 "' does not apply when the chain's points "
+                                                 "are given");
+    }
+  }
+  if (!points.get().IsSequence()) {
+    Fail(points, "expected a list of node positions [x, y, z] in m, got " + Describe(points.get()));
+  }
+  for (const auto& item : ReadList(points)) spec->points.push_back(ReadVector3(item));
+  const size_t minimum = spec->closed ? 3 : 2;
+  if (spec->points.size() < minimum) {
+    Fail(points, std::string(spec->closed ? "a closed chain" : "a chain") + " needs at least " +
+                     std::to_string(minimum) + " points, got " +
+                     std::to_string(spec->points.size()));
+  }
+  spec->chain_nodes = static_cast<int>(spec->points.size());
+}
+
 void ReadChain(const YamlMap& map, MeshSpec* spec) {
+  if (const auto closed = map.Find("closed")) spec->closed = ReadBool(*closed);
+  if (const auto points = map.Find("points")) {
+    ReadChainPoints(map, *points, spec);
+    return;
+  }
   if (const auto length = map.Find("length")) spec->length = ReadPositive(*length);
   if (const auto nodes = map.Find("nodes")) {
     if (!nodes->get().IsScalar()) {
@@ -151,6 +178,9 @@ void ReadChain(const YamlMap& map, MeshSpec* spec) {
     }
     spec->chain_nodes = ReadIntAtLeast(*nodes, 1);
     if (spec->chain_nodes < 2) Fail(*nodes, "a chain needs at least 2 nodes, got 1");
+    if (spec->closed && spec->chain_nodes < 3) {
+      Fail(*nodes, "a closed chain needs at least 3 nodes, got 2");
+    }
   }
   if (const auto direction = map.Find("direction")) {
     const Eigen::Vector3d given = ReadVector3(*direction);
@@ -161,8 +191,8 @@ void ReadChain(const YamlMap& map, MeshSpec* spec) {
 
 MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory) {
   static const std::vector<std::string> all_keys = {
-      "kind",   "size",    "nodes", "u",      "v",      "plane",     "origin",
-      "radius", "spacing", "rings", "spokes", "length", "direction", "path"};
+      "kind",    "size",  "nodes",  "u",      "v",         "plane", "origin", "radius",
+      "spacing", "rings", "spokes", "length", "direction", "path",  "points", "closed"};
   const YamlMap map(value, all_keys);
   MeshSpec spec;
   spec.where = value.where;
@@ -456,20 +486,45 @@ std::vector<FixedSpec> ReadFixed(const YamlValue& value) {
   return fixed;
 }
 
+// `values: [[fx, fy, fz], ...]`: one force per selected node (their count is checked against the
+// selection when the model is built).
+void ReadForceValues(const YamlValue& value, ForceSpec* force) {
+  if (!value.get().IsSequence() || value.get().size() == 0) {
+    Fail(value, "expected a list of forces [fx, fy, fz] in N, one per selected node, got " +
+                    Describe(value.get()));
+  }
+  force->kind = ForceSpec::Kind::kValues;
+  force->values_where = value.where;
+  for (const auto& item : ReadList(value)) force->values.push_back(ReadVector3(item));
+}
+
+// `ramp: {from: [fx, fy, fz], to: [fx, fy, fz]}`: N per node, linear along the selection.
+void ReadForceRamp(const YamlValue& value, ForceSpec* force) {
+  const YamlMap ramp(value, {"from", "to"});
+  force->kind = ForceSpec::Kind::kRamp;
+  force->value = ReadVector3(ramp.Get("from"));
+  force->ramp_to = ReadVector3(ramp.Get("to"));
+}
+
 ForceSpec ReadForce(const YamlValue& item) {
-  const YamlMap map(item, {"nodes", "total", "each"});
+  const YamlMap map(item, {"nodes", "total", "each", "values", "ramp"});
   ForceSpec force;
   force.where = item.where;
   force.nodes = ReadSelector(map.Get("nodes"));
-  if (map.Has("total") && map.Has("each")) {
-    const auto keys = map.Keys();
-    const std::string second =
-        std::find(keys.begin(), keys.end(), "total") < std::find(keys.begin(), keys.end(), "each")
-            ? "each"
-            : "total";
-    throw InputError(map.KeyLocation(second), "give the force as total or as each, not both");
+  std::vector<std::string> given;
+  for (const auto& key : map.Keys()) {
+    if (key != "nodes") given.push_back(key);
   }
-  if (const auto total = map.Find("total")) {
+  if (given.size() > 1) {
+    throw InputError(map.KeyLocation(given[1]),
+                     "give the force in one way only (total, each, values or ramp), not both: '" +
+                         given[0] + "' is given too");
+  }
+  if (const auto values = map.Find("values")) {
+    ReadForceValues(*values, &force);
+  } else if (const auto ramp = map.Find("ramp")) {
+    ReadForceRamp(*ramp, &force);
+  } else if (const auto total = map.Find("total")) {
     force.kind = ForceSpec::Kind::kTotal;
     force.value = ReadVector3(*total);
   } else if (const auto each = map.Find("each")) {
@@ -479,14 +534,15 @@ ForceSpec ReadForce(const YamlValue& item) {
     Location where = item.where;
     where.key = ChildKey(item.where.key, "total");
     throw InputError(where,
-                     "the force is missing: give total: [fx, fy, fz] (N, shared) or "
-                     "each: [fx, fy, fz] (N per node)");
+                     "the force is missing: give total: [fx, fy, fz] (N, shared), "
+                     "each: [fx, fy, fz] (N per node), values: [[fx, fy, fz], ...] (one per "
+                     "node) or ramp: {from: [...], to: [...]} (N per node)");
   }
   return force;
 }
 
 LoadsSpec ReadLoads(const YamlValue& value) {
-  const YamlMap map(value, {"gravity", "forces"});
+  const YamlMap map(value, {"gravity", "forces", "pressure"});
   LoadsSpec loads;
   loads.where = value.where;
   if (const auto gravity = map.Find("gravity")) loads.gravity = ReadVector3(*gravity);
@@ -495,6 +551,12 @@ LoadsSpec ReadLoads(const YamlValue& value) {
       Fail(*forces, "expected a list of forces (- nodes: ...), got " + Describe(forces->get()));
     }
     for (const auto& item : ReadList(*forces)) loads.forces.push_back(ReadForce(item));
+  }
+  if (const auto pressure = map.Find("pressure")) {
+    PressureSpec spec;
+    spec.where = pressure->where;
+    spec.pressure = ReadNumber(*pressure);
+    loads.pressure = spec;
   }
   return loads;
 }

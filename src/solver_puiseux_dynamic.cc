@@ -82,7 +82,7 @@ class PuiseuxDynamicSolver : public Solver {
       summary.trace.push_back({double(n), n * dt, kinetic.nodes, kinetic.centre, residual});
       if (monitor.Record(n, energy, residual)) break;
       char text[160];
-      if (n * dt > t_max) {
+      if (n * dt >= t_max * (1.0 - 1e-12)) {
         std::snprintf(text, sizeof text, "t_max = %g s reached (relative residual %.3g)", t_max,
                       residual);
         monitor.Stop(text);

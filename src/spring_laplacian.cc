@@ -1,6 +1,7 @@
 #include "src/spring_laplacian.h"
 
 #include "costs/constant_force_potential.h"
+#include "costs/pressure_potential.h"
 #include "costs/spring_stretch.h"
 #include "costs/tension_only_spring.h"
 #include "costs/zero_length_spring.h"
@@ -28,6 +29,7 @@ double SpringStiffness(const Term& term) {
 std::string UnsupportedTermType(const Model& model) {
   for (const auto& term : model.terms) {
     if (SpringStiffness(*term) > 0.0 || FunctorOf<ConstantForcePotential>(*term)) continue;
+    if (FunctorOf<PressurePotential>(*term)) continue;  // a load: in the residual, not in A0
     return term->type();
   }
   return "";
