@@ -19,8 +19,8 @@
 //       sheet turning freely about one support).
 // The step is accepted by a backtracking (Armijo) line search on the true energy; a trial point
 // whose energy is not finite is never accepted, the step is shortened instead. Near the end,
-// where the predicted decrease is below the rounding of the energy, the full Newton step is
-// accepted unless the energy rises beyond that rounding.
+// where the energy changes by less than its own rounding (64 ulps of Σ|term energy|), it cannot
+// judge a step; there the step is accepted if it lowers the norm of the free residual force.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -126,9 +126,10 @@ class NewtonIteration {
 
  private:
   bool Step(double residual);
+  bool ResidualFalls(const double* trial);
   void AdaptRegularization();
   bool ComputeStep(bool exact, double residual, std::vector<double>* step);
-  bool LineSearch(const std::vector<double>& step, bool newton_like, double* alpha);
+  bool LineSearch(const std::vector<double>& step, double* alpha);
 
   Model& model_;
   const NewtonSettings settings_;
@@ -149,7 +150,7 @@ class NewtonIteration {
   double stiffness_scale_ = 1.0;
   double exact_blocked_above_ = std::numeric_limits<double>::infinity();
   FreeHessian::Assembly assembly_;
-  std::vector<double> gradient_, free_gradient_, trial_;
+  std::vector<double> gradient_, free_gradient_, trial_, trial_gradient_;
   Counters counters_;
 };
 
@@ -181,9 +182,8 @@ bool NewtonIteration::Step(double residual) {
   while (true) {
     const bool exact =
         residual < settings_.exact_hessian_residual && residual < exact_blocked_above_;
-    const bool newton_like = exact || mu_ <= settings_.min_regularization * 10.0;
     double alpha = 0.0;
-    if (ComputeStep(exact, residual, &step) && LineSearch(step, newton_like, &alpha)) {
+    if (ComputeStep(exact, residual, &step) && LineSearch(step, &alpha)) {
       if (exact) ++counters_.exact_hessian_steps;
       AdaptRegularization();
       return true;
@@ -236,7 +236,19 @@ bool NewtonIteration::ComputeStep(bool exact, double residual, std::vector<doubl
   return std::all_of(step->begin(), step->end(), [](double v) { return std::isfinite(v); });
 }
 
-bool NewtonIteration::LineSearch(const std::vector<double>& step, bool newton_like, double* alpha) {
+bool NewtonIteration::ResidualFalls(const double* trial) {
+  double trial_energy;
+  ++counters_.energy_evaluations;
+  if (!EvaluateEnergy(model_, trial, &trial_energy, &trial_gradient_)) return false;
+  double now = 0.0, then = 0.0;
+  for (int global : dofs_.free_to_global()) {
+    now += gradient_[global] * gradient_[global];
+    then += trial_gradient_[global] * trial_gradient_[global];
+  }
+  return then < now;
+}
+
+bool NewtonIteration::LineSearch(const std::vector<double>& step, double* alpha) {
   Stopwatch watch(&counters_.line_search_s);
   const double energy = assembly_.energy;
   const double slope = std::inner_product(step.begin(), step.end(), free_gradient_.begin(), 0.0);
@@ -254,16 +266,19 @@ bool NewtonIteration::LineSearch(const std::vector<double>& step, bool newton_li
     double trial_energy;
     ++counters_.energy_evaluations;
     const bool finite = EvaluateEnergy(model_, trial_.data(), &trial_energy);
-    const bool sufficient = finite && trial_energy <= energy + settings_.armijo * a * slope;
-    const bool within_rounding = finite && newton_like && a == 1.0 && -slope <= rounding &&
-                                 trial_energy <= energy + rounding;
+    // Where the energy is flat to rounding it cannot judge the step: the residual force does.
+    const bool flat = finite && std::abs(trial_energy - energy) <= rounding;
+    const bool accepted = flat ? ResidualFalls(trial_.data())
+                               : finite && trial_energy <= energy + settings_.armijo * a * slope;
     if (evaluation == 0) {
       // Gain ratio of the full step against its quadratic model (A + λD) p = −g:
       // predicted decrease −g·p − ½ pᵀA p = −½ g·p + ½ λ pᵀD p.
       const double predicted = -0.5 * slope + 0.5 * last_lambda_ * WeightedSquaredNorm(step);
-      full_step_gain_ = finite ? (energy - trial_energy) / predicted : -1.0;
+      full_step_gain_ = flat     ? (accepted ? 1.0 : 0.0)
+                        : finite ? (energy - trial_energy) / predicted
+                                 : -1.0;
     }
-    if (sufficient || within_rounding) {
+    if (accepted) {
       model_.positions.swap(trial_);
       *alpha = a;
       return true;

@@ -37,6 +37,32 @@ const std::vector<SolverInfo>& AllSolvers() {
        "at t_max or on the residual; writes kinetic.csv",
        {"dt", "beta", "t_max", "epsilon"},
        [] { return NewPuiseuxDynamicSolver(); }},
+      {"explicit-euler",
+       "Rusinko & Swan's explicit Euler with friction: v <- (1-f)v + a dt, x <- x + v dt, and "
+       "Provot's stretch-limit constraint breadth-first from the fixed nodes; stops at rest",
+       {"dt", "friction", "stretch_limit"},
+       [] { return NewExplicitEulerSolver(); }},
+      {"nlopt-lbfgs",
+       "NLopt LD_LBFGS on the exact energy (vector storage `memory`, default 10); stops on the "
+       "relative residual; iterations = energy evaluations",
+       {"memory", "local_energy"},
+       [] { return NewNloptSolver("nlopt-lbfgs"); }},
+      {"nlopt-tnewton",
+       "NLopt LD_TNEWTON_PRECOND_RESTART (preconditioned truncated Newton) on the exact energy",
+       {"memory", "local_energy"},
+       [] { return NewNloptSolver("nlopt-tnewton"); }},
+      {"nlopt-var2",
+       "NLopt LD_VAR2 (shifted limited-memory variable metric) on the exact energy",
+       {"memory", "local_energy"},
+       [] { return NewNloptSolver("nlopt-var2"); }},
+      {"nlopt-mma",
+       "NLopt LD_MMA (method of moving asymptotes) on the exact energy",
+       {"local_energy"},
+       [] { return NewNloptSolver("nlopt-mma"); }},
+      {"nlopt-slsqp",
+       "NLopt LD_SLSQP (dense SQP) on the exact energy; refused above 1,000 free dofs",
+       {"local_energy"},
+       [] { return NewNloptSolver("nlopt-slsqp"); }},
   };
   return solvers;
 }

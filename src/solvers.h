@@ -5,6 +5,7 @@
 #include <ceres/types.h>
 
 #include <memory>
+#include <string>
 
 #include "src/solver.h"
 
@@ -15,6 +16,9 @@ std::unique_ptr<Solver> NewCeresLbfgsSolver();
 std::unique_ptr<Solver> NewCeresLeastSquaresSolver(ceres::TrustRegionStrategyType strategy);
 std::unique_ptr<Solver> NewPuiseuxFixedPointSolver();
 std::unique_ptr<Solver> NewPuiseuxDynamicSolver();
+std::unique_ptr<Solver> NewExplicitEulerSolver();
+// nlopt-lbfgs, nlopt-tnewton, nlopt-var2, nlopt-mma, nlopt-slsqp; nullptr for another name.
+std::unique_ptr<Solver> NewNloptSolver(const std::string& name);
 
 }  // namespace drape
 

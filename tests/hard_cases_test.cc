@@ -1,0 +1,68 @@
+// The hard cases of configs/hard/: newton must reach a relative residual of 1e-8 from the start
+// each scene describes, with finite positions, and report a stable equilibrium where the physics
+// has one (all of these do: a sheet turning freely about one support is neutral, not unstable).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "tests/test_scenes.h"
+
+namespace drape {
+namespace {
+
+using testing::SolveConfig;
+
+void ExpectConvergedAndStable(const std::string& file) {
+  const auto solved = SolveConfig("configs/hard/" + file, "newton");
+  const RunResult& result = solved.result;
+  EXPECT_TRUE(result.converged) << file << ": " << result.summary.termination;
+  EXPECT_LE(result.certificate.relative_residual, 1e-8) << file;
+  for (double x : solved.model.positions) ASSERT_TRUE(std::isfinite(x)) << file;
+  for (const auto& record : result.summary.history) {
+    ASSERT_TRUE(std::isfinite(record.energy) && std::isfinite(record.relative_residual)) << file;
+  }
+  EXPECT_TRUE(result.stability.computed) << file;
+  EXPECT_TRUE(result.stability.stable)
+      << file << ": min eigenvalue " << result.stability.min_eigenvalue;
+}
+
+TEST(HardCases, SheetHangingFromTwoCornersFromTheFlatStart) {
+  ExpectConvergedAndStable("two_corner_sheet.yaml");
+}
+TEST(HardCases, NearInextensibleSheet) { ExpectConvergedAndStable("near_inextensible_sheet.yaml"); }
+TEST(HardCases, TautCableAtItsRestLength) { ExpectConvergedAndStable("taut_cable.yaml"); }
+TEST(HardCases, CompressedStartBetweenCloseSupports) {
+  ExpectConvergedAndStable("compressed_chain.yaml");
+}
+TEST(HardCases, TensionOnlySprings) { ExpectConvergedAndStable("tension_only_sheet.yaml"); }
+TEST(HardCases, SheetHungByOneCorner) { ExpectConvergedAndStable("one_corner_sheet.yaml"); }
+TEST(HardCases, LargeLoad) { ExpectConvergedAndStable("large_load.yaml"); }
+TEST(HardCases, TinyLoad) { ExpectConvergedAndStable("tiny_load.yaml"); }
+TEST(HardCases, ThreeByThreeMesh) { ExpectConvergedAndStable("small_mesh.yaml"); }
+
+TEST(HardCases, TautCableSagsOnlyByItsElasticStretch) {
+  const auto solved = SolveConfig("configs/hard/taut_cable.yaml", "newton");
+  ASSERT_TRUE(solved.result.converged);
+  // Mid-span sag of a cable of weight W = 0.981 N, span L = 1 m and axial stiffness EA = 1e5 N
+  // that is taut at its rest length: the stretch ΔL = H L / EA must make up the extra length of
+  // the parabola, 8 d² / (3 L), with H = W L / (8 d)  ⇒  d³ = 3 W L³ / (64 EA).
+  const double expected = std::cbrt(3.0 * 0.981 / (64.0 * 1e5));
+  const double sag = -testing::Position(solved.model, 10).z();
+  EXPECT_NEAR(sag, expected, 0.05 * expected);
+}
+
+TEST(HardCases, MillimetresAndGramsGiveTheSameShapeScaled) {
+  const auto si = SolveConfig("configs/hard/units_si.yaml", "newton");
+  const auto mm = SolveConfig("configs/hard/units_mm.yaml", "newton");
+  ASSERT_TRUE(si.result.converged && mm.result.converged);
+  ASSERT_EQ(si.model.positions.size(), mm.model.positions.size());
+  double largest = 0.0;
+  for (size_t k = 0; k < si.model.positions.size(); ++k) {
+    largest = std::max(largest, std::abs(mm.model.positions[k] / 1000.0 - si.model.positions[k]));
+  }
+  EXPECT_LE(largest / si.model.size, 1e-8);
+}
+
+}  // namespace
+}  // namespace drape

@@ -1,0 +1,68 @@
+// The stability certificate: positive definite free Hessian ⇒ stable; otherwise an estimate of
+// the most negative eigenvalue.
+#include "src/stability.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "src/solvers.h"
+#include "tests/hand_built_models.h"
+
+namespace drape {
+namespace {
+
+using testing::Chain;
+using testing::ChainSpec;
+
+TEST(Stability, AHangingChainAtEquilibriumIsStable) {
+  ChainSpec spec;
+  spec.length = 0.8;
+  spec.rest_length = 0.1;
+  Model model = Chain(spec);
+  SolverOptions options;
+  ASSERT_TRUE(FindSolver("newton")->make()->Solve(model, options).converged);
+  const Stability stability = AnalyseStability(model, model.positions.data());
+  EXPECT_TRUE(stability.computed);
+  EXPECT_TRUE(stability.stable);
+}
+
+TEST(Stability, AStraightChainCompressedBetweenItsSupportsIsASaddle) {
+  // No gravity: the uniformly compressed straight chain is an equilibrium, but its springs push
+  // with T = k (l − L) < 0 and the transverse stiffness T/l of each is negative. Across the
+  // chain (y or z), the Hessian is (T/l) times the path Laplacian of N springs with fixed ends,
+  // whose largest eigenvalue is 2 + 2 cos(π/N): λ_min = (T/l)(2 + 2 cos(π/N)).
+  ChainSpec spec;
+  spec.nodes = 11;
+  spec.length = 0.8;
+  spec.rest_length = 0.1;
+  spec.gravity = {0.0, 0.0, 0.0};
+  const Model model = Chain(spec);
+  const double l = 0.08, tension = spec.stiffness * (l - spec.rest_length);
+  const double expected = tension / l * (2.0 + 2.0 * std::cos(M_PI / 10.0));
+  const Stability stability = AnalyseStability(model, model.positions.data());
+  EXPECT_TRUE(stability.computed);
+  EXPECT_FALSE(stability.stable);
+  EXPECT_NEAR(stability.min_eigenvalue, expected, 0.05 * std::abs(expected));
+}
+
+TEST(Stability, AStretchedStraightChainIsStable) {
+  ChainSpec spec;
+  spec.length = 1.2;
+  spec.rest_length = 0.1;
+  spec.gravity = {0.0, 0.0, 0.0};
+  const Model model = Chain(spec);
+  EXPECT_TRUE(AnalyseStability(model, model.positions.data()).stable);
+}
+
+TEST(Stability, NothingFreeIsTriviallyStable) {
+  ChainSpec spec;
+  spec.nodes = 2;
+  const Model model = Chain(spec);
+  const Stability stability = AnalyseStability(model, model.positions.data());
+  EXPECT_TRUE(stability.computed);
+  EXPECT_TRUE(stability.stable);
+}
+
+}  // namespace
+}  // namespace drape

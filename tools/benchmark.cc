@@ -1,0 +1,168 @@
+// benchmark: the hanging sheet (configs/hard/two_corner_sheet.yaml) at several sizes, solved by
+// every method to relative residual 1e-8 or its own limit, one child process per run (so that the
+// peak memory, ru_maxrss of the child, is that run's alone). Prints a table: nodes, dofs, solver,
+// iterations, wall time, residual reached, final energy, time relative to newton, peak memory,
+// and for newton the time per iteration over the time of one numeric factorisation of its Hessian.
+//
+//   benchmark [--sizes 50,100,256] [--solvers newton,ceres-lbfgs,...] [--cap SECONDS]
+//             [--scene configs/hard/two_corner_sheet.yaml]   (paths relative to the current folder)
+//
+// --cap is each run's time limit (default 600 s); a run that hits it is reported as such.
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "src/equilibrium.h"
+#include "src/model.h"
+#include "src/scene_loader.h"
+#include "src/solver.h"
+#include "src/sparse_hessian.h"
+
+namespace drape {
+namespace {
+
+struct Row {
+  int iterations = 0;
+  int converged = 0;
+  double seconds = 0, residual = 0, energy = 0, per_iteration_over_factorization = 0;
+};
+
+std::vector<std::string> Split(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  for (std::string part; std::getline(stream, part, ',');) parts.push_back(part);
+  return parts;
+}
+
+// Time of one numeric factorisation of newton's (projected) Hessian at the model's positions.
+double OneFactorizationSeconds(const Model& model) {
+  const DofMap dofs(model);
+  FreeHessian hessian(model, dofs);
+  FreeHessian::Assembly assembly;
+  std::vector<double> gradient;
+  hessian.Assemble(model.positions.data(), true, &assembly, &gradient);
+  SparseCholesky cholesky(hessian);
+  const std::vector<double> shift(hessian.size(), 0.0);
+  cholesky.Factorize(hessian.projected_values(), &shift);
+  return cholesky.last_factorization_seconds();
+}
+
+Row RunOne(const std::string& scene_file, int n, const std::string& solver, double cap) {
+  const std::string nodes = "mesh.nodes=[" + std::to_string(n) + "," + std::to_string(n) + "]";
+  const Scene scene = LoadScene(scene_file, {nodes});
+  Model model = BuildModel(scene);
+  SolverOptions options;
+  options.tolerance = 1e-8;
+  options.max_iterations = 1000000;
+  options.time_limit = cap;
+  const auto start = std::chrono::steady_clock::now();
+  const SolverSummary summary = FindSolver(solver)->make()->Solve(model, options);
+  Row row;
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const Certificate certificate = ComputeCertificate(model, model.positions.data());
+  row.iterations = summary.iterations;
+  row.converged = certificate.relative_residual <= 1e-8;
+  row.residual = certificate.relative_residual;
+  row.energy = certificate.energy;
+  if (solver == "newton" && summary.iterations > 0) {
+    row.per_iteration_over_factorization =
+        row.seconds / summary.iterations / OneFactorizationSeconds(model);
+  }
+  return row;
+}
+
+// Runs in a child; returns the row and the child's peak resident memory (MB).
+bool RunInChild(const std::string& scene_file, int n, const std::string& solver, double cap,
+                Row* row, double* peak_mb) {
+  int pipe_ends[2];
+  if (pipe(pipe_ends) != 0) return false;
+  const pid_t child = fork();
+  if (child == 0) {
+    close(pipe_ends[0]);
+    Row result;
+    try {
+      result = RunOne(scene_file, n, solver, cap);
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "%s\n", error.what());
+      _exit(2);
+    }
+    if (write(pipe_ends[1], &result, sizeof result) != sizeof result) _exit(3);
+    _exit(0);
+  }
+  close(pipe_ends[1]);
+  const bool read_ok = read(pipe_ends[0], row, sizeof *row) == sizeof *row;
+  close(pipe_ends[0]);
+  int status = 0;
+  struct rusage usage {};
+  wait4(child, &status, 0, &usage);
+  *peak_mb = usage.ru_maxrss / 1024.0;
+  return read_ok && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+int Main(int argc, char** argv) {
+  std::vector<int> sizes = {50, 100, 256};
+  std::vector<std::string> solvers;
+  for (const auto& info : AllSolvers()) solvers.push_back(info.name);
+  double cap = 600.0;
+  std::string scene_file = "configs/hard/two_corner_sheet.yaml";  // run from the repository root
+  for (int a = 1; a + 1 < argc; a += 2) {
+    const std::string key = argv[a], value = argv[a + 1];
+    if (key == "--sizes") {
+      sizes.clear();
+      for (const auto& part : Split(value)) sizes.push_back(std::atoi(part.c_str()));
+    } else if (key == "--solvers") {
+      solvers = Split(value);
+    } else if (key == "--scene") {
+      scene_file = value;
+    } else if (key == "--cap") {
+      cap = std::atof(value.c_str());
+    } else {
+      std::fprintf(stderr,
+                   "usage: benchmark [--sizes 50,100] [--solvers a,b] [--cap s] [--scene file]\n");
+      return 2;
+    }
+  }
+  std::printf(
+      "| nodes | dofs | solver | iterations | wall s | rel. residual | energy J | "
+      "÷ newton | peak MB | newton s/iteration ÷ one factorisation |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  for (int n : sizes) {
+    double newton_seconds = 0.0;
+    for (const auto& solver : solvers) {
+      Row row;
+      double peak_mb = 0.0;
+      const bool ok = RunInChild(scene_file, n, solver, cap, &row, &peak_mb);
+      if (!ok) {
+        std::printf("| %d | %d | %s | failed to run | | | | | %.0f | |\n", n * n, 3 * n * n - 6,
+                    solver.c_str(), peak_mb);
+        continue;
+      }
+      if (solver == "newton") newton_seconds = row.seconds;
+      char ratio[32] = "";
+      if (newton_seconds > 0.0)
+        std::snprintf(ratio, sizeof ratio, "%.1f", row.seconds / newton_seconds);
+      char factor[32] = "";
+      if (row.per_iteration_over_factorization > 0.0) {
+        std::snprintf(factor, sizeof factor, "%.2f", row.per_iteration_over_factorization);
+      }
+      std::printf("| %d | %d | %s | %d | %.2f%s | %.2e%s | %.9g | %s | %.0f | %s |\n", n * n,
+                  3 * n * n - 6, solver.c_str(), row.iterations, row.seconds,
+                  row.seconds >= cap ? " (cap)" : "", row.residual,
+                  row.converged ? "" : " (not reached)", row.energy, ratio, peak_mb, factor);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace drape
+
+int main(int argc, char** argv) { return drape::Main(argc, argv); }
