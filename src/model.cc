@@ -16,18 +16,26 @@
 // its `move` to the start of its nodes (a node in several entries gets the sum of their moves). In
 // 2-D (dimension: 2) every node's y is fixed as well.
 // Loads: gravity m·g on every node with mass, forces `total` shared equally among the selected
-// nodes or `each` on every one; one linear potential per loaded node, measured from its start.
+// nodes, `each` on every one, `values` one per selected node in id order, or a `ramp` from `from`
+// to `to` (see RampParameters); one linear potential per loaded node, measured from its start.
+// Pressure (loads.pressure) on a closed chain: one PressurePotential per link of the loop, the
+// loop oriented so that its initial x–z area is positive (p > 0 inflates). It is a follower load,
+// not a constant one, so it is not counted in `applied`.
 #include "src/model.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "costs/constant_force_potential.h"
+#include "costs/pressure_potential.h"
 #include "costs/spring_stretch.h"
 #include "costs/tension_only_spring.h"
 #include "costs/zero_length_spring.h"
+#include "src/contact.h"
+#include "src/finite_volume.h"
 #include "src/mesh.h"
 #include "src/selection.h"
+#include "src/stretch_limit.h"
 
 namespace drape {
 
@@ -49,19 +57,8 @@ const char* const kAxisNames[3] = {"x", "y", "z"};
 
 void RejectUnsupported(const Scene& scene) {
   const MaterialSpec& material = scene.material;
-  if (material.model == "finite_volume") {
-    const Location& where =
-        material.finite_volume.present ? material.finite_volume.where : material.where;
-    throw InputError(where, "the finite_volume material is not supported yet (use springs)");
-  }
-  if (material.model != "springs") {
+  if (material.model != "springs" && material.model != "finite_volume") {
     throw InputError(material.where, "unknown material model '" + material.model + "'");
-  }
-  if (material.springs.stretch_limit) {
-    throw InputError(material.springs.where, "stretch_limit is not supported yet");
-  }
-  if (!scene.obstacles.empty()) {
-    throw InputError(scene.obstacles.front().where, "obstacles are not supported yet");
   }
 }
 
@@ -205,6 +202,90 @@ void AddConstantForce(const std::string& type, int node, const Eigen::Vector3d& 
   for (int c = 0; c < 3; ++c) model->applied[3 * node + c] += force[c];
 }
 
+// The place of each selected node along the selection, from 0 at its first node (lowest id) to 1
+// at its last: the projection of the node's mesh position on the segment between those two,
+// clamped to [0, 1]. A selection of one node, or whose ends coincide, gets 0 everywhere.
+std::vector<double> RampParameters(const std::vector<int>& nodes, const Mesh& mesh) {
+  const Eigen::Vector3d start = mesh.nodes[nodes.front()];
+  const Eigen::Vector3d span = mesh.nodes[nodes.back()] - start;
+  const double length_squared = span.squaredNorm();
+  std::vector<double> parameters;
+  for (int node : nodes) {
+    const double s =
+        length_squared > 0.0 ? (mesh.nodes[node] - start).dot(span) / length_squared : 0.0;
+    parameters.push_back(std::clamp(s, 0.0, 1.0));
+  }
+  return parameters;
+}
+
+// The force on each selected node, in the order of `nodes`.
+std::vector<Eigen::Vector3d> NodeForces(const ForceSpec& spec, const std::vector<int>& nodes,
+                                        const Mesh& mesh) {
+  const size_t n = nodes.size();
+  switch (spec.kind) {
+    case ForceSpec::Kind::kTotal:
+      return std::vector<Eigen::Vector3d>(n, spec.value / static_cast<double>(n));
+    case ForceSpec::Kind::kEach:
+      return std::vector<Eigen::Vector3d>(n, spec.value);
+    case ForceSpec::Kind::kValues:
+      if (spec.values.size() != n) {
+        throw InputError(spec.values_where,
+                         "gives " + std::to_string(spec.values.size()) +
+                             " forces but the selection has " + std::to_string(n) +
+                             " nodes: give one [fx, fy, fz] per selected node, in id order");
+      }
+      return spec.values;
+    case ForceSpec::Kind::kRamp: {
+      std::vector<Eigen::Vector3d> forces;
+      for (double s : RampParameters(nodes, mesh)) {
+        forces.push_back((1.0 - s) * spec.value + s * spec.ramp_to);
+      }
+      return forces;
+    }
+  }
+  return {};
+}
+
+// The x–z centre of the loop's nodes and the loop's links, oriented so that its area is positive.
+std::vector<Link> OrientedLoop(const Mesh& mesh, Eigen::Vector2d* centre) {
+  *centre = Eigen::Vector2d::Zero();
+  for (const Link& link : mesh.loop) {
+    *centre += Eigen::Vector2d(mesh.nodes[link[0]].x(), mesh.nodes[link[0]].z());
+  }
+  *centre /= static_cast<double>(mesh.loop.size());
+  double twice_area = 0.0;
+  for (const Link& link : mesh.loop) {
+    const Eigen::Vector3d a = mesh.nodes[link[0]], b = mesh.nodes[link[1]];
+    twice_area += (a.x() - centre->x()) * (b.z() - centre->y()) -
+                  (b.x() - centre->x()) * (a.z() - centre->y());
+  }
+  std::vector<Link> loop = mesh.loop;
+  if (twice_area < 0.0) {
+    for (Link& link : loop) link = {link[1], link[0]};
+  }
+  return loop;
+}
+
+void AddPressure(const Scene& scene, const Mesh& mesh, Model* model) {
+  if (!scene.loads.pressure) return;
+  const PressureSpec& spec = *scene.loads.pressure;
+  if (mesh.loop.empty()) {
+    throw InputError(spec.where, "pressure needs a closed profile: a chain mesh with closed: true");
+  }
+  if (scene.dimension != 2) {
+    throw InputError(spec.where,
+                     "pressure acts on a closed profile in the x-z plane: set dimension: 2");
+  }
+  if (spec.pressure == 0.0) return;
+  Eigen::Vector2d centre;
+  for (const Link& link : OrientedLoop(mesh, &centre)) {
+    model->terms.push_back(
+        MakeTerm("pressure", {link[0], link[1]},
+                 PressurePotential::Create(spec.pressure, centre.x(), centre.y()),
+                 std::abs(spec.pressure) * model->size * model->size));
+  }
+}
+
 void AddLoads(const Scene& scene, const Mesh& mesh, Model* model) {
   if (scene.loads.gravity) {
     for (int k = 0; k < model->num_nodes; ++k) {
@@ -214,10 +295,10 @@ void AddLoads(const Scene& scene, const Mesh& mesh, Model* model) {
   }
   for (const ForceSpec& spec : scene.loads.forces) {
     const std::vector<int> nodes = SelectNodes(spec.nodes, mesh);
-    const Eigen::Vector3d each =
-        spec.kind == ForceSpec::Kind::kEach ? spec.value : spec.value / nodes.size();
-    for (int node : nodes) AddConstantForce("load", node, each, model);
+    const std::vector<Eigen::Vector3d> forces = NodeForces(spec, nodes, mesh);
+    for (size_t k = 0; k < nodes.size(); ++k) AddConstantForce("load", nodes[k], forces[k], model);
   }
+  AddPressure(scene, mesh, model);
 }
 
 // Gravity or loads along a direction in which nothing is fixed (and no obstacle holds the fabric)
@@ -243,6 +324,21 @@ void CheckHasMinimum(const Scene& scene, const Model& model) {
     throw InputError(scene.loads.where, "loads act along " + axis + " but no node is fixed along " +
                                             axis + ": the fabric is free to slide along " + axis +
                                             " and its equilibrium is not unique (fix some nodes)");
+  }
+}
+
+// A pressure alone pushes on the profile in balance; what holds the profile in place must be
+// fixed along x and z, else it floats freely in the plane.
+void CheckPressureHeld(const Scene& scene, const Model& model) {
+  if (!scene.loads.pressure || scene.loads.pressure->pressure == 0.0) return;
+  for (int c : {0, 2}) {
+    bool fixed = false;
+    for (int k = 0; k < model.num_nodes; ++k) fixed = fixed || model.fixed[3 * k + c];
+    if (!fixed) {
+      throw InputError(scene.loads.pressure->where,
+                       std::string("the pressurised profile is free to slide along ") +
+                           kAxisNames[c] + ": fix some nodes along " + kAxisNames[c]);
+    }
   }
 }
 
@@ -275,9 +371,18 @@ Model BuildModel(const Scene& scene) {
   model.triangles = mesh.triangles;
   model.edges = mesh.lines;
 
-  AddSprings(scene.material.springs, mesh, &model);
+  if (scene.material.model == "finite_volume") {
+    AddFiniteVolumeTerms(scene.material.finite_volume, mesh, &model);
+  } else {
+    AddSprings(scene.material.springs, mesh, &model);
+    if (scene.material.springs.stretch_limit) {
+      AddStretchLimitTerms(*scene.material.springs.stretch_limit, &model);
+    }
+  }
   AddLoads(scene, mesh, &model);
+  if (!scene.obstacles.empty()) AddContactTerms(scene.obstacles, scene.contact, &model);
   CheckHasMinimum(scene, model);
+  CheckPressureHeld(scene, model);
   ValidateModel(model);
   return model;
 }

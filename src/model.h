@@ -30,6 +30,9 @@ struct Model {
   std::vector<double> applied;                 // 3 per node: weight + applied loads, N (constant)
   std::vector<std::unique_ptr<Term>> terms;
   double size = 1.0;  // diameter of the initial shape, m (for relative distances)
+  // material.springs.stretch_limit (maximum stretch ratio), 0 when the scene sets none; the
+  // explicit-euler solver enforces it with Provot's constraint (src/stretch_limit.h).
+  double stretch_limit = 0.0;
 
   int num_dofs() const { return 3 * num_nodes; }
   int num_free_dofs() const;
