@@ -3,13 +3,10 @@
 // (AutoDiffFirstOrderFunction would need the whole size at compile time). Stops on the relative
 // equilibrium residual, not on Ceres' cost-relative tolerances (architecture.md, fact 3).
 //
-// Precision: near equilibrium the energy changes by about |g|²/k per step, far below the roundoff
-// of the total energy (1e-16 |E| in double, 1e-19 |E| in long double), so a line search comparing
-// energies stalls around a relative residual of 1e-7. When Ceres stops for that reason, the solve
-// restarts from there with the energy measured locally, as the integral of the gradient along the
-// step from the last iterate x_k (trapezoid rule, exact for the quadratic energy near a minimum):
-//   E(x) ≈ E(x_k) + ½ (g(x_k) + g(x)) · (x − x_k),
-// re-anchored at every iterate. Its differences carry the roundoff of the step, not of |E|.
+// Precision: a line search comparing energies stalls around a relative residual of 1e-7, where
+// energy changes fall below the roundoff of the total energy. When Ceres stops for that reason,
+// the solve restarts from there with the energy measured locally (src/local_energy.h), re-anchored
+// at every iterate.
 #include <ceres/first_order_function.h>
 #include <ceres/gradient_problem.h>
 #include <ceres/gradient_problem_solver.h>
@@ -20,6 +17,7 @@
 #include <vector>
 
 #include "src/equilibrium.h"
+#include "src/local_energy.h"
 #include "src/solvers.h"
 
 namespace drape {
@@ -43,10 +41,7 @@ class FreeEnergy : public ceres::FirstOrderFunction {
 
   // In local mode, moves the anchor to the point last evaluated (the current iterate).
   void Anchor() {
-    if (!local_) return;
-    anchor_point_ = last_point_;
-    anchor_gradient_ = last_free_gradient_;
-    anchor_cost_ = last_cost_;
+    if (local_) local_energy_.Anchor(last_point_, last_free_gradient_, last_cost_);
   }
 
   bool Evaluate(const double* free, double* cost, double* free_gradient) const override {
@@ -56,14 +51,7 @@ class FreeEnergy : public ceres::FirstOrderFunction {
     last_free_gradient_.resize(n);
     dofs_.Gather(gradient_.data(), last_free_gradient_.data());
     last_cost_ = last_energy_;
-    if (local_) {
-      long double change = 0.0L;
-      for (int f = 0; f < n; ++f) {
-        change += 0.5L * (anchor_gradient_[f] + last_free_gradient_[f]) *
-                  (static_cast<long double>(free[f]) - anchor_point_[f]);
-      }
-      last_cost_ = anchor_cost_ + static_cast<double>(change);
-    }
+    if (local_) last_cost_ = local_energy_.At(free, last_free_gradient_.data());
     *cost = last_cost_;
     if (free_gradient)
       std::copy(last_free_gradient_.begin(), last_free_gradient_.end(), free_gradient);
@@ -88,8 +76,7 @@ class FreeEnergy : public ceres::FirstOrderFunction {
   const Model& model_;
   const DofMap& dofs_;
   bool local_ = false;
-  std::vector<double> anchor_point_, anchor_gradient_;
-  double anchor_cost_ = 0.0;
+  LocalEnergy local_energy_;
   mutable std::vector<double> work_, gradient_, last_point_, last_free_gradient_;
   mutable double last_energy_ = 0.0, last_cost_ = 0.0;
 };

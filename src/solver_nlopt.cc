@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "src/equilibrium.h"
+#include "src/local_energy.h"
 #include "src/solvers.h"
 
 namespace drape {
@@ -71,9 +72,7 @@ struct Objective {
   double best_value = std::numeric_limits<double>::infinity();
   double best_residual = std::numeric_limits<double>::infinity();
   std::vector<double> best_gradient;
-  // Local-energy anchor.
-  std::vector<double> anchor_point, anchor_gradient;
-  double anchor_value = 0.0;
+  LocalEnergy local;  // the objective when local_energy is set (src/local_energy.h)
 
   double Evaluate(const std::vector<double>& free, std::vector<double>& free_gradient) {
     if (monitor_stopped || stalled) return best_value;  // NLopt may evaluate once more
@@ -95,11 +94,7 @@ struct Objective {
       best_gradient = g;
       best_residual = residual;
       since_best = 0;
-      if (local_energy) {
-        anchor_point = free;
-        anchor_gradient = g;
-        anchor_value = value;
-      }
+      if (local_energy) local.Anchor(free, g, value);
     }
     if (++since_best > std::max(kStallEvaluations, 2 * dofs.num_free()) &&
         opt) {  // no lower value for long: restart
@@ -122,20 +117,14 @@ struct Objective {
     stalled = false;
     since_best = 0;
     if (!local_energy || best_point.empty()) return;
-    anchor_point = best_point;
-    anchor_gradient = best_gradient;
-    anchor_value = best_value = 0.0;
+    local.Anchor(best_point, best_gradient, 0.0);
+    best_value = 0.0;
   }
 
   double LocalValue(const std::vector<double>& free, const std::vector<double>& g, double energy) {
     if (!local_energy) return energy;
-    if (anchor_point.empty()) return 0.0;  // the first point is the anchor, at 0
-    long double change = 0.0L;
-    for (size_t f = 0; f < free.size(); ++f) {
-      change += 0.5L * (anchor_gradient[f] + g[f]) *
-                (static_cast<long double>(free[f]) - anchor_point[f]);
-    }
-    return anchor_value + static_cast<double>(change);
+    if (!local.anchored()) return 0.0;  // the first point is the anchor, at 0
+    return local.At(free.data(), g.data());
   }
 
   double monitor_tolerance = 0.0;
