@@ -1,6 +1,368 @@
+// Result files. Each is written to a hidden temporary name in the output folder, flushed, and then
+// renamed over its final name (rename is atomic within one file system), so a reader never sees a
+// half-written file, even if the run is killed while writing.
 #include "src/writers.h"
 
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
 namespace drape {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A number with every digit needed to read it back exactly (%.17g).
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// JSON has no NaN or infinity: those are written as null.
+std::string JsonNumber(double value) { return std::isfinite(value) ? Number(value) : "null"; }
+
+std::string JsonString(const std::string& text) {
+  std::string quoted = "\"";
+  for (unsigned char c : text) {
+    switch (c) {
+      case '"':
+        quoted += "\\\"";
+        break;
+      case '\\':
+        quoted += "\\\\";
+        break;
+      case '\n':
+        quoted += "\\n";
+        break;
+      case '\r':
+        quoted += "\\r";
+        break;
+      case '\t':
+        quoted += "\\t";
+        break;
+      default:
+        if (c < 0x20) {
+          char escaped[8];
+          std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+          quoted += escaped;
+        } else {
+          quoted += static_cast<char>(c);
+        }
+    }
+  }
+  return quoted + "\"";
+}
+
+std::string JsonBool(bool value) { return value ? "true" : "false"; }
+
+// `"key": value` members of one JSON object, joined with the indentation of `depth`.
+std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth) {
+  if (members.empty()) return "{}";
+  const std::string inner(2 * (depth + 1), ' ');
+  std::string text = "{\n";
+  for (size_t k = 0; k < members.size(); ++k) {
+    text += inner + JsonString(members[k].first) + ": " + members[k].second;
+    text += k + 1 < members.size() ? ",\n" : "\n";
+  }
+  return text + std::string(2 * depth, ' ') + "}";
+}
+
+template <typename Map, typename Format>
+std::string JsonMap(const Map& map, int depth, Format format) {
+  std::vector<std::pair<std::string, std::string>> members;
+  for (const auto& [key, value] : map) members.emplace_back(key, format(value));
+  return JsonObject(members, depth);
+}
+
+// Writes directory/name through a temporary file in the same directory, then renames it.
+void WriteAtomically(const fs::path& directory, const std::string& name,
+                     const std::function<void(std::ostream&)>& write) {
+  const fs::path final_path = directory / name;
+  const fs::path temporary = directory / ("." + name + ".tmp" + std::to_string(::getpid()));
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (!file) {
+      throw std::runtime_error("cannot write " + temporary.string() + ": " + std::strerror(errno));
+    }
+    write(file);
+    file.flush();
+    if (!file) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw std::runtime_error("cannot write " + temporary.string() + ": " + std::strerror(errno));
+    }
+  }
+  std::error_code error;
+  fs::rename(temporary, final_path, error);
+  if (error) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error("cannot write " + final_path.string() + ": " + error.message());
+  }
+}
+
+std::string FixedLetters(const Model& model, int node) {
+  std::string letters;
+  for (int c = 0; c < 3; ++c) {
+    if (model.fixed[3 * node + c]) letters += "xyz"[c];
+  }
+  return letters;
+}
+
+bool AnyFixed(const Model& model, int node) {
+  return model.fixed[3 * node] || model.fixed[3 * node + 1] || model.fixed[3 * node + 2];
+}
+
+// The certificate's force on a node (reaction where fixed, residual where free); NaN if the
+// certificate could not be evaluated.
+double NodeForce(const RunResult& result, int k) {
+  const auto& forces = result.certificate.node_forces;
+  return k < static_cast<int>(forces.size()) ? forces[k] : NAN;
+}
+
+void WriteSummary(const Scene& scene, const Model& model, const RunResult& result,
+                  std::ostream& out) {
+  const Certificate& certificate = result.certificate;
+  const SolverSummary& summary = result.summary;
+  std::vector<std::pair<std::string, double>> energy{{"total", certificate.energy}};
+  for (const auto& [type, value] : certificate.energy_by_type) energy.emplace_back(type, value);
+  const Eigen::Vector3d& reactions = certificate.reaction_sum;
+  const std::string reaction_sum = "[" + JsonNumber(reactions.x()) + ", " +
+                                   JsonNumber(reactions.y()) + ", " + JsonNumber(reactions.z()) +
+                                   "]";
+
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"scene", JsonString(scene.name)},
+      {"scene_file", JsonString(scene.file)},
+      {"solver", JsonString(summary.solver)},
+      {"converged", JsonBool(result.converged)},
+      {"termination", JsonString(summary.termination)},
+      {"iterations", std::to_string(summary.iterations)},
+      {"wall_time_s", JsonNumber(summary.wall_time_s)},
+      {"nodes", std::to_string(model.num_nodes)},
+      {"free_dofs", std::to_string(model.num_free_dofs())},
+      {"terms", JsonMap(model.TermCounts(), 1, [](int count) { return std::to_string(count); })},
+      {"energy", JsonMap(energy, 1, JsonNumber)},
+      {"residual", JsonObject({{"max_node_force", JsonNumber(certificate.max_node_force)},
+                               {"relative", JsonNumber(certificate.relative_residual)}},
+                              1)},
+      {"reactions", JsonObject({{"sum", reaction_sum}}, 1)},
+      {"stable", result.stability.computed ? JsonBool(result.stability.stable) : "null"},
+  };
+  if (result.stability.computed && !result.stability.stable) {
+    members.emplace_back("min_eigenvalue", JsonNumber(result.stability.min_eigenvalue));
+  }
+  members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
+  members.emplace_back("statistics", JsonMap(summary.statistics, 1, JsonNumber));
+  out << JsonObject(members, 0) << "\n";
+}
+
+void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) {
+  out << "id,i,j,x,y,z,fixed,fx,fy,fz\n";
+  for (int node = 0; node < model.num_nodes; ++node) {
+    const auto ij = node < static_cast<int>(model.grid_index.size()) ? model.grid_index[node]
+                                                                     : std::array<int, 2>{-1, -1};
+    out << node << ',' << ij[0] << ',' << ij[1];
+    for (int c = 0; c < 3; ++c) out << ',' << Number(model.positions[3 * node + c]);
+    out << ',' << FixedLetters(model, node);
+    for (int c = 0; c < 3; ++c) out << ',' << Number(NodeForce(result, 3 * node + c));
+    out << '\n';
+  }
+}
+
+void WriteHistory(const SolverSummary& summary, std::ostream& out) {
+  out << "iteration,time_s,energy,residual\n";
+  for (const IterationRecord& record : summary.history) {
+    out << record.iteration << ',' << Number(record.time_s) << ',' << Number(record.energy) << ','
+        << Number(record.relative_residual) << '\n';
+  }
+}
+
+// The per-step series some methods record beyond the history (puiseux-dynamic's kinetic energy).
+void WriteTrace(const SolverSummary& summary, std::ostream& out) {
+  for (size_t k = 0; k < summary.trace_columns.size(); ++k) {
+    out << (k ? "," : "") << summary.trace_columns[k];
+  }
+  out << '\n';
+  for (const auto& row : summary.trace) {
+    for (size_t k = 0; k < row.size(); ++k) out << (k ? "," : "") << Number(row[k]);
+    out << '\n';
+  }
+}
+
+void WriteVectors(const std::string& name, const std::function<double(int)>& value, int count,
+                  std::ostream& out) {
+  out << "VECTORS " << name << " double\n";
+  for (int node = 0; node < count; ++node) {
+    out << Number(value(3 * node)) << ' ' << Number(value(3 * node + 1)) << ' '
+        << Number(value(3 * node + 2)) << '\n';
+  }
+}
+
+// Legacy ASCII VTK polydata: the surface triangles, the line elements, and per node the
+// displacement from the start, the certificate's force and whether the node is (partly) fixed.
+void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, std::ostream& out) {
+  std::string title = "drape " + scene.name;
+  std::replace(title.begin(), title.end(), '\n', ' ');
+  out << "# vtk DataFile Version 3.0\n" << title.substr(0, 250) << "\nASCII\nDATASET POLYDATA\n";
+  out << "POINTS " << model.num_nodes << " double\n";
+  for (int node = 0; node < model.num_nodes; ++node) {
+    out << Number(model.positions[3 * node]) << ' ' << Number(model.positions[3 * node + 1]) << ' '
+        << Number(model.positions[3 * node + 2]) << '\n';
+  }
+  if (!model.triangles.empty()) {
+    out << "POLYGONS " << model.triangles.size() << ' ' << 4 * model.triangles.size() << '\n';
+    for (const auto& t : model.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  }
+  if (!model.edges.empty()) {
+    out << "LINES " << model.edges.size() << ' ' << 3 * model.edges.size() << '\n';
+    for (const auto& e : model.edges) out << "2 " << e[0] << ' ' << e[1] << '\n';
+  }
+  out << "POINT_DATA " << model.num_nodes << '\n';
+  WriteVectors(
+      "displacement",
+      [&model](int k) {
+        return k < static_cast<int>(model.initial.size()) ? model.positions[k] - model.initial[k]
+                                                          : 0.0;
+      },
+      model.num_nodes, out);
+  WriteVectors(
+      "force", [&result](int k) { return NodeForce(result, k); }, model.num_nodes, out);
+  out << "SCALARS fixed int 1\nLOOKUP_TABLE default\n";
+  for (int node = 0; node < model.num_nodes; ++node) out << (AnyFixed(model, node) ? 1 : 0) << '\n';
+}
+
+// Wavefront OBJ: vertices, triangular faces and line elements (1-based indices).
+void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
+  out << "# drape: " << scene.name << "\n";
+  for (int node = 0; node < model.num_nodes; ++node) {
+    out << "v " << Number(model.positions[3 * node]) << ' ' << Number(model.positions[3 * node + 1])
+        << ' ' << Number(model.positions[3 * node + 2]) << '\n';
+  }
+  for (const auto& t : model.triangles) {
+    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  }
+  for (const auto& e : model.edges) out << "l " << e[0] + 1 << ' ' << e[1] + 1 << '\n';
+}
+
+// tools/plot_drape.gp: $DRAPE_PLOT_SCRIPT, else DRAPE_TOOLS_DIR if the build defines it, else
+// next to the running executable or up to two folders above it (a build folder in the source tree).
+std::optional<fs::path> FindPlotScript() {
+  if (const char* script = std::getenv("DRAPE_PLOT_SCRIPT")) return fs::path(script);
+#ifdef DRAPE_TOOLS_DIR
+  if (fs::exists(fs::path(DRAPE_TOOLS_DIR) / "plot_drape.gp")) {
+    return fs::path(DRAPE_TOOLS_DIR) / "plot_drape.gp";
+  }
+#endif
+  std::error_code error;
+  fs::path folder = fs::read_symlink("/proc/self/exe", error).parent_path();
+  for (int up = 0; !error && up < 3; ++up, folder = folder.parent_path()) {
+    const fs::path candidate = folder / "tools" / "plot_drape.gp";
+    if (fs::exists(candidate, error)) return candidate;
+  }
+  return std::nullopt;
+}
+
+// A gnuplot string literal: single quotes, with '' for a quote inside.
+std::string GnuplotString(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Runs gnuplot on the node table to draw drape.png. Throws std::runtime_error if it cannot.
+void DrawPng(const Scene& scene, const Model& model, const RunResult& result,
+             const fs::path& directory) {
+  const std::optional<fs::path> script = FindPlotScript();
+  if (!script) {
+    throw std::runtime_error("tools/plot_drape.gp not found (set DRAPE_PLOT_SCRIPT to its path)");
+  }
+  const std::string stem = ".drape-plot.tmp" + std::to_string(::getpid());
+  const fs::path table = directory / (stem + ".csv");
+  const fs::path image = directory / (stem + ".png");
+  WriteAtomically(directory, table.filename().string(),
+                  [&](std::ostream& out) { WriteNodes(model, result, out); });
+  const std::string settings = "input=" + GnuplotString(table.string()) +
+                               "; output=" + GnuplotString(image.string()) +
+                               "; title=" + GnuplotString(scene.name);
+  const std::string script_path = script->string();
+  const char* argv[] = {"gnuplot", "-e", settings.c_str(), script_path.c_str(), nullptr};
+  pid_t child;
+  const int spawn_error =
+      posix_spawnp(&child, "gnuplot", nullptr, nullptr, const_cast<char* const*>(argv), environ);
+  int status = 0;
+  const bool ran = spawn_error == 0 && waitpid(child, &status, 0) == child;
+  std::error_code ignored;
+  fs::remove(table, ignored);
+  if (!ran || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(image)) {
+    fs::remove(image, ignored);
+    if (spawn_error == ENOENT || (WIFEXITED(status) && WEXITSTATUS(status) == 127)) {
+      throw std::runtime_error("gnuplot not found (install gnuplot-nox)");
+    }
+    throw std::runtime_error("gnuplot failed on " + script_path);
+  }
+  fs::rename(image, directory / "drape.png");
+}
+
+bool Requested(const Scene& scene, const std::string& what) {
+  const auto& write = scene.output.write;
+  return std::find(write.begin(), write.end(), what) != write.end();
+}
+
+}  // namespace
+
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
-                  const std::string& directory) {}
+                  const std::string& directory) {
+  const fs::path folder(directory);
+  fs::create_directories(folder);
+  if (Requested(scene, "summary")) {
+    WriteAtomically(folder, "summary.json",
+                    [&](std::ostream& out) { WriteSummary(scene, model, result, out); });
+  }
+  if (Requested(scene, "nodes")) {
+    WriteAtomically(folder, "nodes.csv",
+                    [&](std::ostream& out) { WriteNodes(model, result, out); });
+  }
+  if (Requested(scene, "history")) {
+    WriteAtomically(folder, "history.csv",
+                    [&](std::ostream& out) { WriteHistory(result.summary, out); });
+  }
+  // The per-step trace of the methods that record one goes with the history.
+  if ((Requested(scene, "history") || Requested(scene, "kinetic")) &&
+      !result.summary.trace_columns.empty()) {
+    WriteAtomically(folder, "kinetic.csv",
+                    [&](std::ostream& out) { WriteTrace(result.summary, out); });
+  }
+  if (Requested(scene, "vtk")) {
+    WriteAtomically(folder, "mesh.vtk",
+                    [&](std::ostream& out) { WriteVtk(scene, model, result, out); });
+  }
+  if (Requested(scene, "obj")) {
+    WriteAtomically(folder, "mesh.obj", [&](std::ostream& out) { WriteObj(scene, model, out); });
+  }
+  if (Requested(scene, "png")) {
+    // The picture is a convenience: without gnuplot, say so and keep every other file.
+    try {
+      DrawPng(scene, model, result, folder);
+    } catch (const std::exception& error) {
+      std::cerr << "drape: warning: drape.png not written: " << error.what() << "\n";
+    }
+  }
+}
+
 }  // namespace drape

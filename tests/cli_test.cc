@@ -1,0 +1,283 @@
+// The `drape` command, run as a process (DRAPE_BINARY): subcommands, exit status, what is written
+// and what is not.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "src/solver.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+std::string ShellQuoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// A small 2-D chain that ceres-lbfgs solves in well under a second.
+constexpr char kChainScene[] = R"(name: cli-chain
+dimension: 2
+mesh:
+  kind: chain
+  length: 0.4
+  nodes: 5
+  direction: [1, 0, 0]
+material:
+  model: springs
+  node_mass: 0.01
+  springs:
+    structural: 50
+fixed:
+  - nodes: {ids: [0]}
+    move: [0.05, 0, 0]
+  - nodes: {ids: [4]}
+    move: [-0.05, 0, 0]
+loads:
+  gravity: [0, 0, -9.81]
+solver:
+  method: ceres-lbfgs
+  tolerance: 1.0e-8
+  max_iterations: 10000
+output:
+  directory: OUT
+  write: [summary, nodes, history, vtk, obj]
+)";
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    directory_ = fs::temp_directory_path() /
+                 ("drape_cli_test_" + std::to_string(::getpid()) + "_" + test->name());
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+    out_ = directory_ / "out";
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  // Writes the chain scene (output.directory = out_) with `replace` applied: pairs of
+  // (text, replacement).
+  std::string WriteScene(const std::vector<std::pair<std::string, std::string>>& replace = {}) {
+    std::string text = std::regex_replace(kChainScene, std::regex("OUT"), out_.string());
+    for (const auto& [from, to] : replace) {
+      const size_t at = text.find(from);
+      EXPECT_NE(at, std::string::npos) << from;
+      if (at != std::string::npos) text.replace(at, from.size(), to);
+    }
+    const fs::path path = directory_ / "scene.yaml";
+    std::ofstream(path) << text;
+    return path.string();
+  }
+
+  Outcome Drape(const std::vector<std::string>& args) const {
+    std::string command = ShellQuoted(DRAPE_BINARY);
+    for (const auto& arg : args) command += " " + ShellQuoted(arg);
+    const fs::path out = directory_ / "stdout.txt", err = directory_ / "stderr.txt";
+    command += " > " + ShellQuoted(out.string()) + " 2> " + ShellQuoted(err.string());
+    const int status = std::system(command.c_str());
+    Outcome outcome;
+    outcome.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    outcome.out = ReadFile(out);
+    outcome.err = ReadFile(err);
+    fs::remove(out);
+    fs::remove(err);
+    return outcome;
+  }
+
+  YAML::Node Summary(const fs::path& folder) const {
+    return YAML::LoadFile((folder / "summary.json").string());
+  }
+
+  fs::path directory_;
+  fs::path out_;
+};
+
+TEST_F(CliTest, SolversListsEveryMethod) {
+  const Outcome outcome = Drape({"solvers"});
+  EXPECT_EQ(outcome.exit_status, 0);
+  EXPECT_NE(outcome.out.find("ceres-lbfgs"), std::string::npos);
+  for (const auto& info : AllSolvers()) {
+    EXPECT_NE(outcome.out.find(info.name), std::string::npos) << info.name;
+  }
+}
+
+TEST_F(CliTest, HelpExitsZero) {
+  for (const char* help : {"help", "--help", "-h"}) {
+    const Outcome outcome = Drape({help});
+    EXPECT_EQ(outcome.exit_status, 0) << help;
+    EXPECT_NE(outcome.out.find("drape solve"), std::string::npos) << help;
+  }
+}
+
+TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {
+  const std::string scene = WriteScene();
+  const std::vector<std::vector<std::string>> mistakes = {
+      {},
+      {"frobnicate"},
+      {"solve"},
+      {"solve", scene, "--bogus"},
+      {"solve", scene, "--solver"},
+      {"solve", scene, scene},
+      {"check", scene, "--out", out_.string()},
+      {"solvers", "extra"},
+  };
+  for (const auto& args : mistakes) {
+    const Outcome outcome = Drape(args);
+    std::string joined;
+    for (const auto& arg : args) joined += arg + " ";
+    EXPECT_EQ(outcome.exit_status, 2) << joined;
+    EXPECT_NE(outcome.err.find("usage: drape"), std::string::npos) << joined;
+  }
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+TEST_F(CliTest, FutureCommandsSayTheyAreNotImplemented) {
+  for (const char* command : {"compare", "fit"}) {
+    const Outcome outcome = Drape({command, "x.yaml"});
+    EXPECT_EQ(outcome.exit_status, 2) << command;
+    EXPECT_NE(outcome.err.find("not implemented yet"), std::string::npos) << command;
+  }
+}
+
+TEST_F(CliTest, UnknownSolverExitsTwoListingTheMethods) {
+  const Outcome outcome = Drape({"solve", WriteScene(), "--solver", "no-such-method"});
+  EXPECT_EQ(outcome.exit_status, 2);
+  EXPECT_NE(outcome.err.find("ceres-lbfgs"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+TEST_F(CliTest, MissingSceneFileExitsTwo) {
+  const Outcome outcome = Drape({"solve", (directory_ / "absent.yaml").string()});
+  EXPECT_EQ(outcome.exit_status, 2);
+  EXPECT_NE(outcome.err.find("absent.yaml"), std::string::npos) << outcome.err;
+}
+
+TEST_F(CliTest, BadSceneExitsTwoWithALocatedMessageAndWritesNothing) {
+  const std::string scene = WriteScene({{"structural: 50", "structural: -50"}});
+  const Outcome outcome = Drape({"solve", scene});
+  EXPECT_EQ(outcome.exit_status, 2);
+  // One line: "file:line:column: key.path: what is wrong".
+  EXPECT_TRUE(std::regex_search(outcome.err, std::regex("scene\\.yaml:[0-9]+:[0-9]+: ")))
+      << outcome.err;
+  EXPECT_NE(outcome.err.find("structural"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+TEST_F(CliTest, SolveConvergesAndWritesEveryRequestedFile) {
+  const Outcome outcome = Drape({"solve", WriteScene()});
+  ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
+  for (const char* name : {"summary.json", "nodes.csv", "history.csv", "mesh.vtk", "mesh.obj"}) {
+    EXPECT_TRUE(fs::exists(out_ / name)) << name;
+  }
+  const YAML::Node summary = Summary(out_);
+  EXPECT_TRUE(summary["converged"].as<bool>());
+  EXPECT_EQ(summary["solver"].as<std::string>(), "ceres-lbfgs");
+  EXPECT_EQ(summary["nodes"].as<int>(), 5);
+  EXPECT_LE(summary["residual"]["relative"].as<double>(), 1e-8);
+  // The final result line on stdout.
+  EXPECT_NE(outcome.out.find("converged yes"), std::string::npos) << outcome.out;
+  EXPECT_EQ(std::count(outcome.out.begin(), outcome.out.end(), '\n'), 1) << outcome.out;
+}
+
+TEST_F(CliTest, IterationLimitExitsOneAndStillWritesTheResult) {
+  const Outcome outcome = Drape({"solve", WriteScene(), "--set", "solver.max_iterations=1"});
+  EXPECT_EQ(outcome.exit_status, 1) << outcome.err;
+  const YAML::Node summary = Summary(out_);
+  EXPECT_FALSE(summary["converged"].as<bool>());
+  EXPECT_LE(summary["iterations"].as<int>(), 1);
+  EXPECT_TRUE(fs::exists(out_ / "nodes.csv"));
+  EXPECT_NE(outcome.out.find("converged no"), std::string::npos) << outcome.out;
+}
+
+TEST_F(CliTest, OutAndSetOverrideTheScene) {
+  const fs::path elsewhere = directory_ / "elsewhere";
+  const Outcome outcome = Drape({"solve", WriteScene(), "--out", elsewhere.string(), "--set",
+                                 "mesh.nodes=7", "--set", "solver.tolerance=1e-6"});
+  ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
+  EXPECT_FALSE(fs::exists(out_));
+  const YAML::Node summary = Summary(elsewhere);
+  EXPECT_EQ(summary["nodes"].as<int>(), 7);
+  EXPECT_EQ(summary["tolerance"].as<double>(), 1e-6);
+}
+
+TEST_F(CliTest, SolverFlagOverridesTheMethod) {
+  const Outcome outcome =
+      Drape({"solve", WriteScene(), "--solver", "ceres-lm", "--set", "solver.max_iterations=2"});
+  EXPECT_NE(outcome.exit_status, 2) << outcome.err;
+  EXPECT_EQ(Summary(out_)["solver"].as<std::string>(), "ceres-lm");
+}
+
+TEST_F(CliTest, UnwritableOutputFolderExitsTwo) {
+  const std::string scene = WriteScene();
+  const Outcome outcome = Drape({"solve", scene, "--out", scene + "/results"});  // under a file
+  EXPECT_EQ(outcome.exit_status, 2);
+  EXPECT_NE(outcome.err.find("cannot write"), std::string::npos) << outcome.err;
+}
+
+TEST_F(CliTest, CheckDescribesTheModelAndWritesNothing) {
+  const Outcome outcome = Drape({"check", WriteScene(), "--set", "mesh.nodes=6"});
+  EXPECT_EQ(outcome.exit_status, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("6 nodes"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("structural"), std::string::npos) << outcome.out;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+// Ctrl-C: the solver stops at its next iteration, the last iterate is written, marked
+// converged: false, and the exit status is 1. SIGINT is blocked in the child from before it
+// starts, so the signal stays pending until drape installs its handler for the solve: the outcome
+// does not depend on when the signal is sent.
+TEST_F(CliTest, InterruptWritesTheLastIterateAndExitsOne) {
+  const std::string scene = WriteScene();
+  sigset_t interrupt, previous;
+  sigemptyset(&interrupt);
+  sigaddset(&interrupt, SIGINT);
+  ASSERT_EQ(sigprocmask(SIG_BLOCK, &interrupt, &previous), 0);
+  const pid_t child = fork();
+  if (child == 0) {
+    const std::string quiet = (directory_ / "child_output.txt").string();
+    if (!freopen(quiet.c_str(), "w", stdout) || !freopen(quiet.c_str(), "a", stderr)) _exit(100);
+    execl(DRAPE_BINARY, DRAPE_BINARY, "solve", scene.c_str(), static_cast<char*>(nullptr));
+    _exit(101);
+  }
+  sigprocmask(SIG_SETMASK, &previous, nullptr);
+  ASSERT_GT(child, 0);
+  ASSERT_EQ(kill(child, SIGINT), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "drape ended by a signal";
+  EXPECT_EQ(WEXITSTATUS(status), 1) << ReadFile(directory_ / "child_output.txt");
+  const YAML::Node summary = Summary(out_);
+  EXPECT_FALSE(summary["converged"].as<bool>());
+  EXPECT_NE(summary["termination"].as<std::string>().find("interrupt"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out_ / "nodes.csv"));
+}
+
+}  // namespace
+}  // namespace drape

@@ -1,0 +1,305 @@
+// The result files: each one reads back, consistent with the RunResult it was written from.
+// summary.json is read back with yaml-cpp (JSON is YAML), the tables line by line.
+#include "src/writers.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "costs/constant_force_potential.h"
+#include "costs/spring_stretch.h"
+#include "src/equilibrium.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 2×2 sheet (ids j*2 + i), top row fixed, node 0 held in z only, slightly off its start.
+Model SmallSheet() {
+  Model model;
+  model.num_nodes = 4;
+  model.initial = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+  model.positions = model.initial;
+  model.positions[4] = 0.01;   // node 1 moves in y
+  model.positions[5] = -0.03;  // and down
+  model.mass = {0.1, 0.1, 0.1, 0.1};
+  model.fixed = {0, 0, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1};
+  model.grid_index = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+  model.triangles = {{0, 1, 3}, {0, 3, 2}};
+  model.applied.assign(12, 0.0);
+  const int springs[4][2] = {{0, 1}, {2, 3}, {0, 2}, {1, 3}};
+  for (const auto& spring : springs) {
+    model.terms.push_back(
+        MakeTerm("structural", {spring[0], spring[1]}, SpringStretch::Create(100.0, 1.0)));
+  }
+  for (int node = 0; node < 4; ++node) {
+    const double weight[3] = {0, 0, -0.981};
+    model.applied[3 * node + 2] = weight[2];
+    model.terms.push_back(MakeTerm(
+        "gravity", {node}, ConstantForcePotential::Create(weight, &model.initial[3 * node])));
+  }
+  return model;
+}
+
+RunResult ResultOf(const Model& model) {
+  RunResult result;
+  result.certificate = ComputeCertificate(model, model.positions.data());
+  result.summary.solver = "test-solver";
+  result.summary.termination = "stopped: a \"quoted\" word,\na tab\t and a backslash \\";
+  result.summary.iterations = 3;
+  result.summary.wall_time_s = 0.125;
+  for (int k = 0; k <= 3; ++k) {
+    result.summary.history.push_back({k, 0.03 * k, -0.5 - 0.1 * k, std::pow(10.0, -2 * k)});
+  }
+  result.summary.statistics["factorizations"] = 7;
+  result.stability.computed = true;
+  result.stability.stable = false;
+  result.stability.min_eigenvalue = -0.25;
+  result.converged = false;
+  return result;
+}
+
+Scene SceneWriting(const std::vector<std::string>& write) {
+  Scene scene;
+  scene.name = "small \"sheet\"";
+  scene.file = "configs/small.yaml";
+  scene.solver.tolerance = 1e-9;
+  scene.output.write = write;
+  return scene;
+}
+
+class WritersTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    directory_ = fs::temp_directory_path() /
+                 ("drape_writers_test_" + std::to_string(::getpid()) + "_" + test->name());
+    fs::remove_all(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  std::string Path(const std::string& name) const { return (directory_ / name).string(); }
+
+  std::set<std::string> Files() const {
+    std::set<std::string> names;
+    for (const auto& entry : fs::directory_iterator(directory_)) {
+      names.insert(entry.path().filename().string());
+    }
+    return names;
+  }
+
+  fs::path directory_;
+};
+
+std::vector<std::string> Lines(const std::string& path) {
+  std::ifstream file(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(file, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> Fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.push_back("");
+  return fields;
+}
+
+TEST_F(WritersTest, SummaryJsonReadsBackWithTheValuesOfTheResult) {
+  const Model model = SmallSheet();
+  const RunResult result = ResultOf(model);
+  const Scene scene = SceneWriting({"summary"});
+  WriteOutputs(scene, model, result, directory_.string());
+
+  const YAML::Node summary = YAML::LoadFile(Path("summary.json"));
+  EXPECT_EQ(summary["scene"].as<std::string>(), scene.name);
+  EXPECT_EQ(summary["solver"].as<std::string>(), "test-solver");
+  EXPECT_FALSE(summary["converged"].as<bool>());
+  EXPECT_EQ(summary["termination"].as<std::string>(), result.summary.termination);
+  EXPECT_EQ(summary["iterations"].as<int>(), 3);
+  EXPECT_EQ(summary["wall_time_s"].as<double>(), 0.125);
+  EXPECT_EQ(summary["nodes"].as<int>(), 4);
+  EXPECT_EQ(summary["free_dofs"].as<int>(), model.num_free_dofs());
+  const auto terms = summary["terms"].as<std::map<std::string, int>>();
+  EXPECT_EQ(terms, model.TermCounts());
+  EXPECT_EQ(summary["energy"]["total"].as<double>(), result.certificate.energy);
+  for (const auto& [type, energy] : result.certificate.energy_by_type) {
+    EXPECT_EQ(summary["energy"][type].as<double>(), energy) << type;
+  }
+  EXPECT_EQ(summary["residual"]["max_node_force"].as<double>(), result.certificate.max_node_force);
+  EXPECT_EQ(summary["residual"]["relative"].as<double>(), result.certificate.relative_residual);
+  const auto reactions = summary["reactions"]["sum"].as<std::vector<double>>();
+  ASSERT_EQ(reactions.size(), 3u);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(reactions[c], result.certificate.reaction_sum[c]);
+  EXPECT_FALSE(summary["stable"].as<bool>());
+  EXPECT_EQ(summary["min_eigenvalue"].as<double>(), -0.25);
+  EXPECT_EQ(summary["tolerance"].as<double>(), 1e-9);
+  EXPECT_EQ(summary["statistics"]["factorizations"].as<double>(), 7.0);
+  EXPECT_EQ(Files(), std::set<std::string>{"summary.json"});
+}
+
+TEST_F(WritersTest, NonFiniteNumbersAndUnknownStabilityAreNull) {
+  const Model model = SmallSheet();
+  RunResult result = ResultOf(model);
+  result.summary.wall_time_s = NAN;
+  result.certificate.energy = INFINITY;
+  result.stability = Stability{};  // not computed
+  WriteOutputs(SceneWriting({"summary"}), model, result, directory_.string());
+
+  const YAML::Node summary = YAML::LoadFile(Path("summary.json"));
+  EXPECT_TRUE(summary["wall_time_s"].IsNull());
+  EXPECT_TRUE(summary["energy"]["total"].IsNull());
+  EXPECT_TRUE(summary["stable"].IsNull());
+  EXPECT_FALSE(summary["min_eigenvalue"].IsDefined());
+  EXPECT_TRUE(summary["residual"]["relative"].IsScalar());
+}
+
+TEST_F(WritersTest, NodesCsvHasOneFullPrecisionRowPerNode) {
+  const Model model = SmallSheet();
+  const RunResult result = ResultOf(model);
+  WriteOutputs(SceneWriting({"nodes"}), model, result, directory_.string());
+
+  const auto lines = Lines(Path("nodes.csv"));
+  ASSERT_EQ(lines.size(), 1u + model.num_nodes);
+  EXPECT_EQ(lines[0], "id,i,j,x,y,z,fixed,fx,fy,fz");
+  const std::vector<std::string> letters = {"z", "", "xyz", "xyz"};
+  for (int node = 0; node < model.num_nodes; ++node) {
+    const auto fields = Fields(lines[node + 1]);
+    ASSERT_EQ(fields.size(), 10u) << lines[node + 1];
+    EXPECT_EQ(std::stoi(fields[0]), node);
+    EXPECT_EQ(std::stoi(fields[1]), model.grid_index[node][0]);
+    EXPECT_EQ(std::stoi(fields[2]), model.grid_index[node][1]);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(std::stod(fields[3 + c]), model.positions[3 * node + c]);
+      EXPECT_EQ(std::stod(fields[7 + c]), result.certificate.node_forces[3 * node + c]);
+    }
+    EXPECT_EQ(fields[6], letters[node]);
+  }
+}
+
+TEST_F(WritersTest, HistoryCsvHasOneRowPerRecordedIteration) {
+  const Model model = SmallSheet();
+  const RunResult result = ResultOf(model);
+  WriteOutputs(SceneWriting({"history"}), model, result, directory_.string());
+
+  const auto lines = Lines(Path("history.csv"));
+  ASSERT_EQ(lines.size(), 1 + result.summary.history.size());
+  EXPECT_EQ(lines[0], "iteration,time_s,energy,residual");
+  for (size_t k = 0; k < result.summary.history.size(); ++k) {
+    const auto fields = Fields(lines[k + 1]);
+    ASSERT_EQ(fields.size(), 4u);
+    const IterationRecord& record = result.summary.history[k];
+    EXPECT_EQ(std::stoi(fields[0]), record.iteration);
+    EXPECT_EQ(std::stod(fields[1]), record.time_s);
+    EXPECT_EQ(std::stod(fields[2]), record.energy);
+    EXPECT_EQ(std::stod(fields[3]), record.relative_residual);
+  }
+  EXPECT_FALSE(fs::exists(Path("kinetic.csv")));  // only for methods that record a trace
+}
+
+TEST_F(WritersTest, TraceOfADynamicMethodGoesToKineticCsv) {
+  const Model model = SmallSheet();
+  RunResult result = ResultOf(model);
+  result.summary.trace_columns = {"step", "t", "w_c"};
+  result.summary.trace = {{0, 0.0, 1.5}, {1, 0.01, 0.75}};
+  WriteOutputs(SceneWriting({"history"}), model, result, directory_.string());
+
+  const auto lines = Lines(Path("kinetic.csv"));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "step,t,w_c");
+  EXPECT_EQ(std::stod(Fields(lines[2])[2]), 0.75);
+}
+
+TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
+  Model model = SmallSheet();
+  model.edges = {{0, 1}};
+  const RunResult result = ResultOf(model);
+  WriteOutputs(SceneWriting({"vtk", "obj"}), model, result, directory_.string());
+
+  const auto vtk = Lines(Path("mesh.vtk"));
+  ASSERT_GT(vtk.size(), 4u);
+  EXPECT_EQ(vtk[0], "# vtk DataFile Version 3.0");
+  EXPECT_EQ(vtk[2], "ASCII");
+  EXPECT_EQ(vtk[3], "DATASET POLYDATA");
+  auto find = [&vtk](const std::string& start) {
+    for (size_t k = 0; k < vtk.size(); ++k) {
+      if (vtk[k].rfind(start, 0) == 0) return static_cast<int>(k);
+    }
+    return -1;
+  };
+  const int points = find("POINTS 4 double");
+  ASSERT_GE(points, 0);
+  std::istringstream node1(vtk[points + 2]);
+  double x, y, z;
+  node1 >> x >> y >> z;
+  EXPECT_EQ(y, model.positions[4]);
+  EXPECT_EQ(z, model.positions[5]);
+  const int polygons = find("POLYGONS 2 8");
+  ASSERT_GE(polygons, 0);
+  EXPECT_EQ(vtk[polygons + 1], "3 0 1 3");
+  EXPECT_GE(find("LINES 1 3"), 0);
+  EXPECT_GE(find("POINT_DATA 4"), 0);
+  const int displacement = find("VECTORS displacement double");
+  ASSERT_GE(displacement, 0);
+  std::istringstream moved(vtk[displacement + 2]);
+  moved >> x >> y >> z;
+  EXPECT_EQ(z, model.positions[5] - model.initial[5]);
+  EXPECT_GE(find("VECTORS force double"), 0);
+  const int fixed = find("SCALARS fixed int 1");
+  ASSERT_GE(fixed, 0);
+  EXPECT_EQ(vtk[fixed + 2], "1");  // node 0: held in z
+  EXPECT_EQ(vtk[fixed + 3], "0");  // node 1: free
+
+  int vertices = 0, faces = 0, lines = 0;
+  for (const auto& line : Lines(Path("mesh.obj"))) {
+    vertices += line.rfind("v ", 0) == 0;
+    faces += line.rfind("f ", 0) == 0;
+    lines += line.rfind("l ", 0) == 0;
+    if (line.rfind("f ", 0) == 0 && faces == 1) EXPECT_EQ(line, "f 1 2 4");  // 1-based
+  }
+  EXPECT_EQ(vertices, 4);
+  EXPECT_EQ(faces, 2);
+  EXPECT_EQ(lines, 1);
+}
+
+TEST_F(WritersTest, CreatesTheFolderAndLeavesNoTemporaryFile) {
+  const Model model = SmallSheet();
+  const RunResult result = ResultOf(model);
+  directory_ /= "nested/deeper";
+  WriteOutputs(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
+               directory_.string());
+  EXPECT_EQ(Files(), (std::set<std::string>{"summary.json", "nodes.csv", "history.csv", "mesh.vtk",
+                                            "mesh.obj"}));
+  // Writing again replaces the files in place.
+  WriteOutputs(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
+               directory_.string());
+  EXPECT_EQ(Files().size(), 5u);
+  directory_ = directory_.parent_path().parent_path();  // TearDown removes the whole tree
+}
+
+TEST_F(WritersTest, DrawsAPngWithGnuplot) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "gnuplot is not installed";
+  }
+  const Model model = SmallSheet();
+  WriteOutputs(SceneWriting({"png"}), model, ResultOf(model), directory_.string());
+  ASSERT_EQ(Files(), std::set<std::string>{"drape.png"});
+  std::ifstream png(Path("drape.png"), std::ios::binary);
+  char magic[8] = {};
+  png.read(magic, sizeof magic);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+}
+
+}  // namespace
+}  // namespace drape
