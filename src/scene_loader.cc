@@ -1,5 +1,5 @@
 // The scene schema: which keys exist, their types, units, ranges and defaults. Every key of
-// ../shared/design/scene-format.md is read here and documented in docs/scene-reference.md.
+// ../shared/design/scene-format.md is read here and documented in README.md (Scene reference).
 #include "src/scene_loader.h"
 
 #include <yaml-cpp/yaml.h>

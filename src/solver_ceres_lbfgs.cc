@@ -45,6 +45,7 @@ class FreeEnergy : public ceres::FirstOrderFunction {
   }
 
   bool Evaluate(const double* free, double* cost, double* free_gradient) const override {
+    ++evaluations_;
     dofs_.Scatter(free, work_.data());
     if (!EvaluateEnergy(model_, work_.data(), &last_energy_, &gradient_)) return false;
     const int n = dofs_.num_free();
@@ -59,6 +60,7 @@ class FreeEnergy : public ceres::FirstOrderFunction {
     return true;
   }
   int NumParameters() const override { return dofs_.num_free(); }
+  int evaluations() const { return evaluations_; }
 
   // Energy and global gradient at `free`, reusing the last evaluation when it was at that point.
   bool At(const double* free, double* energy, const std::vector<double>** gradient) const {
@@ -79,6 +81,7 @@ class FreeEnergy : public ceres::FirstOrderFunction {
   LocalEnergy local_energy_;
   mutable std::vector<double> work_, gradient_, last_point_, last_free_gradient_;
   mutable double last_energy_ = 0.0, last_cost_ = 0.0;
+  mutable int evaluations_ = 0;
 };
 
 // Records every iteration in the monitor, numbering them across restarts.
@@ -152,14 +155,13 @@ class CeresLbfgsSolver : public Solver {
     ceres::GradientProblemSolver::Options ceres_options = CeresOptions(options, &callback);
 
     ceres::GradientProblemSolver::Summary ceres_summary;
-    int restarts = 0, evaluations = 0;
+    int restarts = 0;
     double residual_at_restart = INFINITY;
     if (dofs.num_free() == 0) callback(ceres::IterationSummary());
     while (dofs.num_free() > 0 && !callback.stopped()) {
       ceres_options.max_num_iterations = std::max(1, options.max_iterations - callback.recorded());
       ceres_options.max_solver_time_in_seconds = options.time_limit - monitor.ElapsedSeconds();
       ceres::Solve(ceres_options, problem, free.data(), &ceres_summary);
-      evaluations += ceres_summary.num_cost_evaluations;
       if (callback.stopped()) break;
       // Ceres stopped on its own: at the roundoff of the energy, or its line search failed. Go on
       // with the local energy from here while that still halves the residual.
@@ -176,7 +178,7 @@ class CeresLbfgsSolver : public Solver {
       ++restarts;
     }
     dofs.Scatter(free.data(), model.positions.data());
-    summary.statistics["energy_evaluations"] = evaluations;
+    summary.statistics["energy_evaluations"] = energy->evaluations();
     summary.statistics["local_energy_restarts"] = restarts;
     return summary;
   }

@@ -20,6 +20,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "src/contact.h"
+#include "src/drape_analysis.h"
+
 namespace drape {
 
 namespace fs = std::filesystem;
@@ -135,6 +138,51 @@ double NodeForce(const RunResult& result, int k) {
   return k < static_cast<int>(forces.size()) ? forces[k] : NAN;
 }
 
+// The radius of the scene's disk obstacle (the drape tester's support), 0 if it has none.
+double DiscRadius(const Scene& scene) {
+  for (const auto& obstacle : scene.obstacles) {
+    if (obstacle.kind == ObstacleSpec::Kind::kDisk) return obstacle.radius;
+  }
+  return 0.0;
+}
+
+// Drape coefficients for a scene with a support disk, or a disc-shaped specimen (circle or arc
+// mesh: Rusinko & Swan's disc over a pin): `drape_coefficient` (Cusick's, with a disk) and
+// `drape` (both conventions, the areas, and the rasterisation's error bound).
+void AddDrapeMembers(const Scene& scene, const Model& model,
+                     std::vector<std::pair<std::string, std::string>>* members) {
+  const double disc_radius = DiscRadius(scene);
+  const bool disc_mesh =
+      scene.mesh.kind == MeshSpec::Kind::kCircle || scene.mesh.kind == MeshSpec::Kind::kArc;
+  if (model.triangles.empty() || !(disc_radius > 0.0 || disc_mesh)) return;
+  const DrapeCoefficient dc = ComputeDrapeCoefficient(model, disc_radius);
+  if (disc_radius > 0.0) members->emplace_back("drape_coefficient", JsonNumber(dc.cusick));
+  members->emplace_back("drape",
+                        JsonObject({{"cusick", disc_radius > 0.0 ? JsonNumber(dc.cusick) : "null"},
+                                    {"ratio", JsonNumber(dc.ratio)},
+                                    {"shadow_area_m2", JsonNumber(dc.shadow.area)},
+                                    {"flat_area_m2", JsonNumber(dc.flat_area)},
+                                    {"area_error_bound_m2", JsonNumber(dc.shadow.error_bound)}},
+                                   1));
+}
+
+// How deep the fabric sits in the obstacles' clearance layer (the contact penalty's accuracy).
+void AddContactMembers(const Scene& scene, const Model& model,
+                       std::vector<std::pair<std::string, std::string>>* members) {
+  if (scene.obstacles.empty()) return;
+  const ContactReport contact =
+      MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
+  members->emplace_back(
+      "contact",
+      JsonObject({{"thickness", JsonNumber(contact.thickness)},
+                  {"stiffness", JsonNumber(contact.stiffness)},
+                  {"nodes_in_contact", std::to_string(contact.nodes_in_contact)},
+                  {"max_penetration", JsonNumber(contact.max_penetration)},
+                  {"max_penetration_fraction", JsonNumber(contact.max_penetration_fraction)},
+                  {"allowed_fraction", JsonNumber(contact.allowed_fraction)}},
+                 1));
+}
+
 void WriteSummary(const Scene& scene, const Model& model, const RunResult& result,
                   std::ostream& out) {
   const Certificate& certificate = result.certificate;
@@ -167,6 +215,8 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   if (result.stability.computed && !result.stability.stable) {
     members.emplace_back("min_eigenvalue", JsonNumber(result.stability.min_eigenvalue));
   }
+  AddDrapeMembers(scene, model, &members);
+  AddContactMembers(scene, model, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics", JsonMap(summary.statistics, 1, JsonNumber));
   out << JsonObject(members, 0) << "\n";
