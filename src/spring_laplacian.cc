@@ -8,16 +8,6 @@
 
 namespace drape {
 
-namespace {
-
-template <typename Functor>
-const Functor* FunctorOf(const Term& term) {
-  const auto* typed = dynamic_cast<const AutoDiffTerm<Functor>*>(&term);
-  return typed ? &typed->functor() : nullptr;
-}
-
-}  // namespace
-
 double SpringStiffness(const Term& term) {
   double root = 0.0;
   if (const auto* spring = FunctorOf<SpringStretch>(term)) root = spring->sqrt_stiffness;

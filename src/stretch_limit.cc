@@ -10,16 +10,6 @@
 
 namespace drape {
 
-namespace {
-
-template <typename Functor>
-const Functor* FunctorOf(const Term& term) {
-  const auto* typed = dynamic_cast<const AutoDiffTerm<Functor>*>(&term);
-  return typed ? &typed->functor() : nullptr;
-}
-
-}  // namespace
-
 std::vector<SpringLink> ModelSprings(const Model& model) {
   std::vector<SpringLink> springs;
   for (const auto& term : model.terms) {

@@ -190,6 +190,14 @@ class AutoDiffTerm : public Term {
   const double least_squares_shift_;
 };
 
+// The functor of `term` if it is an AutoDiffTerm<Functor>, else null: how a solver that needs a
+// term's rest-state data (a spring's stiffness and rest length) reads it.
+template <typename Functor>
+const Functor* FunctorOf(const Term& term) {
+  const auto* typed = dynamic_cast<const AutoDiffTerm<Functor>*>(&term);
+  return typed ? &typed->functor() : nullptr;
+}
+
 template <typename Functor>
 std::unique_ptr<Term> MakeTerm(std::string type, std::vector<int> nodes, const Functor& functor,
                                double least_squares_shift = 0.0) {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "tests/term_checks.h"
+#include "tests/contact_checks.h"
 
 namespace drape {
 namespace {
@@ -17,14 +17,9 @@ BoxContact Obstacle() {
                             std::vector<double>{0.5, 0.4, 0.0}.data(), kClearance, kStiffness);
 }
 
-struct Probe {
-  std::vector<double> x;
-  double distance;  // expected signed distance to the surface, m
-};
-
 // Points beside each part of the surface (well inside one region, away from the seams where the
 // distance's second derivative jumps), with their distances worked out by hand.
-const std::vector<Probe> kProbes = {
+const std::vector<testing::Probe> kProbes = {
     {{0.1, 0.2, 0.001}, 0.001},                           // on the table top
     {{0.5012, 0.1, -0.3}, 0.0012},                        // beside a side face
     {{0.5009, 0.1, 0.0012}, std::hypot(0.0009, 0.0012)},  // beyond an edge
@@ -32,46 +27,18 @@ const std::vector<Probe> kProbes = {
     {{0.1, 0.2, -0.01}, -0.01},  // inside, nearest the top
     {{0.1, 0.2, 0.3}, 0.3}};
 
-TEST(BoxContact, DistanceToTheSurface) {
-  for (const Probe& probe : kProbes) {
-    EXPECT_NEAR(Obstacle().Distance(probe.x.data()), probe.distance, 1e-14);
-  }
-}
+TEST(BoxContact, DistanceToTheSurface) { testing::ExpectDistances(Obstacle(), kProbes); }
 
 TEST(BoxContact, EnergyIsTheCubicPenaltyInsideTheClearanceOnly) {
-  const auto term = MakeTerm("box_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    double energy;
-    ASSERT_TRUE(term->Energy(probe.x.data(), &energy));
-    const double gap = std::max(0.0, kClearance - probe.distance);
-    EXPECT_NEAR(energy, kStiffness / 3.0 * gap * gap * gap, 1e-12 * (1.0 + energy));
-  }
+  testing::ExpectCubicPenaltyInsideClearanceOnly(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
 TEST(BoxContact, DerivativesMatchDifferences) {
-  const auto term = MakeTerm("box_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    SCOPED_TRACE(probe.distance);
-    testing::ExpectDerivativesMatchDifferences(*term, probe.x);
-  }
+  testing::ExpectDerivativesMatchDifferencesAtProbes(Obstacle(), kProbes);
 }
 
-// The force pushes the node out, along the distance's gradient, with magnitude k g².
 TEST(BoxContact, ForcePushesOutwardWithMagnitudeKGapSquared) {
-  const auto term = MakeTerm("box_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    const double gap = kClearance - probe.distance;
-    if (gap <= 0.0) continue;
-    std::vector<double> x = probe.x;
-    double energy, gradient[3];
-    ASSERT_TRUE(term->EnergyGradient(x.data(), &energy, gradient));
-    const double force = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
-                                   gradient[2] * gradient[2]);
-    EXPECT_NEAR(force, kStiffness * gap * gap, 1e-9 * force);
-    // Moving along the force increases the distance.
-    for (int c = 0; c < 3; ++c) x[c] -= 1e-7 * gradient[c] / force;
-    EXPECT_GT(Obstacle().Distance(x.data()), probe.distance);
-  }
+  testing::ExpectForcePushesOutward(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "tests/term_checks.h"
+#include "tests/contact_checks.h"
 
 namespace drape {
 namespace {
@@ -16,60 +16,27 @@ DiskContact Obstacle() {
   return DiskContact::Create(std::vector<double>{0, 0, 0.5}.data(), 0.09, kClearance, kStiffness);
 }
 
-struct Probe {
-  std::vector<double> x;
-  double distance;  // expected signed distance to the surface, m
-};
-
 // Points beside each part of the surface (well inside one region, away from the seams where the
 // distance's second derivative jumps), with their distances worked out by hand.
-const std::vector<Probe> kProbes = {
+const std::vector<testing::Probe> kProbes = {
     {{0.02, -0.03, 0.501}, 0.001},                        // over the top
     {{0.02, -0.03, 0.4985}, 0.0015},                      // under the disc
     {{0.0912, 0.0, 0.5009}, std::hypot(0.0012, 0.0009)},  // beside the rim
     {{0.0, -0.0913, 0.4992}, std::hypot(0.0013, 0.0008)},
     {{0.03, 0.04, 0.51}, 0.01}};
 
-TEST(DiskContact, DistanceToTheSurface) {
-  for (const Probe& probe : kProbes) {
-    EXPECT_NEAR(Obstacle().Distance(probe.x.data()), probe.distance, 1e-14);
-  }
-}
+TEST(DiskContact, DistanceToTheSurface) { testing::ExpectDistances(Obstacle(), kProbes); }
 
 TEST(DiskContact, EnergyIsTheCubicPenaltyInsideTheClearanceOnly) {
-  const auto term = MakeTerm("disk_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    double energy;
-    ASSERT_TRUE(term->Energy(probe.x.data(), &energy));
-    const double gap = std::max(0.0, kClearance - probe.distance);
-    EXPECT_NEAR(energy, kStiffness / 3.0 * gap * gap * gap, 1e-12 * (1.0 + energy));
-  }
+  testing::ExpectCubicPenaltyInsideClearanceOnly(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
 TEST(DiskContact, DerivativesMatchDifferences) {
-  const auto term = MakeTerm("disk_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    SCOPED_TRACE(probe.distance);
-    testing::ExpectDerivativesMatchDifferences(*term, probe.x);
-  }
+  testing::ExpectDerivativesMatchDifferencesAtProbes(Obstacle(), kProbes);
 }
 
-// The force pushes the node out, along the distance's gradient, with magnitude k g².
 TEST(DiskContact, ForcePushesOutwardWithMagnitudeKGapSquared) {
-  const auto term = MakeTerm("disk_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    const double gap = kClearance - probe.distance;
-    if (gap <= 0.0) continue;
-    std::vector<double> x = probe.x;
-    double energy, gradient[3];
-    ASSERT_TRUE(term->EnergyGradient(x.data(), &energy, gradient));
-    const double force = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
-                                   gradient[2] * gradient[2]);
-    EXPECT_NEAR(force, kStiffness * gap * gap, 1e-9 * force);
-    // Moving along the force increases the distance.
-    for (int c = 0; c < 3; ++c) x[c] -= 1e-7 * gradient[c] / force;
-    EXPECT_GT(Obstacle().Distance(x.data()), probe.distance);
-  }
+  testing::ExpectForcePushesOutward(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
 }  // namespace

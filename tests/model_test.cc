@@ -195,9 +195,9 @@ TEST(Model, GivenRestLengthScalesStructuralSpringsToIt) {
   scene.material.springs.rest_length_value = 0.15;
   const Model model = BuildModel(scene);
   for (const auto& term : model.terms) {
-    const auto* spring = dynamic_cast<const AutoDiffTerm<SpringStretch>*>(term.get());
+    const auto* spring = FunctorOf<SpringStretch>(*term);
     ASSERT_NE(spring, nullptr);
-    EXPECT_NEAR(spring->functor().rest_length, 0.15, 1e-15);
+    EXPECT_NEAR(spring->rest_length, 0.15, 1e-15);
   }
 }
 
@@ -206,12 +206,12 @@ TEST(Model, RestLengthZeroAndTensionOnlyPickTheirFunctors) {
   scene.material.springs.tension_only = true;
   Model model = BuildModel(scene);
   for (const auto& term : model.terms) {
-    EXPECT_NE(dynamic_cast<const AutoDiffTerm<TensionOnlySpring>*>(term.get()), nullptr);
+    EXPECT_NE(FunctorOf<TensionOnlySpring>(*term), nullptr);
   }
   scene.material.springs.rest_length = SpringsSpec::RestLength::kZero;
   model = BuildModel(scene);
   for (const auto& term : model.terms) {
-    EXPECT_NE(dynamic_cast<const AutoDiffTerm<ZeroLengthSpring>*>(term.get()), nullptr);
+    EXPECT_NE(FunctorOf<ZeroLengthSpring>(*term), nullptr);
   }
 }
 

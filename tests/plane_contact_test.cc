@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "tests/term_checks.h"
+#include "tests/contact_checks.h"
 
 namespace drape {
 namespace {
@@ -17,59 +17,26 @@ PlaneContact Obstacle() {
                               std::vector<double>{0.6, 0, 0.8}.data(), kClearance, kStiffness);
 }
 
-struct Probe {
-  std::vector<double> x;
-  double distance;  // expected signed distance to the surface, m
-};
-
 // Points beside each part of the surface (well inside one region, away from the seams where the
 // distance's second derivative jumps), with their distances worked out by hand.
-const std::vector<Probe> kProbes = {
+const std::vector<testing::Probe> kProbes = {
     {{0.3, 0.5, -0.999}, 0.6 * 0.3 + 0.8 * 0.001},
     {{-0.3, 0.5, -0.999}, -0.6 * 0.3 + 0.8 * 0.001},  // behind the plane
     {{0.0, 0.2, -1.0 + 0.0015 / 0.8}, 0.0015},
     {{0.0, 0.2, -0.9}, 0.08}};
 
-TEST(PlaneContact, DistanceToTheSurface) {
-  for (const Probe& probe : kProbes) {
-    EXPECT_NEAR(Obstacle().Distance(probe.x.data()), probe.distance, 1e-14);
-  }
-}
+TEST(PlaneContact, DistanceToTheSurface) { testing::ExpectDistances(Obstacle(), kProbes); }
 
 TEST(PlaneContact, EnergyIsTheCubicPenaltyInsideTheClearanceOnly) {
-  const auto term = MakeTerm("plane_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    double energy;
-    ASSERT_TRUE(term->Energy(probe.x.data(), &energy));
-    const double gap = std::max(0.0, kClearance - probe.distance);
-    EXPECT_NEAR(energy, kStiffness / 3.0 * gap * gap * gap, 1e-12 * (1.0 + energy));
-  }
+  testing::ExpectCubicPenaltyInsideClearanceOnly(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
 TEST(PlaneContact, DerivativesMatchDifferences) {
-  const auto term = MakeTerm("plane_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    SCOPED_TRACE(probe.distance);
-    testing::ExpectDerivativesMatchDifferences(*term, probe.x);
-  }
+  testing::ExpectDerivativesMatchDifferencesAtProbes(Obstacle(), kProbes);
 }
 
-// The force pushes the node out, along the distance's gradient, with magnitude k g².
 TEST(PlaneContact, ForcePushesOutwardWithMagnitudeKGapSquared) {
-  const auto term = MakeTerm("plane_contact", {0}, Obstacle());
-  for (const Probe& probe : kProbes) {
-    const double gap = kClearance - probe.distance;
-    if (gap <= 0.0) continue;
-    std::vector<double> x = probe.x;
-    double energy, gradient[3];
-    ASSERT_TRUE(term->EnergyGradient(x.data(), &energy, gradient));
-    const double force = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
-                                   gradient[2] * gradient[2]);
-    EXPECT_NEAR(force, kStiffness * gap * gap, 1e-9 * force);
-    // Moving along the force increases the distance.
-    for (int c = 0; c < 3; ++c) x[c] -= 1e-7 * gradient[c] / force;
-    EXPECT_GT(Obstacle().Distance(x.data()), probe.distance);
-  }
+  testing::ExpectForcePushesOutward(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
 }  // namespace
