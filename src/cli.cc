@@ -9,6 +9,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "src/compare.h"
 #include "src/model.h"
 #include "src/progress.h"
 #include "src/run.h"
@@ -25,6 +26,8 @@ constexpr char kUsage[] =
     "usage: drape solve SCENE.yaml [--solver NAME] [--out DIR] [--set key.path=value ...]\n"
     "       drape check SCENE.yaml [--set key.path=value ...]\n"
     "       drape solvers\n"
+    "       drape compare SCENE.yaml... [--solvers all|a,b,...] [--out DIR] [--repeat N]\n"
+    "                     [--time-limit S] [--set key.path=value ...] [--no-plots]\n"
     "       drape help\n";
 
 constexpr char kHelp[] =
@@ -36,7 +39,8 @@ constexpr char kHelp[] =
     "           --set key.path=value override a scene key (repeatable; value is YAML)\n"
     "  check    load and build the scene, print what it contains, write nothing\n"
     "  solvers  list the methods and their options (solver.<method>.<key>)\n"
-    "  compare  compare solvers on one scene (not implemented yet, issue 7)\n"
+    "  compare  SCENE.yaml... [--solvers all|a,b] [--out DIR] [--repeat N] [--time-limit S]\n"
+    "           [--set k=v] [--no-plots]: solver comparison report (speed against error)\n"
     "  fit      fit material parameters to a measured drape (not implemented yet, issue 8)\n"
     "\n"
     "exit status: 0 converged; 1 ran but did not reach the tolerance (results written,\n"
@@ -206,9 +210,15 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (args.size() > 1) throw UsageError("solvers takes no arguments");
     return ListSolvers(out);
   }
-  if (command == "compare" || command == "fit") {
-    err << "drape " << command << ": not implemented yet (issue " << (command == "compare" ? 7 : 8)
-        << ")\n";
+  if (command == "compare") {
+    try {
+      return RunCompare(ParseCompareArguments({args.begin() + 1, args.end()}), err);
+    } catch (const std::invalid_argument& error) {
+      throw UsageError(error.what());
+    }
+  }
+  if (command == "fit") {
+    err << "drape fit: not implemented yet (issue 8)\n";
     return kExitBadInput;
   }
   const std::map<std::string, std::set<std::string>> flags = {

@@ -87,9 +87,9 @@ class FreeEnergy : public ceres::FirstOrderFunction {
 // Records every iteration in the monitor, numbering them across restarts.
 class MonitorCallback : public ceres::IterationCallback {
  public:
-  MonitorCallback(const Model& model, FreeEnergy& energy, const std::vector<double>& free,
-                  IterationMonitor* monitor)
-      : model_(model), energy_(energy), free_(free), monitor_(monitor) {}
+  MonitorCallback(Model& model, const DofMap& dofs, FreeEnergy& energy,
+                  const std::vector<double>& free, IterationMonitor* monitor)
+      : model_(model), dofs_(dofs), energy_(energy), free_(free), monitor_(monitor) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& iteration) override {
     if (iteration.iteration == 0 && recorded_ > 0) return ceres::SOLVER_CONTINUE;  // a restart
@@ -100,6 +100,7 @@ class MonitorCallback : public ceres::IterationCallback {
       stopped_ = true;
     } else {
       last_residual_ = RelativeResidual(model_, *gradient);
+      dofs_.Scatter(free_.data(), model_.positions.data());  // what the caller's callback sees
       stopped_ = monitor_->Record(recorded_, energy, last_residual_);
       ++recorded_;
       energy_.Anchor();
@@ -111,7 +112,8 @@ class MonitorCallback : public ceres::IterationCallback {
   double last_residual() const { return last_residual_; }
 
  private:
-  const Model& model_;
+  Model& model_;
+  const DofMap& dofs_;
   FreeEnergy& energy_;
   const std::vector<double>& free_;
   IterationMonitor* monitor_;
@@ -151,7 +153,7 @@ class CeresLbfgsSolver : public Solver {
     dofs.Gather(model.positions.data(), free.data());
     auto* energy = new FreeEnergy(model, dofs);
     ceres::GradientProblem problem(energy);  // takes ownership
-    MonitorCallback callback(model, *energy, free, &monitor);
+    MonitorCallback callback(model, dofs, *energy, free, &monitor);
     ceres::GradientProblemSolver::Options ceres_options = CeresOptions(options, &callback);
 
     ceres::GradientProblemSolver::Summary ceres_summary;

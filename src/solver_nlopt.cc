@@ -55,15 +55,15 @@ double Option(const SolverOptions& options, const char* key, double fallback) {
 
 // What the objective callback needs: the model, the stop rule and the opt to stop.
 struct Objective {
-  Objective(const Model& model, const DofMap& dofs, IterationMonitor& monitor)
-      : model(model), dofs(dofs), monitor(monitor), work(model.positions) {}
+  Objective(Model& model, const DofMap& dofs, IterationMonitor& monitor)
+      : model(model), dofs(dofs), monitor(monitor) {}
 
-  const Model& model;
+  Model& model;  // evaluated in place, so the monitor's callback sees the current point
   const DofMap& dofs;
   IterationMonitor& monitor;
   nlopt::opt* opt = nullptr;
   bool local_energy = true;
-  std::vector<double> work, gradient;
+  std::vector<double> gradient;
   int evaluations = 0;
   bool monitor_stopped = false;
   bool converged_point = false;
@@ -76,9 +76,9 @@ struct Objective {
 
   double Evaluate(const std::vector<double>& free, std::vector<double>& free_gradient) {
     if (monitor_stopped || stalled) return best_value;  // NLopt may evaluate once more
-    dofs.Scatter(free.data(), work.data());
+    dofs.Scatter(free.data(), model.positions.data());
     double energy;
-    if (!EvaluateEnergy(model, work.data(), &energy, &gradient)) {
+    if (!EvaluateEnergy(model, model.positions.data(), &energy, &gradient)) {
       for (double& g : free_gradient) g = 0.0;
       return std::numeric_limits<double>::max();
     }

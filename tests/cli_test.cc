@@ -158,12 +158,20 @@ TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {
   EXPECT_FALSE(fs::exists(out_));
 }
 
-TEST_F(CliTest, FutureCommandsSayTheyAreNotImplemented) {
-  for (const char* command : {"compare", "fit"}) {
-    const Outcome outcome = Drape({command, "x.yaml"});
-    EXPECT_EQ(outcome.exit_status, 2) << command;
-    EXPECT_NE(outcome.err.find("not implemented yet"), std::string::npos) << command;
+TEST_F(CliTest, FitSaysItIsNotImplemented) {
+  const Outcome outcome = Drape({"fit", "x.yaml"});
+  EXPECT_EQ(outcome.exit_status, 2);
+  EXPECT_NE(outcome.err.find("not implemented yet"), std::string::npos);
+}
+
+TEST_F(CliTest, CompareWithoutScenesOrWithAnUnknownSolverIsBadUsage) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"compare"},
+        std::vector<std::string>{"compare", WriteScene(), "--solvers", "no-such-method"}}) {
+    const Outcome outcome = Drape(args);
+    EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
   }
+  EXPECT_FALSE(fs::exists(out_));
 }
 
 TEST_F(CliTest, UnknownSolverExitsTwoListingTheMethods) {

@@ -1,0 +1,150 @@
+// drape compare: the error measures against a reference, and a report that keeps failing runs.
+#include "src/compare.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string SourcePath(const std::string& relative) {
+  return (fs::path(DRAPE_SOURCE_DIR) / relative).string();
+}
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+TEST(MeasurePositionError, IdenticalPositionsGiveZero) {
+  const std::vector<double> positions = {0.0, 1.0, 2.0, -3.0, 0.5, 7.0};
+  const PositionError error = MeasurePositionError(positions, positions);
+  EXPECT_EQ(error.max_m, 0.0);
+  EXPECT_EQ(error.rms_m, 0.0);
+}
+
+TEST(MeasurePositionError, MatchesDirectComputation) {
+  const std::vector<double> reference = {0, 0, 0, 1, 0, 0, 2, 0, 0};
+  // Node 0 moved by (3, 4, 0): distance 5; node 1 unmoved; node 2 moved by (0, 0, 1).
+  const std::vector<double> positions = {3, 4, 0, 1, 0, 0, 2, 0, 1};
+  const PositionError error = MeasurePositionError(positions, reference);
+  EXPECT_DOUBLE_EQ(error.max_m, 5.0);
+  EXPECT_DOUBLE_EQ(error.rms_m, std::sqrt((25.0 + 0.0 + 1.0) / 3.0));
+}
+
+CompareOptions ChainOptions(const std::vector<std::string>& solvers,
+                            const std::vector<std::string>& overrides = {}) {
+  CompareOptions options;
+  options.scenes = {SourcePath("configs/validation/funicular_chain.yaml")};
+  options.solvers = solvers;
+  options.overrides = overrides;
+  options.time_limit = 30.0;
+  options.plots = false;
+  return options;
+}
+
+TEST(CompareScene, NewtonAgainstItsOwnReferenceHasNoError) {
+  std::ostringstream log;
+  const SceneComparison comparison = CompareScene(
+      SourcePath("configs/validation/funicular_chain.yaml"), ChainOptions({"newton"}), log);
+  ASSERT_TRUE(comparison.error.empty()) << comparison.error;
+  EXPECT_TRUE(comparison.reference.converged) << comparison.reference.termination;
+  EXPECT_LE(comparison.reference.relative_residual, 1e-12);
+  ASSERT_EQ(comparison.runs.size(), 1u);
+  const RunRecord& run = comparison.runs[0];
+  EXPECT_EQ(run.status, RunStatus::kConverged) << run.reason;
+  // Same start, same method, a tolerance of 1e-9 instead of 1e-12: the same equilibrium.
+  EXPECT_LT(run.error.rms_m / comparison.size, 1e-6);
+  EXPECT_LE(std::abs(run.energy_gap), comparison.reference.energy_tolerance);
+  ASSERT_FALSE(run.curve.empty());
+  EXPECT_GE(TimeToReach(run, 1e-2), 0.0);
+}
+
+TEST(CompareScene, RunStoppedEarlyHasTheDirectlyComputedError) {
+  std::ostringstream log;
+  const SceneComparison comparison =
+      CompareScene(SourcePath("configs/validation/funicular_chain.yaml"),
+                   ChainOptions({"ceres-lbfgs"}, {"solver.max_iterations=2"}), log);
+  ASSERT_TRUE(comparison.error.empty()) << comparison.error;
+  // The reference is not held to the scene's iteration limit.
+  EXPECT_TRUE(comparison.reference.converged) << comparison.reference.termination;
+  ASSERT_EQ(comparison.runs.size(), 1u);
+  const RunRecord& run = comparison.runs[0];
+  EXPECT_EQ(run.status, RunStatus::kNotConverged) << run.reason;
+  ASSERT_EQ(run.positions.size(), comparison.reference.positions.size());
+  double largest = 0.0, sum_squares = 0.0;
+  const size_t nodes = run.positions.size() / 3;
+  for (size_t node = 0; node < nodes; ++node) {
+    const double dx = run.positions[3 * node] - comparison.reference.positions[3 * node];
+    const double dy = run.positions[3 * node + 1] - comparison.reference.positions[3 * node + 1];
+    const double dz = run.positions[3 * node + 2] - comparison.reference.positions[3 * node + 2];
+    const double squared = dx * dx + dy * dy + dz * dz;
+    largest = std::max(largest, std::sqrt(squared));
+    sum_squares += squared;
+  }
+  EXPECT_GT(run.error.max_m, 0.0);
+  EXPECT_DOUBLE_EQ(run.error.max_m, largest);
+  EXPECT_DOUBLE_EQ(run.error.rms_m, std::sqrt(sum_squares / nodes));
+  EXPECT_GT(run.energy_gap, 0.0);  // the reference is the minimum
+  // Stopped after two iterations, it never reaches the finest level.
+  EXPECT_LT(TimeToReach(run, 1e-8), 0.0);
+}
+
+TEST(RunCompare, ReportKeepsRefusedAndUnconvergedRuns) {
+  const fs::path out = fs::path(testing::TempDir()) / "drape_compare_test";
+  fs::remove_all(out);
+  CompareOptions options;
+  // 20 x 20 nodes: 1,194 free dofs, above nlopt-slsqp's limit of 1,000.
+  options.scenes = {SourcePath("configs/examples/hanging_sheet.yaml")};
+  options.overrides = {"mesh.nodes=[20,20]", "solver.max_iterations=3"};
+  options.solvers = {"nlopt-slsqp", "ceres-lbfgs"};
+  options.out_dir = out.string();
+  options.time_limit = 30.0;
+  options.tools_dir = SourcePath("tools");
+  std::ostringstream log;
+  ASSERT_EQ(RunCompare(options, log), 0) << log.str();
+  const std::string report = ReadText(out / "report.md");
+  EXPECT_NE(report.find("| nlopt-slsqp | refused |"), std::string::npos) << report;
+  EXPECT_NE(report.find("| ceres-lbfgs | not converged |"), std::string::npos) << report;
+  EXPECT_NE(report.find("free degrees of freedom"), std::string::npos)
+      << "the refusal's reason: " << report;
+  const std::string runs = ReadText(out / "runs.csv");
+  EXPECT_NE(runs.find(",nlopt-slsqp,refused,"), std::string::npos) << runs;
+  EXPECT_TRUE(fs::exists(out / "report.html"));
+  EXPECT_TRUE(fs::exists(out / "curves.csv"));
+}
+
+TEST(RunCompare, UnknownSolverIsBadUsage) {
+  CompareOptions options = ChainOptions({"no-such-solver"});
+  std::ostringstream log;
+  EXPECT_EQ(RunCompare(options, log), 2);
+  EXPECT_NE(log.str().find("no-such-solver"), std::string::npos);
+}
+
+TEST(ParseCompareArguments, ReadsScenesAndFlags) {
+  const CompareOptions options = ParseCompareArguments(
+      {"a.yaml", "--solvers", "newton,ceres-lbfgs", "b.yaml", "--repeat=3", "--time-limit", "5",
+       "--set", "mesh.nodes=[4,4]", "--out", "dir", "--no-plots"});
+  EXPECT_EQ(options.scenes, (std::vector<std::string>{"a.yaml", "b.yaml"}));
+  EXPECT_EQ(options.solvers, (std::vector<std::string>{"newton", "ceres-lbfgs"}));
+  EXPECT_EQ(options.repeat, 3);
+  EXPECT_EQ(options.time_limit, 5.0);
+  EXPECT_EQ(options.overrides, (std::vector<std::string>{"mesh.nodes=[4,4]"}));
+  EXPECT_EQ(options.out_dir, "dir");
+  EXPECT_FALSE(options.plots);
+  EXPECT_THROW(ParseCompareArguments({"a.yaml", "--repeat", "many"}), std::invalid_argument);
+  EXPECT_THROW(ParseCompareArguments({"a.yaml", "--bogus", "1"}), std::invalid_argument);
+  EXPECT_THROW(ParseCompareArguments({"a.yaml", "--out"}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace drape
