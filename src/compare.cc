@@ -15,6 +15,7 @@
 #include <string>
 
 #include "src/compare_report.h"
+#include "src/drape_analysis.h"
 #include "src/equilibrium.h"
 #include "src/run.h"
 #include "src/scene_loader.h"
@@ -72,7 +73,15 @@ struct TimedSolve {
   std::vector<CurvePoint> curve;
   std::vector<double> positions;
   bool curve_positions_valid = true;
+  double drape_coefficient = std::nan("");  // at the final positions; NaN where there is none
 };
+
+// The DC a comparison compares: Cusick's with a disk obstacle, else A_shadow/A_flat.
+double SceneDrapeCoefficient(const Scene& scene, const Model& model) {
+  if (!HasDrapeCoefficient(scene, model)) return std::nan("");
+  const DrapeCoefficient dc = ComputeDrapeCoefficient(model, DiscRadius(scene));
+  return DiscRadius(scene) > 0.0 ? dc.cusick : dc.ratio;
+}
 
 TimedSolve Solve(const Scene& scene, const std::string& method, const SceneReference* reference) {
   Model model = BuildModel(scene);
@@ -101,6 +110,7 @@ TimedSolve Solve(const Scene& scene, const std::string& method, const SceneRefer
   const long resident_kb = ReadStatusKb("VmRSS");
   const bool peak_reset = ResetPeakResidentSize();
   timed.result = RunSolve(scene, model, method, on_iteration);
+  timed.drape_coefficient = SceneDrapeCoefficient(scene, model);
   const long peak_kb = ReadStatusKb("VmHWM");
   if (peak_reset && resident_kb >= 0 && peak_kb >= 0) {
     timed.peak_memory_mb = std::max(0L, peak_kb - resident_kb) / 1024.0;
@@ -174,6 +184,7 @@ RunRecord CompareRun(const Scene& scene, const std::string& method, const SceneR
     run.max_node_force = result.certificate.max_node_force;
     run.energy = result.certificate.energy;
     run.energy_gap = run.energy - reference.energy;
+    run.drape_coefficient_gap = timed.drape_coefficient - reference.drape_coefficient;
     run.error = MeasurePositionError(timed.positions, reference.positions);
     run.stability_computed = result.stability.computed;
     run.stable = result.stability.stable;
@@ -197,6 +208,7 @@ void FillReference(const TimedSolve& timed, const std::string& method, double to
   reference->iterations = result.summary.iterations;
   reference->time_s = timed.corrected_time_s;
   reference->energy = result.certificate.energy;
+  reference->drape_coefficient = timed.drape_coefficient;
   reference->relative_residual = result.certificate.relative_residual;
   reference->max_node_force = result.certificate.max_node_force;
   reference->stable = result.stability.stable;

@@ -4,6 +4,7 @@
 #ifndef DRAPE_SRC_COMPARE_H_
 #define DRAPE_SRC_COMPARE_H_
 
+#include <cmath>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -58,7 +59,10 @@ struct RunRecord {
   double energy = 0.0;          // J
   double energy_gap = 0.0;      // E - E_ref, J
   PositionError error;          // final positions against the reference
-  double size = 1.0;            // model.size, m (for relative distances)
+  // DC − DC_ref (Cusick's with a disk obstacle, else A_shadow/A_flat); NaN where the scene has
+  // none.
+  double drape_coefficient_gap = std::nan("");
+  double size = 1.0;  // model.size, m (for relative distances)
   bool stability_computed = false;
   bool stable = false;
   double peak_memory_mb = 0.0;  // peak resident memory during the run above the start, MB
@@ -83,6 +87,7 @@ struct SceneReference {
   bool stable = false;
   bool stability_computed = false;
   double energy_tolerance = 0.0;  // |E - E_ref| beyond which a converged run is another equilibrium
+  double drape_coefficient = std::nan("");  // NaN where the scene has none
   std::vector<double> positions;
 };
 

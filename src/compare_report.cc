@@ -111,7 +111,7 @@ bool HasPositions(const RunRecord& run) { return !run.positions.empty(); }
 void WriteRunsCsv(const std::vector<SceneComparison>& comparisons, std::ostream& out) {
   out << "scene,solver,status,reason,iterations,time_median_s,times_s,callback_time_s,"
          "relative_residual,max_node_force_N,energy_J,energy_gap_J,max_distance_m,rms_distance_m,"
-         "max_distance_rel,rms_distance_rel,stable,peak_memory_MB";
+         "max_distance_rel,rms_distance_rel,drape_coefficient_gap,stable,peak_memory_MB";
   for (double level : AccuracyLevels()) out << ",time_to_" << Format("%.0e", level) << "_s";
   out << '\n';
   for (const SceneComparison& comparison : comparisons) {
@@ -124,6 +124,7 @@ void WriteRunsCsv(const std::vector<SceneComparison>& comparisons, std::ostream&
           << Raw(run.max_node_force) << ',' << Raw(run.energy) << ',' << Raw(run.energy_gap) << ','
           << Raw(run.error.max_m) << ',' << Raw(run.error.rms_m) << ','
           << Raw(run.error.max_m / run.size) << ',' << Raw(RelativeError(run)) << ','
+          << Raw(run.drape_coefficient_gap) << ','
           << (run.stability_computed ? (run.stable ? "yes" : "no") : "unknown") << ','
           << Raw(run.peak_memory_mb);
       for (double level : AccuracyLevels()) {
@@ -357,17 +358,19 @@ std::string ReferenceText(const SceneComparison& c) {
 }
 
 Block FinalTable(const SceneComparison& c) {
-  std::vector<std::vector<std::string>> rows = {{"solver", "status", "iterations", "time",
-                                                 "residual", "energy gap (J)", "max dist (m)",
-                                                 "RMS dist / size", "peak memory (MB)", "reason"}};
+  std::vector<std::vector<std::string>> rows = {
+      {"solver", "status", "iterations", "time", "residual", "energy gap (J)", "max dist (m)",
+       "RMS dist / size", "DC gap", "peak memory (MB)", "reason"}};
   for (const RunRecord& run : c.runs) {
     const bool measured = HasPositions(run);
+    const bool has_dc = measured && std::isfinite(run.drape_coefficient_gap);
     rows.push_back(
         {run.solver, RunStatusName(run.status), measured ? std::to_string(run.iterations) : "—",
          measured ? Seconds(run.time_s) : "—", measured ? Number(run.relative_residual) : "—",
          measured ? Number(run.energy_gap) : "—", measured ? Number(run.error.max_m) : "—",
-         measured ? Number(RelativeError(run)) : "—", measured ? Number(run.peak_memory_mb) : "—",
-         run.reason});
+         measured ? Number(RelativeError(run)) : "—",
+         has_dc ? Number(run.drape_coefficient_gap) : "—",
+         measured ? Number(run.peak_memory_mb) : "—", run.reason});
   }
   return Table(std::move(rows));
 }

@@ -124,4 +124,17 @@ DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius,
   return dc;
 }
 
+double DiscRadius(const Scene& scene) {
+  for (const auto& obstacle : scene.obstacles) {
+    if (obstacle.kind == ObstacleSpec::Kind::kDisk) return obstacle.radius;
+  }
+  return 0.0;
+}
+
+bool HasDrapeCoefficient(const Scene& scene, const Model& model) {
+  const bool disc_mesh =
+      scene.mesh.kind == MeshSpec::Kind::kCircle || scene.mesh.kind == MeshSpec::Kind::kArc;
+  return !model.triangles.empty() && (DiscRadius(scene) > 0.0 || disc_mesh);
+}
+
 }  // namespace drape

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "src/model.h"
+#include "src/scene.h"
 
 namespace drape {
 
@@ -38,6 +39,13 @@ struct DrapeCoefficient {
   // radius is given (> 0); NaN otherwise.
   double cusick = 0;
 };
+
+// The radius of the scene's disk obstacle (the drape tester's support), 0 if it has none.
+double DiscRadius(const Scene& scene);
+
+// Whether the scene's result has a drape coefficient: a surface with a support disk, or a
+// disc-shaped specimen (circle or arc mesh: Rusinko & Swan's disc over a pin).
+bool HasDrapeCoefficient(const Scene& scene, const Model& model);
 
 // DC of `model` at its current positions; `disc_radius` (m) ≤ 0 when there is no support disc.
 DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius = 0.0,

@@ -138,14 +138,6 @@ double NodeForce(const RunResult& result, int k) {
   return k < static_cast<int>(forces.size()) ? forces[k] : NAN;
 }
 
-// The radius of the scene's disk obstacle (the drape tester's support), 0 if it has none.
-double DiscRadius(const Scene& scene) {
-  for (const auto& obstacle : scene.obstacles) {
-    if (obstacle.kind == ObstacleSpec::Kind::kDisk) return obstacle.radius;
-  }
-  return 0.0;
-}
-
 // Drape coefficients for a scene with a support disk, or a disc-shaped specimen (circle or arc
 // mesh: Rusinko & Swan's disc over a pin): `drape_coefficient` (Cusick's, with a disk) and
 // `drape` (both conventions, the areas, and the rasterisation's error bound).

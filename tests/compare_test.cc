@@ -9,6 +9,9 @@
 #include <sstream>
 #include <string>
 
+#include "src/drape_analysis.h"
+#include "src/scene_loader.h"
+
 namespace drape {
 namespace {
 
@@ -144,6 +147,38 @@ TEST(ParseCompareArguments, ReadsScenesAndFlags) {
   EXPECT_THROW(ParseCompareArguments({"a.yaml", "--repeat", "many"}), std::invalid_argument);
   EXPECT_THROW(ParseCompareArguments({"a.yaml", "--bogus", "1"}), std::invalid_argument);
   EXPECT_THROW(ParseCompareArguments({"a.yaml", "--out"}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+// A disc over a pin has a drape coefficient: a run stopped early differs from the reference's by
+// exactly what the drape analysis gives at the two sets of positions; a chain has none.
+TEST(CompareScene, DrapeCoefficientGapWhereTheSceneHasOne) {
+  std::ostringstream log;
+  const std::string disc = SourcePath("configs/netlogo/disc_quadrangular.yaml");
+  const std::vector<std::string> coarse = {"mesh.spacing=0.03", "solver.max_iterations=3"};
+  const SceneComparison comparison = CompareScene(disc, ChainOptions({"newton"}, coarse), log);
+  ASSERT_TRUE(comparison.error.empty()) << comparison.error;
+  ASSERT_EQ(comparison.runs.size(), 1u);
+  const RunRecord& run = comparison.runs[0];
+  ASSERT_TRUE(std::isfinite(run.drape_coefficient_gap)) << run.reason;
+  Model model = BuildModel(LoadScene(disc, coarse));
+  const auto ratio_at = [&model](const std::vector<double>& positions) {
+    model.positions = positions;
+    return ComputeDrapeCoefficient(model).ratio;
+  };
+  EXPECT_DOUBLE_EQ(run.drape_coefficient_gap,
+                   ratio_at(run.positions) - ratio_at(comparison.reference.positions));
+  EXPECT_NE(run.drape_coefficient_gap, 0.0);  // three Newton steps from the flat disc
+
+  const SceneComparison chain = CompareScene(SourcePath("configs/validation/funicular_chain.yaml"),
+                                             ChainOptions({"newton"}), log);
+  ASSERT_EQ(chain.runs.size(), 1u);
+  EXPECT_TRUE(std::isnan(chain.runs[0].drape_coefficient_gap));
 }
 
 }  // namespace
