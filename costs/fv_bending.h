@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "costs/energy_form.h"
+#include "costs/quadratic_form_factor.h"
 #include "costs/safe_math.h"
 
 namespace drape {
@@ -93,9 +94,7 @@ struct FvBending {
   FvBending(double d1, double d2, double d12, double size1, double size2, double area)
       : size1(size1),
         size2(size2),
-        c11(d1 > 0.0 ? std::sqrt(d1 * area) : 0.0),
-        c12(d1 > 0.0 ? d12 / std::sqrt(d1) * std::sqrt(area) : 0.0),
-        c22(std::sqrt(std::max(0.0, d1 > 0.0 ? d2 - d12 * d12 / d1 : d2) * area)),
+        coupling(d1, d12, d2, area),
         off1(std::sqrt(d1 * area)),
         off2(std::sqrt(d2 * area)) {
     assert(d1 >= 0.0 && d2 >= 0.0 && d12 * d12 <= d1 * d2 * (1.0 + 1e-12));
@@ -114,8 +113,8 @@ struct FvBending {
     const T along1 = (k1[0] * t2[0] + k1[1] * t2[1] + k1[2] * t2[2]) / size1;
     const T along2 = (k2[0] * t1[0] + k2[1] * t1[1] + k2[2] * t1[2]) / size2;
     const T s1 = -along1, s2 = along2;
-    residual[0] = c11 * s1 + c12 * s2;
-    residual[1] = c22 * s2;
+    residual[0] = coupling.l11 * s1 + coupling.l12 * s2;
+    residual[1] = coupling.l22 * s2;
     for (int c = 0; c < 3; ++c) {
       residual[2 + c] = off1 * (k1[c] / size1 - along1 * t2[c]);
       residual[5 + c] = off2 * (k2[c] / size2 - along2 * t1[c]);
@@ -128,9 +127,9 @@ struct FvBending {
     return FvBending(d1, d2, d12, size1, size2, area);
   }
 
-  const double size1, size2;   // l_P1, l_P2: control-volume sizes, m
-  const double c11, c12, c22;  // Cholesky factor of A_P [D1 D12; D12 D2], √(N·m)·m
-  const double off1, off2;     // √(D1 A_P), √(D2 A_P)
+  const double size1, size2;           // l_P1, l_P2: control-volume sizes, m
+  const QuadraticFormFactor coupling;  // of A_P [D1 D12; D12 D2], √(N·m)·m
+  const double off1, off2;             // √(D1 A_P), √(D2 A_P)
 };
 
 }  // namespace drape

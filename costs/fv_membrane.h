@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "costs/energy_form.h"
+#include "costs/quadratic_form_factor.h"
 #include "costs/safe_math.h"
 
 namespace drape {
@@ -31,10 +32,8 @@ struct FvMembrane {
   FvMembrane(double e1, double e2, double e12, double g, double rest_a, double rest_b)
       : rest_a(rest_a),
         rest_b(rest_b),
-        c11(std::sqrt(e1 * rest_a * rest_b / 4.0)),
-        c12(e12 / std::sqrt(e1) * std::sqrt(rest_a * rest_b / 4.0)),
-        c22(std::sqrt((e2 - e12 * e12 / e1) * rest_a * rest_b / 4.0)),
-        c33(std::sqrt(g * rest_a * rest_b / 4.0)) {
+        stretch(e1, e12, e2, rest_a * rest_b / 4.0),
+        shear_factor(std::sqrt(g * rest_a * rest_b / 4.0)) {
     assert(e1 > 0.0 && e2 * e1 >= e12 * e12 && g >= 0.0 && rest_a > 0.0 && rest_b > 0.0);
   }
 
@@ -51,9 +50,9 @@ struct FvMembrane {
     const T cosine = dot / (da * db);
     if (!(cosine < 1.0) || !(cosine > -1.0)) return false;  // arms parallel: no quarter left
     const T shear = asin(cosine);
-    residual[0] = c11 * strain_a + c12 * strain_b;
-    residual[1] = c22 * strain_b;
-    residual[2] = c33 * shear;
+    residual[0] = stretch.l11 * strain_a + stretch.l12 * strain_b;
+    residual[1] = stretch.l22 * strain_b;
+    residual[2] = shear_factor * shear;
     return true;
   }
 
@@ -62,8 +61,9 @@ struct FvMembrane {
     return FvMembrane(e1, e2, e12, g, rest_a, rest_b);
   }
 
-  const double rest_a, rest_b;      // l_PA, l_PB, m
-  const double c11, c12, c22, c33;  // Cholesky factor of A_q [E1 E12 0; E12 E2 0; 0 0 G]
+  const double rest_a, rest_b;        // l_PA, l_PB, m
+  const QuadraticFormFactor stretch;  // of A_q [E1 E12; E12 E2], √(N/m)·m
+  const double shear_factor;          // √(G A_q)
 };
 
 }  // namespace drape
