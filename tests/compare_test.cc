@@ -149,12 +149,6 @@ TEST(ParseCompareArguments, ReadsScenesAndFlags) {
   EXPECT_THROW(ParseCompareArguments({"a.yaml", "--out"}), std::invalid_argument);
 }
 
-}  // namespace
-}  // namespace drape
-
-namespace drape {
-namespace {
-
 // A disc over a pin has a drape coefficient: a run stopped early differs from the reference's by
 // exactly what the drape analysis gives at the two sets of positions; a chain has none.
 TEST(CompareScene, DrapeCoefficientGapWhereTheSceneHasOne) {

@@ -90,12 +90,6 @@ TEST(FunicularChain, ExampleChainIsTheSameScene) {
   ExpectMatchesFunicular(solved);
 }
 
-}  // namespace
-}  // namespace drape
-
-namespace drape {
-namespace {
-
 TEST(FunicularChain, PuiseuxFixedPointReachesTheExactPolygon) {
   const auto solved =
       testing::SolveConfig("configs/validation/funicular_chain.yaml", "puiseux-fixed-point");
