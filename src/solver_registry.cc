@@ -12,7 +12,8 @@ const std::vector<SolverInfo>& AllSolvers() {
        "Newton on the exact energy: nested-Jet Hessians, per-term PSD projection far from the "
        "solution, CHOLMOD supernodal Cholesky, pseudo-time regularisation M/dt^2 and an Armijo "
        "line search; quadratic near the end (the default)",
-       {"regularization", "max_line_search", "exact_hessian_residual"},
+       {"regularization", "max_line_search", "max_expansions", "exact_hessian_residual",
+        "absolute_projection"},
        [] { return NewNewtonSolver(); }},
       {"ceres-lbfgs",
        "L-BFGS on the exact energy (ceres::GradientProblemSolver, per-term autodiff gradients)",

@@ -12,11 +12,12 @@ namespace drape {
 
 namespace {
 
-// The local Hessian of a term made positive semidefinite: eigenvalues below zero set to zero.
-// A matrix that an LDLᵀ factorisation already shows to be semidefinite (to roundoff) is left
-// alone, which spares the eigen-decomposition for most terms. Returns true if it changed.
+// The local Hessian of a term made positive semidefinite: each negative eigenvalue is set to zero
+// (kClamp) or to its magnitude (kAbsolute). A matrix that an LDLᵀ factorisation already shows to
+// be semidefinite (to roundoff) is left alone, which spares the eigen-decomposition for most
+// terms. Returns true if it changed.
 template <int N>
-bool ProjectFixed(int n, double* row_major) {
+bool ProjectFixed(EigenvalueFilter filter, int n, double* row_major) {
   using Matrix = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
   Eigen::Map<Matrix> matrix(row_major, n, n);
   const double scale = matrix.cwiseAbs().maxCoeff();
@@ -27,23 +28,25 @@ bool ProjectFixed(int n, double* row_major) {
   const Eigen::SelfAdjointEigenSolver<Matrix> eigen(matrix);
   const auto& values = eigen.eigenvalues();
   if (values.minCoeff() >= -tolerance) return false;
-  const Eigen::Matrix<double, N, 1> clamped = values.cwiseMax(0.0);
-  matrix = eigen.eigenvectors() * clamped.asDiagonal() * eigen.eigenvectors().transpose();
+  using Vector = Eigen::Matrix<double, N, 1>;
+  const Vector filtered = filter == EigenvalueFilter::kAbsolute ? Vector(values.cwiseAbs())
+                                                                : Vector(values.cwiseMax(0.0));
+  matrix = eigen.eigenvectors() * filtered.asDiagonal() * eigen.eigenvectors().transpose();
   return true;
 }
 
-bool ProjectToPositiveSemidefinite(int n, double* row_major) {
+bool ProjectToPositiveSemidefinite(EigenvalueFilter filter, int n, double* row_major) {
   switch (n) {
     case 3:
-      return ProjectFixed<3>(n, row_major);
+      return ProjectFixed<3>(filter, n, row_major);
     case 6:
-      return ProjectFixed<6>(n, row_major);
+      return ProjectFixed<6>(filter, n, row_major);
     case 9:
-      return ProjectFixed<9>(n, row_major);
+      return ProjectFixed<9>(filter, n, row_major);
     case 12:
-      return ProjectFixed<12>(n, row_major);
+      return ProjectFixed<12>(filter, n, row_major);
     default:
-      return ProjectFixed<Eigen::Dynamic>(n, row_major);
+      return ProjectFixed<Eigen::Dynamic>(filter, n, row_major);
   }
 }
 
@@ -139,7 +142,9 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
       if (destination[k] >= 0) values_[destination[k]] += local_hessian[k];
     }
     if (!project) continue;
-    if (ProjectToPositiveSemidefinite(n, local_hessian.data())) ++assembly->projected_terms;
+    if (ProjectToPositiveSemidefinite(filter_, n, local_hessian.data())) {
+      ++assembly->projected_terms;
+    }
     for (int k = 0; k < n * n; ++k) {
       if (destination[k] >= 0) projected_[destination[k]] += local_hessian[k];
     }

@@ -5,7 +5,8 @@
 // triangle in compressed columns, with the destination of every local entry of every term
 // precomputed, so that each assembly only adds numbers. It keeps two sets of values over the
 // same pattern: the true Hessian, and the Hessian whose every term is first projected to
-// positive semidefinite (negative eigenvalues of the small local matrix set to zero).
+// positive semidefinite (negative eigenvalues of the small local matrix set to zero, or to their
+// magnitude: EigenvalueFilter).
 //
 // SparseCholesky factorises a matrix of that pattern with CHOLMOD's supernodal Cholesky: the
 // symbolic analysis (fill-reducing ordering, supernodes) once, the numeric factorisation per
@@ -21,6 +22,11 @@
 #include "src/model.h"
 
 namespace drape {
+
+// How a term's negative eigenvalues are made nonnegative: set to zero (the nearest semidefinite
+// matrix), or replaced by their magnitude, which keeps the curvature's size and only flips its
+// sign (a compressed spring then resists sideways motion as much as a stretched one would).
+enum class EigenvalueFilter { kClamp, kAbsolute };
 
 class FreeHessian {
  public:
@@ -38,6 +44,8 @@ class FreeHessian {
   // evaluable there or a value is not finite.
   bool Assemble(const double* positions, bool project, Assembly* assembly,
                 std::vector<double>* gradient);
+
+  void set_eigenvalue_filter(EigenvalueFilter filter) { filter_ = filter; }
 
   int size() const { return dofs_.num_free(); }
   int num_nonzeros() const { return static_cast<int>(rows_.size()); }
@@ -62,6 +70,7 @@ class FreeHessian {
   // its local entry (r, c), or -1 (fixed coordinate, or below the diagonal).
   std::vector<int> term_offsets_, destinations_;
   std::vector<double> values_, projected_;
+  EigenvalueFilter filter_ = EigenvalueFilter::kClamp;
 };
 
 class SparseCholesky {

@@ -13,10 +13,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "src/equilibrium.h"
@@ -106,6 +108,17 @@ bool RunInChild(const std::string& scene_file, int n, const std::string& solver,
   return read_ok && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+// newton's wall time between the smallest and each larger size, as an exponent of the node
+// count (the target: at most 1.5).
+void PrintGrowth(const std::vector<std::pair<int, double>>& times) {
+  for (size_t k = 1; k < times.size(); ++k) {
+    const double exponent = std::log(times[k].second / times[0].second) /
+                            std::log(static_cast<double>(times[k].first) / times[0].first);
+    std::printf("\nnewton, %d to %d nodes: time grows as nodes^%.2f\n", times[0].first,
+                times[k].first, exponent);
+  }
+}
+
 int Main(int argc, char** argv) {
   std::vector<int> sizes = {50, 100, 256};
   std::vector<std::string> solvers;
@@ -133,6 +146,7 @@ int Main(int argc, char** argv) {
       "| nodes | dofs | solver | iterations | wall s | rel. residual | energy J | "
       "÷ newton | peak MB | newton s/iteration ÷ one factorisation |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::pair<int, double>> newton_times;  // (nodes, wall s)
   for (int n : sizes) {
     double newton_seconds = 0.0;
     for (const auto& solver : solvers) {
@@ -144,10 +158,15 @@ int Main(int argc, char** argv) {
                     solver.c_str(), peak_mb);
         continue;
       }
-      if (solver == "newton") newton_seconds = row.seconds;
+      if (solver == "newton") {
+        newton_seconds = row.seconds;
+        newton_times.push_back({n * n, row.seconds});
+      }
       char ratio[32] = "";
-      if (newton_seconds > 0.0)
-        std::snprintf(ratio, sizeof ratio, "%.1f", row.seconds / newton_seconds);
+      if (newton_seconds > 0.0) {  // a run stopped before 1e-8 gives only a lower bound
+        std::snprintf(ratio, sizeof ratio, "%s%.1f", row.converged ? "" : "> ",
+                      row.seconds / newton_seconds);
+      }
       char factor[32] = "";
       if (row.per_iteration_over_factorization > 0.0) {
         std::snprintf(factor, sizeof factor, "%.2f", row.per_iteration_over_factorization);
@@ -159,6 +178,7 @@ int Main(int argc, char** argv) {
       std::fflush(stdout);
     }
   }
+  PrintGrowth(newton_times);
   return 0;
 }
 
