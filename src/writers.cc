@@ -3,25 +3,24 @@
 // half-written file, even if the run is killed while writing.
 #include "src/writers.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "src/contact.h"
 #include "src/drape_analysis.h"
+#include "src/render.h"
 
 namespace drape {
 
@@ -138,23 +137,34 @@ double NodeForce(const RunResult& result, int k) {
   return k < static_cast<int>(forces.size()) ? forces[k] : NAN;
 }
 
-// Drape coefficients for a scene with a support disk, or a disc-shaped specimen (circle or arc
-// mesh: Rusinko & Swan's disc over a pin): `drape_coefficient` (Cusick's, with a disk) and
-// `drape` (both conventions, the areas, and the rasterisation's error bound).
-void AddDrapeMembers(const Scene& scene, const Model& model,
+std::string JsonArray(const std::vector<double>& values) {
+  std::string text = "[";
+  for (size_t k = 0; k < values.size(); ++k) text += (k ? ", " : "") + JsonNumber(values[k]);
+  return text + "]";
+}
+
+// For a scene with a drape coefficient (HasDrapeCoefficient): `drape_coefficient` (Cusick's, with
+// a disk) and `drape` (both conventions, the areas, the rasterisation's error bound, the radial
+// profile's centre and radii, and the folds).
+void AddDrapeMembers(const DrapeAnalysis& analysis,
                      std::vector<std::pair<std::string, std::string>>* members) {
-  const double disc_radius = DiscRadius(scene);
-  const bool disc_mesh =
-      scene.mesh.kind == MeshSpec::Kind::kCircle || scene.mesh.kind == MeshSpec::Kind::kArc;
-  if (model.triangles.empty() || !(disc_radius > 0.0 || disc_mesh)) return;
-  const DrapeCoefficient dc = ComputeDrapeCoefficient(model, disc_radius);
-  if (disc_radius > 0.0) members->emplace_back("drape_coefficient", JsonNumber(dc.cusick));
+  const DrapeCoefficient& dc = analysis.coefficient;
+  const Folds& folds = analysis.folds;
+  const bool disc = analysis.disc_radius > 0.0;
+  if (disc) members->emplace_back("drape_coefficient", JsonNumber(dc.cusick));
+  const auto& centre = analysis.profile.centre;
   members->emplace_back("drape",
-                        JsonObject({{"cusick", disc_radius > 0.0 ? JsonNumber(dc.cusick) : "null"},
+                        JsonObject({{"cusick", disc ? JsonNumber(dc.cusick) : "null"},
                                     {"ratio", JsonNumber(dc.ratio)},
                                     {"shadow_area_m2", JsonNumber(dc.shadow.area)},
                                     {"flat_area_m2", JsonNumber(dc.flat_area)},
-                                    {"area_error_bound_m2", JsonNumber(dc.shadow.error_bound)}},
+                                    {"area_error_bound_m2", JsonNumber(dc.shadow.error_bound)},
+                                    {"profile_centre_m", JsonArray({centre[0], centre[1]})},
+                                    {"radius_min_m", JsonNumber(analysis.radius_min)},
+                                    {"radius_mean_m", JsonNumber(analysis.radius_mean)},
+                                    {"radius_max_m", JsonNumber(analysis.radius_max)},
+                                    {"folds", std::to_string(folds.count)},
+                                    {"fold_angles_deg", JsonArray(folds.angles_deg)}},
                                    1));
 }
 
@@ -176,7 +186,7 @@ void AddContactMembers(const Scene& scene, const Model& model,
 }
 
 void WriteSummary(const Scene& scene, const Model& model, const RunResult& result,
-                  std::ostream& out) {
+                  const std::optional<DrapeAnalysis>& drape, std::ostream& out) {
   const Certificate& certificate = result.certificate;
   const SolverSummary& summary = result.summary;
   std::vector<std::pair<std::string, double>> energy{{"total", certificate.energy}};
@@ -207,7 +217,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   if (result.stability.computed && !result.stability.stable) {
     members.emplace_back("min_eigenvalue", JsonNumber(result.stability.min_eigenvalue));
   }
-  AddDrapeMembers(scene, model, &members);
+  if (drape) AddDrapeMembers(*drape, &members);
   AddContactMembers(scene, model, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics", JsonMap(summary.statistics, 1, JsonNumber));
@@ -302,63 +312,27 @@ void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
   for (const auto& e : model.edges) out << "l " << e[0] + 1 << ' ' << e[1] + 1 << '\n';
 }
 
-// tools/plot_drape.gp: $DRAPE_PLOT_SCRIPT, else DRAPE_TOOLS_DIR if the build defines it, else
-// next to the running executable or up to two folders above it (a build folder in the source tree).
-std::optional<fs::path> FindPlotScript() {
-  if (const char* script = std::getenv("DRAPE_PLOT_SCRIPT")) return fs::path(script);
-#ifdef DRAPE_TOOLS_DIR
-  if (fs::exists(fs::path(DRAPE_TOOLS_DIR) / "plot_drape.gp")) {
-    return fs::path(DRAPE_TOOLS_DIR) / "plot_drape.gp";
+// profile.csv: the shadow's radial profile, one row per ray (see ComputeRadialProfile), with the
+// flat specimen's radius on the same ray, and the overhang fraction the folds are counted on, raw
+// and smoothed (see DrapeAnalysis, CountFolds).
+void WriteProfile(const DrapeAnalysis& analysis, std::ostream& out) {
+  out << "theta_deg,radius_m,flat_radius_m,overhang_fraction,smoothed_overhang_fraction\n";
+  const auto& profile = analysis.profile;
+  for (size_t k = 0; k < profile.radius.size(); ++k) {
+    out << Number(360.0 * k / profile.radius.size()) << ',' << Number(profile.radius[k]) << ','
+        << Number(analysis.flat_profile.radius[k]) << ',' << Number(analysis.overhang[k]) << ','
+        << Number(analysis.folds.smoothed[k]) << '\n';
   }
-#endif
-  std::error_code error;
-  fs::path folder = fs::read_symlink("/proc/self/exe", error).parent_path();
-  for (int up = 0; !error && up < 3; ++up, folder = folder.parent_path()) {
-    const fs::path candidate = folder / "tools" / "plot_drape.gp";
-    if (fs::exists(candidate, error)) return candidate;
-  }
-  return std::nullopt;
 }
 
-// A gnuplot string literal: single quotes, with '' for a quote inside.
-std::string GnuplotString(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
-  return quoted + "'";
-}
-
-// Runs gnuplot on the node table to draw drape.png. Throws std::runtime_error if it cannot.
-void DrawPng(const Scene& scene, const Model& model, const RunResult& result,
-             const fs::path& directory) {
-  const std::optional<fs::path> script = FindPlotScript();
-  if (!script) {
-    throw std::runtime_error("tools/plot_drape.gp not found (set DRAPE_PLOT_SCRIPT to its path)");
-  }
-  const std::string stem = ".drape-plot.tmp" + std::to_string(::getpid());
-  const fs::path table = directory / (stem + ".csv");
-  const fs::path image = directory / (stem + ".png");
-  WriteAtomically(directory, table.filename().string(),
-                  [&](std::ostream& out) { WriteNodes(model, result, out); });
-  const std::string settings = "input=" + GnuplotString(table.string()) +
-                               "; output=" + GnuplotString(image.string()) +
-                               "; title=" + GnuplotString(scene.name);
-  const std::string script_path = script->string();
-  const char* argv[] = {"gnuplot", "-e", settings.c_str(), script_path.c_str(), nullptr};
-  pid_t child;
-  const int spawn_error =
-      posix_spawnp(&child, "gnuplot", nullptr, nullptr, const_cast<char* const*>(argv), environ);
-  int status = 0;
-  const bool ran = spawn_error == 0 && waitpid(child, &status, 0) == child;
-  std::error_code ignored;
-  fs::remove(table, ignored);
-  if (!ran || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(image)) {
-    fs::remove(image, ignored);
-    if (spawn_error == ENOENT || (WIFEXITED(status) && WEXITSTATUS(status) == 127)) {
-      throw std::runtime_error("gnuplot not found (install gnuplot-nox)");
-    }
-    throw std::runtime_error("gnuplot failed on " + script_path);
-  }
-  fs::rename(image, directory / "drape.png");
+// The captions of drape.png for a drape: both drape coefficients and the fold count.
+std::vector<std::string> DrapeCaption(const DrapeAnalysis& analysis) {
+  std::string line = "drape coefficient ";
+  if (analysis.disc_radius > 0.0)
+    line += CoefficientText(analysis.coefficient.cusick) + " (Cusick), ";
+  line += CoefficientText(analysis.coefficient.ratio) + " (A_shadow/A_flat); " +
+          std::to_string(analysis.folds.count) + " folds";
+  return {line};
 }
 
 bool Requested(const Scene& scene, const std::string& what) {
@@ -372,9 +346,11 @@ void WriteOutputs(const Scene& scene, const Model& model, const RunResult& resul
                   const std::string& directory) {
   const fs::path folder(directory);
   fs::create_directories(folder);
+  std::optional<DrapeAnalysis> drape;
+  if (HasDrapeCoefficient(scene, model)) drape = AnalyseDrape(scene, model);
   if (Requested(scene, "summary")) {
     WriteAtomically(folder, "summary.json",
-                    [&](std::ostream& out) { WriteSummary(scene, model, result, out); });
+                    [&](std::ostream& out) { WriteSummary(scene, model, result, drape, out); });
   }
   if (Requested(scene, "nodes")) {
     WriteAtomically(folder, "nodes.csv",
@@ -397,13 +373,18 @@ void WriteOutputs(const Scene& scene, const Model& model, const RunResult& resul
   if (Requested(scene, "obj")) {
     WriteAtomically(folder, "mesh.obj", [&](std::ostream& out) { WriteObj(scene, model, out); });
   }
-  if (Requested(scene, "png")) {
-    // The picture is a convenience: without gnuplot, say so and keep every other file.
-    try {
-      DrawPng(scene, model, result, folder);
-    } catch (const std::exception& error) {
-      std::cerr << "drape: warning: drape.png not written: " << error.what() << "\n";
-    }
+  if (drape && Requested(scene, "profile")) {
+    WriteAtomically(folder, "profile.csv", [&](std::ostream& out) { WriteProfile(*drape, out); });
+  }
+  if (Requested(scene, "png") && model.num_nodes > 0) {
+    DrapeViewOptions view;
+    if (drape) view.caption = DrapeCaption(*drape);
+    WriteAtomically(folder, "drape.png",
+                    [&](std::ostream& out) { DrawDrapeView(scene, model, out, view); });
+  }
+  if (drape && (Requested(scene, "png") || Requested(scene, "shadow"))) {
+    WriteAtomically(folder, "shadow.png",
+                    [&](std::ostream& out) { DrawShadowView(scene, model, *drape, out); });
   }
 }
 

@@ -1,5 +1,6 @@
-// Result files: summary.json, nodes.csv, history.csv, mesh.vtk, mesh.obj. Each is written to a
-// temporary name in the output folder and renamed, so no half-written file is ever left.
+// Result files: summary.json, nodes.csv, history.csv, kinetic.csv, mesh.vtk, mesh.obj, profile.csv,
+// drape.png, shadow.png (the pictures drawn by src/render.h). Each is written to a temporary name
+// in the output folder and renamed, so no half-written file is ever left.
 #ifndef DRAPE_SRC_WRITERS_H_
 #define DRAPE_SRC_WRITERS_H_
 

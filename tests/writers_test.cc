@@ -2,11 +2,13 @@
 // summary.json is read back with yaml-cpp (JSON is YAML), the tables line by line.
 #include "src/writers.h"
 
+#include <cairo.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +20,7 @@
 #include "costs/constant_force_potential.h"
 #include "costs/spring_stretch.h"
 #include "src/equilibrium.h"
+#include "tests/folded_skirt.h"
 
 namespace drape {
 namespace {
@@ -266,7 +269,9 @@ TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
     vertices += line.rfind("v ", 0) == 0;
     faces += line.rfind("f ", 0) == 0;
     lines += line.rfind("l ", 0) == 0;
-    if (line.rfind("f ", 0) == 0 && faces == 1) EXPECT_EQ(line, "f 1 2 4");  // 1-based
+    if (line.rfind("f ", 0) == 0 && faces == 1) {
+      EXPECT_EQ(line, "f 1 2 4");  // 1-based
+    }
   }
   EXPECT_EQ(vertices, 4);
   EXPECT_EQ(faces, 2);
@@ -288,17 +293,124 @@ TEST_F(WritersTest, CreatesTheFolderAndLeavesNoTemporaryFile) {
   directory_ = directory_.parent_path().parent_path();  // TearDown removes the whole tree
 }
 
-TEST_F(WritersTest, DrawsAPngWithGnuplot) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "gnuplot is not installed";
+// A PNG's size and how many of its pixels are not the white background.
+struct Picture {
+  int width = 0, height = 0;
+  double inked = 0.0;  // fraction of the pixels that are not white
+};
+
+Picture ReadPng(const std::string& path) {
+  cairo_surface_t* surface = cairo_image_surface_create_from_png(path.c_str());
+  Picture picture;
+  if (cairo_surface_status(surface) == CAIRO_STATUS_SUCCESS) {
+    picture.width = cairo_image_surface_get_width(surface);
+    picture.height = cairo_image_surface_get_height(surface);
+    const unsigned char* data = cairo_image_surface_get_data(surface);
+    const int stride = cairo_image_surface_get_stride(surface);
+    int inked = 0;
+    for (int row = 0; row < picture.height; ++row) {
+      const auto* pixels = reinterpret_cast<const uint32_t*>(data + row * stride);
+      for (int column = 0; column < picture.width; ++column) {
+        inked += (pixels[column] & 0xffffffu) != 0xffffffu;
+      }
+    }
+    picture.inked = double(inked) / (picture.width * picture.height);
   }
+  cairo_surface_destroy(surface);
+  return picture;
+}
+
+// The hand-built 7-lobe skirt of tests/folded_skirt.h on an 18 cm disk.
+Scene DrapeScene(const std::vector<std::string>& write) {
+  Scene scene = SceneWriting(write);
+  ObstacleSpec disk;
+  disk.kind = ObstacleSpec::Kind::kDisk;
+  disk.radius = 0.09;
+  scene.obstacles.push_back(disk);
+  return scene;
+}
+
+Model SevenFolds() {
+  SkirtShape shape;
+  shape.lobes = 7;
+  return FoldedSkirt(shape);
+}
+
+RunResult Finished() {
+  RunResult result;
+  result.summary.solver = "hand-built";
+  return result;
+}
+
+TEST_F(WritersTest, DrawsTheSheetInThreeDimensions) {
   const Model model = SmallSheet();
-  WriteOutputs(SceneWriting({"png"}), model, ResultOf(model), directory_.string());
+  WriteOutputs(SceneWriting({"png", "profile", "shadow"}), model, ResultOf(model),
+               directory_.string());
+  // No drape coefficient for a sheet: no profile, no shadow view.
   ASSERT_EQ(Files(), std::set<std::string>{"drape.png"});
-  std::ifstream png(Path("drape.png"), std::ios::binary);
-  char magic[8] = {};
-  png.read(magic, sizeof magic);
-  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+  const Picture picture = ReadPng(Path("drape.png"));
+  EXPECT_EQ(picture.width, 900);
+  EXPECT_EQ(picture.height, 700);
+  EXPECT_GT(picture.inked, 0.05);
+}
+
+TEST_F(WritersTest, DrawsAChainFromTheFront) {
+  Model model;
+  model.dimension = 2;
+  model.num_nodes = 5;
+  for (int k = 0; k < 5; ++k) {
+    model.positions.insert(model.positions.end(), {0.25 * k, 0.0, -0.1 * (k * (4 - k))});
+    if (k) model.edges.push_back({k - 1, k});
+  }
+  model.initial = model.positions;
+  model.fixed = {1, 1, 1, 0, 1, 0, 0, 1, 0, 0, 1, 0, 1, 1, 1};
+  model.mass.assign(5, 0.1);
+  model.applied.assign(15, 0.0);
+  model.grid_index.assign(5, {-1, -1});
+  WriteOutputs(SceneWriting({"png"}), model, Finished(), directory_.string());
+  const Picture picture = ReadPng(Path("drape.png"));
+  EXPECT_EQ(picture.width, 900);
+  EXPECT_GT(picture.inked, 0.005);
+}
+
+TEST_F(WritersTest, DrapeSceneGetsItsProfileFoldsAndPictures) {
+  const Model model = SevenFolds();
+  WriteOutputs(DrapeScene({"summary", "profile", "png"}), model, Finished(), directory_.string());
+  EXPECT_EQ(Files(),
+            (std::set<std::string>{"summary.json", "profile.csv", "drape.png", "shadow.png"}));
+
+  const YAML::Node drape = YAML::LoadFile(Path("summary.json"))["drape"];
+  EXPECT_EQ(drape["folds"].as<int>(), 7);
+  EXPECT_EQ(drape["fold_angles_deg"].size(), 7u);
+  EXPECT_NEAR(drape["radius_max_m"].as<double>(), 0.138, 1e-12);  // SkirtCrestRadius
+  EXPECT_GT(drape["radius_min_m"].as<double>(), 0.09);
+  EXPECT_LT(drape["radius_min_m"].as<double>(), drape["radius_mean_m"].as<double>());
+  EXPECT_EQ(drape["profile_centre_m"].as<std::vector<double>>(), (std::vector<double>{0, 0}));
+
+  const auto lines = Lines(Path("profile.csv"));
+  ASSERT_EQ(lines.size(), 361u);
+  EXPECT_EQ(lines[0],
+            "theta_deg,radius_m,flat_radius_m,overhang_fraction,smoothed_overhang_fraction");
+  const auto crest = Fields(lines[1]);
+  ASSERT_EQ(crest.size(), 5u);
+  EXPECT_EQ(std::stod(crest[0]), 0.0);
+  EXPECT_NEAR(std::stod(crest[1]), 0.138, 1e-12);
+  EXPECT_NEAR(std::stod(crest[2]), 0.15, 1e-12);
+  EXPECT_NEAR(std::stod(crest[3]), (0.138 - 0.09) / (0.15 - 0.09), 1e-9);
+  EXPECT_EQ(std::stod(Fields(lines[360])[0]), 359.0);
+
+  const Picture shadow = ReadPng(Path("shadow.png"));
+  EXPECT_EQ(shadow.width, 800);
+  EXPECT_EQ(shadow.height, 800);
+  EXPECT_GT(shadow.inked, 0.1);
+  const Picture view = ReadPng(Path("drape.png"));
+  EXPECT_EQ(view.width, 900);
+  EXPECT_GT(view.inked, 0.1);
+}
+
+TEST_F(WritersTest, ShadowAloneWritesOnlyTheTopView) {
+  WriteOutputs(DrapeScene({"shadow"}), SevenFolds(), Finished(), directory_.string());
+  EXPECT_EQ(Files(), std::set<std::string>{"shadow.png"});
 }
 
 }  // namespace
