@@ -1,5 +1,6 @@
 #include "src/cli.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <exception>
@@ -10,6 +11,10 @@
 #include <stdexcept>
 
 #include "src/compare.h"
+#include "src/fit_file.h"
+#include "src/fit_problem.h"
+#include "src/fit_solver.h"
+#include "src/fit_writer.h"
 #include "src/model.h"
 #include "src/progress.h"
 #include "src/run.h"
@@ -28,6 +33,7 @@ constexpr char kUsage[] =
     "       drape solvers\n"
     "       drape compare SCENE.yaml... [--solvers all|a,b,...] [--out DIR] [--repeat N]\n"
     "                     [--time-limit S] [--set key.path=value ...] [--no-plots]\n"
+    "       drape fit FIT.yaml [--out DIR] [--method NAME]\n"
     "       drape help\n";
 
 constexpr char kHelp[] =
@@ -41,7 +47,9 @@ constexpr char kHelp[] =
     "  solvers  list the methods and their options (solver.<method>.<key>)\n"
     "  compare  SCENE.yaml... [--solvers all|a,b] [--out DIR] [--repeat N] [--time-limit S]\n"
     "           [--set k=v] [--no-plots]: solver comparison report (speed against error)\n"
-    "  fit      fit material parameters to a measured drape (not implemented yet, issue 8)\n"
+    "  fit      FIT.yaml [--out DIR] [--method NAME]: fit scene parameters (stiffnesses) to\n"
+    "           measurements; writes fit.json, history.csv, sensitivity.csv, fit.png, report.md\n"
+    "           (methods: bobyqa, nelder-mead, sbplx, cobyla, implicit-lbfgs, implicit-lm)\n"
     "\n"
     "exit status: 0 converged; 1 ran but did not reach the tolerance (results written,\n"
     "converged: false); 2 bad input or usage (nothing written).\n";
@@ -56,6 +64,7 @@ struct Arguments {
   std::string scene;
   std::optional<std::string> solver;
   std::optional<std::string> out;
+  std::optional<std::string> method;  // fit
   std::vector<std::string> overrides;
   bool help = false;
 };
@@ -89,9 +98,12 @@ Arguments ParseArguments(const std::vector<std::string>& args, const std::set<st
     if (flag == "--solver") parsed.solver = value;
     if (flag == "--out") parsed.out = value;
     if (flag == "--set") parsed.overrides.push_back(value);
+    if (flag == "--method") parsed.method = value;
   }
   if (parsed.help) return parsed;
-  if (positional.empty()) throw UsageError(args[0] + " needs a scene file");
+  if (positional.empty()) {
+    throw UsageError(args[0] + (args[0] == "fit" ? " needs a fit file" : " needs a scene file"));
+  }
   if (positional.size() > 1) throw UsageError("unexpected argument '" + positional[1] + "'");
   parsed.scene = positional[0];
   return parsed;
@@ -186,6 +198,52 @@ int Check(const Arguments& arguments, std::ostream& out) {
   return kExitConverged;
 }
 
+// `drape fit`: load the fit file (every input checked before any solve), run the outer loop with
+// a progress line per evaluation on `err`, write the outputs. Exit 0 converged, 1 not converged.
+int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
+  FitSpec spec = LoadFitFile(arguments.scene);
+  if (arguments.method) {
+    const auto& methods = FitMethods();
+    if (std::find(methods.begin(), methods.end(), *arguments.method) == methods.end()) {
+      throw UsageError("unknown fit method '" + *arguments.method +
+                       "' (known: bobyqa, nelder-mead, sbplx, cobyla, implicit-lbfgs, implicit-lm)");
+    }
+    spec.method = *arguments.method;
+  }
+  if (arguments.out) spec.output_directory = *arguments.out;
+  FitProblem problem(spec);
+  FitOptions options;
+  options.on_evaluation = [&](const FitIterationRecord& record) {
+    char text[120];
+    std::snprintf(text, sizeof text, "fit %s: evaluation %d, %.2f s, objective %.6g (best %.6g)",
+                  spec.method.c_str(), record.evaluation, record.time_s, record.objective,
+                  record.best_objective);
+    err << text;
+    for (size_t j = 0; j < record.parameters.size(); ++j) {
+      std::snprintf(text, sizeof text, ", %s=%.8g", spec.parameters[j].key.c_str(),
+                    record.parameters[j]);
+      err << text;
+    }
+    err << (record.inner_converged ? "" : " (an equilibrium did not converge)") << "\n";
+  };
+  EnableInterrupt();
+  const FitResult result = RunFit(problem, options);
+  if (result.parameters.empty()) {
+    err << "drape fit: " << result.termination << "; nothing written\n";
+    return kExitNotConverged;
+  }
+  try {
+    WriteFitOutputs(problem, result, spec.output_directory);
+  } catch (const std::exception& error) {
+    err << "drape: cannot write the results: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  out << "fit " << spec.method << ": converged " << (result.converged ? "yes" : "no") << ", "
+      << result.evaluations << " evaluations, objective " << result.objective << " ("
+      << result.termination << "); results in " << spec.output_directory << std::endl;
+  return result.converged ? kExitConverged : kExitNotConverged;
+}
+
 int ListSolvers(std::ostream& out) {
   for (const auto& info : AllSolvers()) {
     out << info.name << "\n    " << info.description << "\n";
@@ -217,12 +275,10 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       throw UsageError(error.what());
     }
   }
-  if (command == "fit") {
-    err << "drape fit: not implemented yet (issue 8)\n";
-    return kExitBadInput;
-  }
   const std::map<std::string, std::set<std::string>> flags = {
-      {"solve", {"--solver", "--out", "--set"}}, {"check", {"--set"}}};
+      {"solve", {"--solver", "--out", "--set"}},
+      {"check", {"--set"}},
+      {"fit", {"--out", "--method"}}};
   const auto accepted = flags.find(command);
   if (accepted == flags.end()) throw UsageError("unknown command '" + command + "'");
   const Arguments arguments = ParseArguments(args, accepted->second);
@@ -230,6 +286,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     out << kUsage;
     return kExitConverged;
   }
+  if (command == "fit") return Fit(arguments, out, err);
   return command == "solve" ? Solve(arguments, out, err, options) : Check(arguments, out);
 }
 

@@ -158,10 +158,11 @@ TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {
   EXPECT_FALSE(fs::exists(out_));
 }
 
-TEST_F(CliTest, FitSaysItIsNotImplemented) {
+// `drape fit` itself is tested in tests/fit_*_test.cc; here only its bad-input path.
+TEST_F(CliTest, FitWithAMissingFitFileIsBadInput) {
   const Outcome outcome = Drape({"fit", "x.yaml"});
   EXPECT_EQ(outcome.exit_status, 2);
-  EXPECT_NE(outcome.err.find("not implemented yet"), std::string::npos);
+  EXPECT_NE(outcome.err.find("cannot read the fit file"), std::string::npos);
 }
 
 TEST_F(CliTest, CompareWithoutScenesOrWithAnUnknownSolverIsBadUsage) {

@@ -1,0 +1,197 @@
+// The fit file: every key of issue 8's format read, and bad input reported as file:line:column.
+#include "src/fit_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "src/cli.h"
+#include "tests/fit_test_support.h"
+
+namespace drape::testing {
+namespace {
+
+std::string BaseScene() { return SourcePath("configs/fit/drape_fv.yaml"); }
+
+// A fit file in a fresh folder, with the base scene copied next to it (the scene path is relative
+// to the fit file) and small data files.
+std::string WriteFitFolder(const std::string& name, const std::string& fit_text) {
+  const std::string folder = FitTempDir(name);
+  std::filesystem::copy_file(BaseScene(), folder + "/base.yaml");
+  std::filesystem::copy_file(BaseScene(), folder + "/other.yaml");
+  WriteTextFile(folder + "/scan.csv", "id,x,y,z\n0,0.1,0.2,0.3\n5,0.1,0.2,-0.1\n");
+  WriteTextFile(folder + "/cloud.xyz", "0.1 0.2 0.3\n0.0 0.1 -0.05\n");
+  WriteTextFile(folder + "/cloud.ply",
+                "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                "property float z\nend_header\n0.1 0.2 0.3\n0 0 -0.1\n");
+  WriteTextFile(folder + "/forces.csv", "id,fx,fy,fz\n60,0,0,0.01\n");
+  WriteTextFile(folder + "/fit.yaml", fit_text);
+  return folder + "/fit.yaml";
+}
+
+constexpr char kFullFit[] = R"(scene: base.yaml
+parameters:
+  - {key: material.finite_volume.D_warp, initial: 1.0e-5, bounds: [1.0e-7, 1.0e-3], log: true}
+  - {key: material.finite_volume.G, initial: 1.0, bounds: [0.0, 10]}
+measurements:
+  - drape_coefficient: {value: 0.62, weight: 2, disc_radius: 0.06}
+  - positions: {file: scan.csv, sigma: 0.0005}
+  - positions: {file: cloud.xyz}
+  - positions: {file: cloud.ply}
+  - bending_length: {value: 0.021, direction: weft}
+  - reactions: {file: forces.csv}
+  - scene: other.yaml
+    measurements:
+      - drape_coefficient: {value: 0.5}
+method: sbplx
+max_evaluations: 50
+tolerance: 1.0e-6
+output: {directory: out/fit}
+)";
+
+TEST(FitFileTest, ReadsEveryKeyOfTheFormat) {
+  const std::string path = WriteFitFolder("full", kFullFit);
+  const FitSpec spec = LoadFitFile(path);
+  ASSERT_EQ(spec.parameters.size(), 2u);
+  EXPECT_EQ(spec.parameters[0].key, "material.finite_volume.D_warp");
+  EXPECT_TRUE(spec.parameters[0].log);
+  EXPECT_DOUBLE_EQ(spec.parameters[0].lower, 1e-7);
+  EXPECT_FALSE(spec.parameters[1].log);
+  ASSERT_EQ(spec.specimens.size(), 2u);
+  const auto& m = spec.specimens[0].measurements;
+  ASSERT_EQ(m.size(), 6u);
+  EXPECT_EQ(m[0].kind, FitMeasurement::Kind::kDrapeCoefficient);
+  EXPECT_DOUBLE_EQ(m[0].weight, 2.0);
+  EXPECT_DOUBLE_EQ(m[0].disc_radius, 0.06);
+  EXPECT_FALSE(m[1].positions.cloud);
+  EXPECT_EQ(m[1].positions.ids, (std::vector<int>{0, 5}));
+  EXPECT_DOUBLE_EQ(m[1].sigma, 0.0005);
+  EXPECT_TRUE(m[2].positions.cloud);
+  EXPECT_EQ(m[2].positions.points.size(), 2u);
+  EXPECT_TRUE(m[3].positions.cloud);
+  EXPECT_DOUBLE_EQ(m[3].positions.points[1].z(), -0.1);
+  EXPECT_EQ(m[4].direction, "weft");
+  EXPECT_DOUBLE_EQ(m[4].sigma, 0.001);  // default
+  EXPECT_EQ(m[5].reactions.ids, (std::vector<int>{60}));
+  EXPECT_DOUBLE_EQ(m[5].sigma, 0.01 * 0.01);  // 1% of the largest measured force
+  EXPECT_EQ(spec.specimens[1].measurements.size(), 1u);
+  EXPECT_NE(spec.specimens[1].scene_file.find("other.yaml"), std::string::npos);
+  EXPECT_EQ(spec.method, "sbplx");
+  EXPECT_EQ(spec.max_evaluations, 50);
+  EXPECT_EQ(spec.output_directory, std::filesystem::path(path).parent_path().string() + "/out/fit");
+}
+
+TEST(FitFileTest, DefaultsToBobyqaAndOutFitName) {
+  const std::string path = WriteFitFolder("defaults", R"(scene: base.yaml
+parameters:
+  - {key: material.finite_volume.D_warp, initial: 1.0e-5, bounds: [1.0e-7, 1.0e-3]}
+measurements:
+  - drape_coefficient: {value: 0.62}
+)");
+  const FitSpec spec = LoadFitFile(path);
+  EXPECT_EQ(spec.method, "bobyqa");
+  EXPECT_EQ(spec.output_directory,
+            std::filesystem::path(path).parent_path().string() + "/out/fit");  // out/<stem>
+  EXPECT_FALSE(spec.parameters[0].log);
+}
+
+// Runs LoadFitFile and returns the error message ("" if none).
+std::string ErrorOf(const std::string& name, const std::string& text) {
+  const std::string path = WriteFitFolder(name, text);
+  try {
+    LoadFitFile(path);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(FitFileTest, LocatesBadInput) {
+  const std::string head = "scene: base.yaml\nparameters:\n";
+  const std::string good_parameter =
+      "  - {key: material.finite_volume.D_warp, initial: 1.0e-5, bounds: [1.0e-7, 1.0e-3]}\n";
+  const std::string good_measurements = "measurements:\n  - drape_coefficient: {value: 0.6}\n";
+  // An unknown top-level key.
+  EXPECT_NE(ErrorOf("unknown", head + good_parameter + good_measurements + "methd: bobyqa\n")
+                .find("fit.yaml:6:1: methd: unknown key"),
+            std::string::npos);
+  // Initial value outside the bounds, located at the value.
+  EXPECT_NE(ErrorOf("outside", head +
+                                   "  - {key: material.finite_volume.D_warp, initial: 1.0, "
+                                   "bounds: [1.0e-7, 1.0e-3]}\n" +
+                                   good_measurements)
+                .find("fit.yaml:3:51: parameters[0].initial: the initial value lies outside"),
+            std::string::npos);
+  // A key the scene does not have, located at the parameter's key.
+  EXPECT_NE(ErrorOf("badkey", head +
+                                  "  - {key: material.finite_volume.D_wrap, initial: 1.0e-5, "
+                                  "bounds: [1.0e-7, 1.0e-3]}\n" +
+                                  good_measurements)
+                .find("fit.yaml:3:11: parameters[0].key: not a numeric key of"),
+            std::string::npos);
+  // An unknown method, with a suggestion.
+  EXPECT_NE(ErrorOf("method", head + good_parameter + good_measurements + "method: bobyqua\n")
+                .find("fit.yaml:6:9: method: unknown value 'bobyqua'; did you mean 'bobyqa'?"),
+            std::string::npos);
+  // A bad row of a data file is located in the data file.
+  const std::string path = WriteFitFolder("badrow", head + good_parameter +
+                                                        "measurements:\n  - positions: {file: "
+                                                        "bad.csv}\n");
+  WriteTextFile(std::filesystem::path(path).parent_path().string() + "/bad.csv",
+                "id,x,y,z\n3,0.1,0.2,0.3\n4,0.1,abc,0.3\n");
+  std::string message;
+  try {
+    LoadFitFile(path);
+  } catch (const InputError& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find("bad.csv:3:7: expected a number"), std::string::npos) << message;
+  // A node id beyond the scene's nodes.
+  const std::string far = WriteFitFolder("farid", head + good_parameter +
+                                                      "measurements:\n  - positions: {file: "
+                                                      "far.csv}\n");
+  WriteTextFile(std::filesystem::path(far).parent_path().string() + "/far.csv",
+                "id,x,y,z\n3,0.1,0.2,0.3\n400,0.1,0.2,0.3\n");
+  try {
+    LoadFitFile(far);
+    message.clear();
+  } catch (const InputError& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find("far.csv:3:1: node id 400 is out of range"), std::string::npos) << message;
+  // Another specimen without measurements.
+  EXPECT_NE(
+      ErrorOf("specimen", head + good_parameter + good_measurements + "  - scene: other.yaml\n")
+          .find("fit.yaml:6:12: measurements[1].scene: another specimen needs its own"),
+      std::string::npos);
+}
+
+// Every example fit file of the repository loads (tests/configs_test.cc skips fit files).
+TEST(FitFileTest, LoadsEveryExampleFitFile) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SourcePath("configs/fit"))) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("fit", 0) != 0 || entry.path().extension() != ".yaml") continue;
+    EXPECT_NO_THROW(LoadFitFile(entry.path().string())) << name;
+    ++count;
+  }
+  EXPECT_GE(count, 5);
+}
+
+TEST(FitFileTest, CommandRejectsABadFitFileAndWritesNothing) {
+  const std::string path = WriteFitFolder("cli", R"(scene: base.yaml
+parameters:
+  - {key: material.finite_volume.D_warp, initial: -1, bounds: [1.0e-7, 1.0e-3], log: true}
+measurements:
+  - drape_coefficient: {value: 0.62}
+)");
+  const std::string out = std::filesystem::path(path).parent_path().string() + "/out";
+  std::ostringstream stdout_text, stderr_text;
+  const int status = RunCommand({"fit", path, "--out", out}, stdout_text, stderr_text);
+  EXPECT_EQ(status, kExitBadInput);
+  EXPECT_NE(stderr_text.str().find("fit.yaml:3:"), std::string::npos) << stderr_text.str();
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace drape::testing

@@ -1,0 +1,84 @@
+// `drape fit` end to end: the outputs fit.json, history.csv, sensitivity.csv, fit.png, report.md,
+// the progress lines, and the sensitivity table against a closed-form reference.
+#include "src/fit_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "src/cli.h"
+#include "tests/fit_test_support.h"
+
+namespace drape::testing {
+namespace {
+
+std::string ReadText(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(FitWriterTest, FitCommandWritesEveryOutput) {
+  const std::string folder = FitTempDir("writer");
+  const TrueSolve solved =
+      SolveTruth("configs/fit/sheet_springs.yaml", {"material.springs.structural=35"});
+  WriteNodePositions(solved.model, 0.0, 0, folder + "/nodes.csv");
+  WriteTextFile(folder + "/fit_cli.yaml",
+                "scene: " + SourcePath("configs/fit/sheet_springs.yaml") +
+                    "\nparameters:\n  - {key: material.springs.structural, initial: 20, bounds: "
+                    "[1, 1000], log: true}\n  - {key: material.springs.flexion, initial: 0.1, "
+                    "bounds: [0.001, 10], log: true}\nmeasurements:\n  - positions: {file: "
+                    "nodes.csv}\noutput: {directory: out}\n");
+  const std::string out = folder + "/result";
+  std::ostringstream stdout_text, stderr_text;
+  const int status =
+      RunCommand({"fit", folder + "/fit_cli.yaml", "--out", out, "--method", "implicit-lm"},
+                 stdout_text, stderr_text);
+  EXPECT_EQ(status, kExitConverged) << stderr_text.str();
+  for (const char* name : {"fit.json", "history.csv", "sensitivity.csv", "fit.png", "report.md"}) {
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + name)) << name;
+  }
+  const std::string json = ReadText(out + "/fit.json");
+  for (const char* key :
+       {"\"parameters\"", "\"standard_errors\"", "\"correlation\"", "\"objective\"",
+        "\"converged\": true", "\"evaluations\"", "\"material.springs.structural\": 35"}) {
+    EXPECT_NE(json.find(key), std::string::npos) << key << "\n" << json;
+  }
+  // One history row per evaluation, one progress line per evaluation.
+  const std::string history = ReadText(out + "/history.csv");
+  const int rows = static_cast<int>(std::count(history.begin(), history.end(), '\n')) - 1;
+  const std::string progress = stderr_text.str();
+  EXPECT_EQ(static_cast<int>(std::count(progress.begin(), progress.end(), '\n')), rows);
+  EXPECT_NE(history.find("evaluation,time_s,objective"), std::string::npos);
+  EXPECT_NE(ReadText(out + "/report.md").find("## Identifiability"), std::string::npos);
+}
+
+// A scalar measurement that is linear in a linear parameter: a drape coefficient-like residual is
+// not available in closed form, so the table is checked on positions of a model whose Jacobian is
+// given: ∂m/∂θ = J σ / (√w dθ/du).
+TEST(FitWriterTest, SensitivityUndoesTheScalingOfTheResiduals) {
+  const std::string folder = FitTempDir("sensitivity");
+  WriteTextFile(folder + "/nodes.csv", "id,x,y,z\n1,0,0,0\n");
+  WriteTextFile(folder + "/fit_s.yaml",
+                "scene: " + SourcePath("configs/fit/sheet_springs.yaml") +
+                    "\nparameters:\n  - {key: material.springs.structural, initial: 20, bounds: "
+                    "[0, 100]}\nmeasurements:\n  - positions: {file: nodes.csv, sigma: 0.002, "
+                    "weight: 4}\n");
+  FitProblem problem(LoadFitFile(folder + "/fit_s.yaml"));
+  FitResult result;
+  result.parameters = {20.0};
+  result.jacobian = Eigen::MatrixXd::Zero(3, 1);
+  result.jacobian(2, 0) = 6.0;  // residual units per u, u = θ / 100
+  const std::vector<Sensitivity> table = SensitivityTable(problem, result);
+  ASSERT_EQ(table.size(), 1u);
+  // RMS over 3 components: 6/√3; × σ/√w = 0.001; / (dθ/du = 100).
+  EXPECT_NEAR(table[0].per_parameter, 6.0 / std::sqrt(3.0) * 0.001 / 100.0, 1e-15);
+  EXPECT_NEAR(table[0].per_log_parameter, table[0].per_parameter * 20.0, 1e-15);
+  EXPECT_EQ(table[0].unit, "m");
+}
+
+}  // namespace
+}  // namespace drape::testing
