@@ -2,9 +2,13 @@
 //
 // Each iteration assembles the energy, its gradient and its Hessian from the terms' nested-Jet
 // derivatives (FreeHessian), in two versions: the true Hessian H and H₊, whose every term is made
-// positive semidefinite by replacing its negative eigenvalues with their magnitudes (clamping
-// them to zero, the usual projection, leaves a compressed spring no sideways curvature, and the
-// steps then crawl through the slack, wrinkled parts of a hanging sheet; see docs/benchmarks.md).
+// positive semidefinite. Far from equilibrium (relative residual above 1e-4) H₊ replaces a term's
+// negative eigenvalues with their magnitudes: clamping them to zero, the usual projection, leaves
+// a compressed spring no sideways curvature, and the steps then crawl through the slack, wrinkled
+// parts of a hanging sheet (docs/benchmarks.md). Near equilibrium it clamps them: there the
+// energy is flat to rounding, steps are judged by the residual force alone, and the magnitudes
+// can hold the iterates at a saddle (configs/fit/drape_fv.yaml with D_warp = 4e-5 stalled at a
+// residual of 5e-7 with magnitudes throughout).
 // The step p solves (A + λ D) p = −g with CHOLMOD (symbolic
 // analysis once), where
 //   A = H when H + λD factorises (only H gives quadratic convergence), else H₊ (H₊ ≠ H where a
@@ -27,6 +31,7 @@
 // factorisation. Near the end,
 // where the energy changes by less than its own rounding (64 ulps of Σ|term energy|), it cannot
 // judge a step; there the step is accepted if it lowers the norm of the free residual force.
+#include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -38,6 +43,7 @@
 #include "src/equilibrium.h"
 #include "src/solvers.h"
 #include "src/sparse_hessian.h"
+#include "src/stability.h"
 
 namespace drape {
 
@@ -47,9 +53,11 @@ struct NewtonSettings {
   double regularization = 1e-4;  // μ at the start (dimensionless)
   double min_regularization = 1e-12;
   double max_regularization = 1e16;
-  int max_line_search = 30;         // energy evaluations per step
-  int max_expansions = 4;           // doublings of an accepted full step
-  bool absolute_projection = true;  // H₊: |negative eigenvalues| (else clamped to zero)
+  int max_line_search = 30;  // energy evaluations per step
+  int max_expansions = 4;    // doublings of an accepted full step
+  // H₊ takes the magnitudes of negative eigenvalues above this relative residual, and clamps
+  // them to zero below it (0: always magnitudes, ∞: always clamped).
+  double absolute_projection_above = 1e-4;
   // Try the unprojected H first below this relative residual (by default always; after H fails to
   // factorise, H₊ is used until the residual has fallen tenfold).
   double exact_hessian_residual = std::numeric_limits<double>::infinity();
@@ -69,9 +77,7 @@ NewtonSettings ReadSettings(const std::map<std::string, double>& options) {
   double max_expansions = settings.max_expansions;
   read("max_expansions", &max_expansions);
   settings.max_expansions = std::max(0, static_cast<int>(max_expansions));
-  double absolute = settings.absolute_projection ? 1.0 : 0.0;
-  read("absolute_projection", &absolute);
-  settings.absolute_projection = absolute != 0.0;
+  read("absolute_projection_above", &settings.absolute_projection_above);
   return settings;
 }
 
@@ -90,6 +96,7 @@ class Stopwatch {
 struct Counters {
   int factorizations = 0, failed_factorizations = 0, energy_evaluations = 0;
   int exact_hessian_steps = 0, line_search_failures = 0, projected_terms = 0;
+  int saddle_escapes = 0;
   double assembly_s = 0.0, factorization_s = 0.0, solve_s = 0.0, line_search_s = 0.0;
 };
 
@@ -122,6 +129,18 @@ double StiffnessScale(const FreeHessian& hessian) {
   return 1.0;
 }
 
+// The diagonal of the bounding box of the model's nodes, m (1 if they coincide).
+double BoundingBoxDiagonal(const Model& model) {
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
+  for (size_t k = 0; k + 2 < model.positions.size(); k += 3) {
+    const Eigen::Vector3d p(model.positions[k], model.positions[k + 1], model.positions[k + 2]);
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  const double diagonal = (high - low).norm();
+  return diagonal > 0.0 && std::isfinite(diagonal) ? diagonal : 1.0;
+}
+
 class NewtonIteration {
  public:
   NewtonIteration(Model& model, const SolverOptions& options, SolverSummary* summary)
@@ -132,10 +151,8 @@ class NewtonIteration {
         hessian_(model, dofs_),
         cholesky_(hessian_),
         weights_(PseudoTimeWeights(model, dofs_)),
-        mu_(settings_.regularization) {
-    hessian_.set_eigenvalue_filter(settings_.absolute_projection ? EigenvalueFilter::kAbsolute
-                                                                 : EigenvalueFilter::kClamp);
-  }
+        mu_(settings_.regularization),
+        model_size_(BoundingBoxDiagonal(model)) {}
 
   void Run();
   const Counters& counters() const { return counters_; }
@@ -147,6 +164,7 @@ class NewtonIteration {
   void AdaptRegularization();
   bool ComputeStep(bool exact, double residual, std::vector<double>* step);
   bool LineSearch(const std::vector<double>& step, double* alpha);
+  bool EscapeSaddle();
   void Expand(const std::vector<double>& step, double energy, double* alpha);
   void SetTrial(const std::vector<double>& step, double alpha, std::vector<double>* trial) const;
 
@@ -158,9 +176,11 @@ class NewtonIteration {
   SparseCholesky cholesky_;
   const std::vector<double> weights_;
   double mu_;
+  const double model_size_;
   double last_lambda_ = 0.0;
   double full_step_gain_ = 0.0;
   double growth_ = 2.0;
+  double last_residual_ = std::numeric_limits<double>::infinity();
   double WeightedSquaredNorm(const std::vector<double>& v) const {
     double sum = 0.0;
     for (size_t k = 0; k < v.size(); ++k) sum += v[k] * v[k] * weights_[k];
@@ -178,6 +198,9 @@ void NewtonIteration::Run() {
     bool evaluable;
     {
       Stopwatch watch(&counters_.assembly_s);
+      hessian_.set_eigenvalue_filter(last_residual_ > settings_.absolute_projection_above
+                                         ? EigenvalueFilter::kAbsolute
+                                         : EigenvalueFilter::kClamp);
       evaluable = hessian_.Assemble(model_.positions.data(), true, &assembly_, &gradient_);
     }
     if (!evaluable) {
@@ -186,6 +209,7 @@ void NewtonIteration::Run() {
     }
     counters_.projected_terms = assembly_.projected_terms;
     const double residual = RelativeResidual(model_, gradient_);
+    last_residual_ = residual;
     if (monitor_.Record(iteration, assembly_.energy, residual)) return;
     if (iteration == 0) stiffness_scale_ = StiffnessScale(hessian_);
     if (!Step(residual)) return;
@@ -213,6 +237,7 @@ bool NewtonIteration::Step(double residual) {
     }
     mu_ = std::max(mu_ * 10.0, 1e-6);
     if (mu_ > settings_.max_regularization) {
+      if (EscapeSaddle()) return true;
       monitor_.Stop("no step decreases the energy (regularisation limit reached)");
       return false;
     }
@@ -340,6 +365,39 @@ void NewtonIteration::Expand(const std::vector<double>& step, double energy, dou
   }
 }
 
+// Near a saddle no step of (A + λD) p = −g lowers the energy, but a step along the true Hessian's
+// most negative eigenvector v does. Tries ±t v for t from a tenth of the model's size down to
+// 1e-7 of it and keeps the lowest energy; then Newton resumes with μ at its initial value.
+bool NewtonIteration::EscapeSaddle() {
+  constexpr int kMaxEscapes = 20;
+  if (counters_.saddle_escapes >= kMaxEscapes) return false;
+  double eigenvalue;
+  std::vector<double> direction;
+  if (!NegativeCurvature(hessian_, &eigenvalue, &direction)) return false;
+  const double rounding =
+      64.0 * std::numeric_limits<double>::epsilon() * assembly_.energy_magnitude;
+  double best_energy = assembly_.energy - rounding;
+  std::vector<double> best;
+  trial_ = model_.positions;
+  for (double t = 0.1 * model_size_; t > 1e-7 * model_size_; t *= 0.3) {
+    for (double sign : {1.0, -1.0}) {
+      SetTrial(direction, sign * t, &trial_);
+      double energy;
+      ++counters_.energy_evaluations;
+      if (EvaluateEnergy(model_, trial_.data(), &energy) && energy < best_energy) {
+        best_energy = energy;
+        best = trial_;
+      }
+    }
+  }
+  if (best.empty()) return false;
+  model_.positions.swap(best);
+  ++counters_.saddle_escapes;
+  mu_ = settings_.regularization;
+  exact_blocked_above_ = std::numeric_limits<double>::infinity();
+  return true;
+}
+
 class NewtonSolver : public Solver {
  public:
   SolverSummary Solve(Model& model, const SolverOptions& options) const override {
@@ -353,6 +411,7 @@ class NewtonSolver : public Solver {
         {"failed_factorizations", c.failed_factorizations},
         {"energy_evaluations", c.energy_evaluations},
         {"exact_hessian_steps", c.exact_hessian_steps},
+        {"saddle_escapes", c.saddle_escapes},
         {"line_search_failures", c.line_search_failures},
         {"projected_terms_last", c.projected_terms},
         {"factor_nonzeros", newton.factor_nonzeros()},

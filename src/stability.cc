@@ -38,11 +38,15 @@ bool PositiveDefiniteWithShift(const FreeHessian& hessian, SparseCholesky* chole
   return cholesky->Factorize(hessian.values(), &diagonal);
 }
 
-// Rayleigh quotient of H at the vector to which inverse iteration with the current factor of
+// Rayleigh quotient of H at the vector v to which inverse iteration with the current factor of
 // H + σ I converges: an upper bound of λ_min that is close to it when the gap is clear.
-double InverseIterationEstimate(const FreeHessian& hessian, SparseCholesky* cholesky) {
+double InverseIterationEstimate(const FreeHessian& hessian, SparseCholesky* cholesky,
+                                std::vector<double>* vector = nullptr) {
   const int n = hessian.size();
-  std::vector<double> v(n), w(n);
+  std::vector<double> local;
+  std::vector<double>& v = vector ? *vector : local;
+  v.resize(n);
+  std::vector<double> w(n);
   for (int k = 0; k < n; ++k) v[k] = 1.0 + 0.1 * std::sin(1.7 * k);  // not orthogonal to much
   for (int step = 0; step < kInverseIterations; ++step) {
     cholesky->Solve(v, &w);
@@ -53,8 +57,9 @@ double InverseIterationEstimate(const FreeHessian& hessian, SparseCholesky* chol
   return std::inner_product(v.begin(), v.end(), w.begin(), 0.0);
 }
 
-// λ_min of H when H + τ I is not positive definite.
-double MostNegativeEigenvalue(const FreeHessian& hessian, SparseCholesky* cholesky, double tau) {
+// λ_min of H when H + τ I is not positive definite, and (if `vector`) its eigenvector, unit norm.
+double MostNegativeEigenvalue(const FreeHessian& hessian, SparseCholesky* cholesky, double tau,
+                              std::vector<double>* vector = nullptr) {
   double low = tau, high = 10.0 * tau;
   while (!PositiveDefiniteWithShift(hessian, cholesky, high)) {
     low = high;
@@ -70,11 +75,21 @@ double MostNegativeEigenvalue(const FreeHessian& hessian, SparseCholesky* choles
     }
   }
   PositiveDefiniteWithShift(hessian, cholesky, high);
-  const double estimate = InverseIterationEstimate(hessian, cholesky);
+  const double estimate = InverseIterationEstimate(hessian, cholesky, vector);
   return std::min(-low, std::max(-high, estimate));
 }
 
 }  // namespace
+
+bool NegativeCurvature(const FreeHessian& hessian, double* eigenvalue,
+                       std::vector<double>* direction) {
+  SparseCholesky cholesky(hessian);
+  const double scale = MeanAbsoluteDiagonal(hessian);
+  const double tau = kNeutralTolerance * (scale > 0.0 ? scale : 1.0);
+  if (PositiveDefiniteWithShift(hessian, &cholesky, tau)) return false;
+  *eigenvalue = MostNegativeEigenvalue(hessian, &cholesky, tau, direction);
+  return std::isfinite(*eigenvalue);
+}
 
 Stability AnalyseStability(const Model& model, const double* positions) {
   Stability stability;

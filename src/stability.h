@@ -3,7 +3,10 @@
 #ifndef DRAPE_SRC_STABILITY_H_
 #define DRAPE_SRC_STABILITY_H_
 
+#include <vector>
+
 #include "src/model.h"
+#include "src/sparse_hessian.h"
 
 namespace drape {
 
@@ -14,6 +17,12 @@ struct Stability {
 };
 
 Stability AnalyseStability(const Model& model, const double* positions);
+
+// For the assembled true Hessian `hessian` (its values()): false if it is positive definite (to
+// the same tolerance as AnalyseStability); else true, with an estimate of its most negative
+// eigenvalue and of the corresponding eigenvector (unit norm, over the free coordinates).
+bool NegativeCurvature(const FreeHessian& hessian, double* eigenvalue,
+                       std::vector<double>* direction);
 
 }  // namespace drape
 

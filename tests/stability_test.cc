@@ -5,8 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
+#include <vector>
 
+#include "src/equilibrium.h"
 #include "src/solvers.h"
+#include "src/sparse_hessian.h"
 #include "tests/hand_built_models.h"
 
 namespace drape {
@@ -53,6 +57,49 @@ TEST(Stability, AStretchedStraightChainIsStable) {
   spec.gravity = {0.0, 0.0, 0.0};
   const Model model = Chain(spec);
   EXPECT_TRUE(AnalyseStability(model, model.positions.data()).stable);
+}
+
+TEST(Stability, NegativeCurvatureGivesTheBucklingModeOfACompressedChain) {
+  ChainSpec spec;  // the compressed chain above: λ_min = (T/l)(2 + 2 cos(π/N))
+  spec.nodes = 11;
+  spec.length = 0.8;
+  spec.rest_length = 0.1;
+  spec.gravity = {0.0, 0.0, 0.0};
+  const Model model = Chain(spec);
+  const double l = 0.08, tension = spec.stiffness * (l - spec.rest_length);
+  const double expected = tension / l * (2.0 + 2.0 * std::cos(M_PI / 10.0));
+  const DofMap dofs(model);
+  FreeHessian hessian(model, dofs);
+  FreeHessian::Assembly assembly;
+  std::vector<double> gradient;
+  ASSERT_TRUE(hessian.Assemble(model.positions.data(), false, &assembly, &gradient));
+  double eigenvalue = 0.0;
+  std::vector<double> v;
+  ASSERT_TRUE(NegativeCurvature(hessian, &eigenvalue, &v));
+  EXPECT_NEAR(eigenvalue, expected, 0.05 * std::abs(expected));
+  ASSERT_EQ(v.size(), static_cast<size_t>(hessian.size()));
+  EXPECT_NEAR(std::inner_product(v.begin(), v.end(), v.begin(), 0.0), 1.0, 1e-12);
+  std::vector<double> hv(v.size());  // H v = λ v: an eigenvector of that eigenvalue
+  hessian.Multiply(hessian.values(), v.data(), hv.data());
+  double defect = 0.0;
+  for (size_t k = 0; k < v.size(); ++k) defect += std::pow(hv[k] - eigenvalue * v[k], 2);
+  EXPECT_LT(std::sqrt(defect), 0.05 * std::abs(expected));
+}
+
+TEST(Stability, NegativeCurvatureIsFalseForAPositiveDefiniteHessian) {
+  ChainSpec spec;  // stretched
+  spec.length = 1.2;
+  spec.rest_length = 0.1;
+  spec.gravity = {0.0, 0.0, 0.0};
+  const Model model = Chain(spec);
+  const DofMap dofs(model);
+  FreeHessian hessian(model, dofs);
+  FreeHessian::Assembly assembly;
+  std::vector<double> gradient;
+  ASSERT_TRUE(hessian.Assemble(model.positions.data(), false, &assembly, &gradient));
+  double eigenvalue = 0.0;
+  std::vector<double> v;
+  EXPECT_FALSE(NegativeCurvature(hessian, &eigenvalue, &v));
 }
 
 TEST(Stability, NothingFreeIsTriviallyStable) {
