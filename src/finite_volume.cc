@@ -35,17 +35,43 @@ void CheckMaterial(const FiniteVolumeSpec& spec) {
   }
 }
 
-void CheckGrid(const FiniteVolumeSpec& spec, const Mesh& mesh, const Model& model) {
-  const int n = static_cast<int>(mesh.nodes.size());
-  const bool grid = mesh.nu > 0 && mesh.nv > 0 && mesh.nu * mesh.nv == n &&
-                    static_cast<int>(mesh.area.size()) == n && model.num_nodes == n;
-  bool has_area = grid;
-  for (int k = 0; grid && k < n; ++k) has_area = has_area && mesh.area[k] > 0.0;
-  if (!grid || !has_area) {
-    throw InputError(spec.where,
-                     "the finite_volume material needs a grid mesh with area (mesh.kind: grid; "
-                     "a 2-D strip is a grid with nodes: [n, 1] and size: [length, width])");
+// Node ids by lattice position: (i, j) in [0, nu) × [0, nv) from Mesh::grid_index, -1 where the
+// lattice has no node (outside a circle mesh's disc, or beyond the edge).
+class Lattice {
+ public:
+  Lattice(int nu, int nv) : nu_(nu), nv_(nv), ids_(static_cast<size_t>(nu) * nv, -1) {}
+
+  bool InRange(int i, int j) const { return i >= 0 && j >= 0 && i < nu_ && j < nv_; }
+  int At(int i, int j) const { return InRange(i, j) ? ids_[Index(i, j)] : -1; }
+  // False if (i, j) is out of range or taken already.
+  bool Set(int i, int j, int id) {
+    if (!InRange(i, j) || ids_[Index(i, j)] >= 0) return false;
+    ids_[Index(i, j)] = id;
+    return true;
   }
+
+ private:
+  size_t Index(int i, int j) const { return static_cast<size_t>(j) * nu_ + i; }
+  int nu_, nv_;
+  std::vector<int> ids_;
+};
+
+// The lattice of a grid or circle mesh whose nodes all carry area; throws InputError otherwise.
+Lattice CheckedLattice(const FiniteVolumeSpec& spec, const Mesh& mesh, const Model& model) {
+  const int n = static_cast<int>(mesh.nodes.size());
+  bool ok = mesh.nu > 0 && mesh.nv > 0 && static_cast<int>(mesh.grid_index.size()) == n &&
+            static_cast<int>(mesh.area.size()) == n && model.num_nodes == n;
+  Lattice lattice(ok ? mesh.nu : 0, ok ? mesh.nv : 0);
+  for (int k = 0; ok && k < n; ++k) {
+    ok = mesh.area[k] > 0.0 && lattice.Set(mesh.grid_index[k][0], mesh.grid_index[k][1], k);
+  }
+  if (!ok) {
+    throw InputError(spec.where,
+                     "the finite_volume material needs a grid or circle mesh with area "
+                     "(mesh.kind: grid or circle; a 2-D strip is a grid with nodes: [n, 1] and "
+                     "size: [length, width])");
+  }
+  return lattice;
 }
 
 double RestDistance(const Mesh& mesh, int a, int b) {
@@ -80,15 +106,14 @@ void AddStrip(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model) {
   }
 }
 
-// Neighbour ids of node (i, j), -1 beyond the edge.
+// Neighbour ids of node (i, j) along the warp (W, E: i ∓ 1) and weft (S, N: j ∓ 1), -1 where
+// the lattice has no node (beyond the edge, outside a circle's disc).
 struct Neighbours {
   int w, e, s, n;
 };
 
-Neighbours NeighboursOf(const Mesh& mesh, int i, int j) {
-  const int id = j * mesh.nu + i;
-  return {i > 0 ? id - 1 : -1, i + 1 < mesh.nu ? id + 1 : -1, j > 0 ? id - mesh.nu : -1,
-          j + 1 < mesh.nv ? id + mesh.nu : -1};
+Neighbours NeighboursOf(const Lattice& lattice, int i, int j) {
+  return {lattice.At(i - 1, j), lattice.At(i + 1, j), lattice.At(i, j - 1), lattice.At(i, j + 1)};
 }
 
 void AddBending(const FiniteVolumeSpec& spec, const Mesh& mesh, int p, const Neighbours& nb,
@@ -129,19 +154,17 @@ void AddMembrane(const MembraneRigidities& e, const Mesh& mesh, int p, const Nei
 
 void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model) {
   CheckMaterial(spec);
-  CheckGrid(spec, mesh, *model);
-  if (mesh.nu == 1 || mesh.nv == 1) {
+  const Lattice lattice = CheckedLattice(spec, mesh, *model);
+  const int n = static_cast<int>(mesh.nodes.size());
+  if ((mesh.nu == 1 || mesh.nv == 1) && mesh.nu * mesh.nv == n) {
     AddStrip(spec, mesh, model);
     return;
   }
   const MembraneRigidities rigidities = PlaneStressRigidities(spec);
-  for (int j = 0; j < mesh.nv; ++j) {
-    for (int i = 0; i < mesh.nu; ++i) {
-      const int p = j * mesh.nu + i;
-      const Neighbours nb = NeighboursOf(mesh, i, j);
-      AddBending(spec, mesh, p, nb, model);
-      AddMembrane(rigidities, mesh, p, nb, model);
-    }
+  for (int p = 0; p < n; ++p) {  // a full grid's ids run row by row: p = j*nu + i
+    const Neighbours nb = NeighboursOf(lattice, mesh.grid_index[p][0], mesh.grid_index[p][1]);
+    AddBending(spec, mesh, p, nb, model);
+    AddMembrane(rigidities, mesh, p, nb, model);
   }
 }
 

@@ -10,9 +10,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
+#include "src/fabric_parameters.h"
 #include "src/solver.h"
 #include "src/yaml_overrides.h"
 #include "src/yaml_reader.h"
@@ -305,17 +307,107 @@ SpringsSpec ReadSprings(const YamlValue& value) {
   return springs;
 }
 
-FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value) {
-  const YamlMap map(value,
-                    {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft", "D_12"});
+// One model parameter that may be given in SI under its own key or converted from a measurement
+// (finite_volume.kes.*, finite_volume.bending_length.*): exactly one way must be used.
+struct ParameterWay {
+  std::string key;                 // as the user writes it below material.finite_volume
+  std::optional<YamlValue> value;  // the given value, if any
+  std::function<double(const YamlValue&)> convert;
+};
+
+double ReadParameter(const YamlMap& map, const std::string& key, const std::string& unit,
+                     const std::vector<ParameterWay>& measured) {
+  std::vector<ParameterWay> ways = {{key, map.Find(key), ReadPositive}};
+  ways.insert(ways.end(), measured.begin(), measured.end());
+  const ParameterWay* given = nullptr;
+  for (const auto& way : ways) {
+    if (!way.value) continue;
+    if (given) {
+      Fail(*way.value, "give " + key + " in one way only: '" + given->key + "' is given too");
+    }
+    given = &way;
+  }
+  if (!given) {
+    std::string names;
+    for (size_t k = 1; k < ways.size(); ++k) names += " or " + ways[k].key;
+    Location where = map.value().where;
+    where.key = ChildKey(where.key, key);
+    throw InputError(
+        where, "required key '" + key + "' is missing: give " + key + " (" + unit + ")" + names);
+  }
+  return given->convert(*given->value);
+}
+
+// finite_volume.kes: KES-FB measurements in their own units (src/fabric_parameters.h).
+const std::vector<std::string>& KesKeys() {
+  static const std::vector<std::string> keys = {"B_warp",   "B_weft",  "G",       "W", "EMT_warp",
+                                                "EMT_weft", "LT_warp", "LT_weft", "Fm"};
+  return keys;
+}
+
+// The tensile rigidity of one direction from kes.EMT_<direction> (and LT_<direction>, Fm).
+std::optional<YamlValue> CheckedEmt(const YamlMap& kes, const std::string& direction) {
+  const auto emt = kes.Find("EMT_" + direction);
+  const auto lt = kes.Find("LT_" + direction);
+  if (lt && !emt) Fail(*lt, "LT_" + direction + " needs EMT_" + direction + " (%) as well");
+  return emt;
+}
+
+double KesTensile(const YamlMap& kes, const std::string& direction, const YamlValue& emt) {
+  const auto lt = kes.Find("LT_" + direction);
+  const auto fm = kes.Find("Fm");
+  return KesTensileRigidity(ReadPositive(emt), lt ? ReadPositive(*lt) : 1.0,
+                            fm ? ReadPositive(*fm) : kKesStandardMaximumLoad);
+}
+
+// The areal density that Peirce's bending length needs: material.density or kes.W.
+struct ArealDensity {
+  std::optional<double> value;  // kg/m²
+  std::string missing;          // why there is none
+};
+
+FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& density) {
+  const YamlMap map(value, {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft",
+                            "D_12", "kes", "bending_length"});
   FiniteVolumeSpec fv;
   fv.present = true;
   fv.where = value.where;
-  fv.E_warp = ReadPositive(map.Get("E_warp"));
-  fv.E_weft = ReadPositive(map.Get("E_weft"));
-  fv.G = ReadPositive(map.Get("G"));
-  fv.D_warp = ReadPositive(map.Get("D_warp"));
-  fv.D_weft = ReadPositive(map.Get("D_weft"));
+  std::optional<YamlMap> kes, peirce;
+  if (const auto v = map.Find("kes")) kes.emplace(*v, KesKeys());
+  if (const auto v = map.Find("bending_length")) {
+    if (v->get().IsScalar()) {
+      Fail(*v, "give the bending length per direction: {warp: cm, weft: cm}");
+    }
+    peirce.emplace(*v, std::vector<std::string>{"warp", "weft"});
+  }
+  auto find = [](const std::optional<YamlMap>& block, const std::string& key) {
+    return block ? block->Find(key) : std::nullopt;
+  };
+  const auto kes_rigidity = [](const YamlValue& v) { return KesBendingRigidity(ReadPositive(v)); };
+  const auto peirce_rigidity = [&density](const YamlValue& v) {
+    const double length = ReadPositive(v);
+    if (!density.value) Fail(v, "a bending length needs the areal density: " + density.missing);
+    return PeirceBendingRigidity(length, *density.value);
+  };
+  const auto kes_way = [&](const std::string& direction) {
+    return ParameterWay{
+        "kes.EMT_" + direction, kes ? CheckedEmt(*kes, direction) : std::nullopt,
+        [&kes, direction](const YamlValue& v) { return KesTensile(*kes, direction, v); }};
+  };
+  fv.E_warp = ReadParameter(map, "E_warp", "N/m", {kes_way("warp")});
+  fv.E_weft = ReadParameter(map, "E_weft", "N/m", {kes_way("weft")});
+  fv.G = ReadParameter(map, "G", "N/m", {{"kes.G", find(kes, "G"), [](const YamlValue& v) {
+                                            return KesShearRigidity(ReadPositive(v));
+                                          }}});
+  fv.D_warp = ReadParameter(map, "D_warp", "N·m",
+                            {{"kes.B_warp", find(kes, "B_warp"), kes_rigidity},
+                             {"bending_length.warp", find(peirce, "warp"), peirce_rigidity}});
+  fv.D_weft = ReadParameter(map, "D_weft", "N·m",
+                            {{"kes.B_weft", find(kes, "B_weft"), kes_rigidity},
+                             {"bending_length.weft", find(peirce, "weft"), peirce_rigidity}});
+  if (const auto fm = find(kes, "Fm"); fm && !kes->Has("EMT_warp") && !kes->Has("EMT_weft")) {
+    Fail(*fm, "Fm (gf/cm) applies only with EMT_warp or EMT_weft");
+  }
   if (const auto v = map.Find("nu_warp")) fv.nu_warp = ReadNumber(*v);
   if (const auto v = map.Find("nu_weft")) fv.nu_weft = ReadNumber(*v);
   if (!(fv.nu_warp * fv.nu_weft < 1.0)) {
@@ -357,6 +449,32 @@ void ReadMass(const YamlMap& map, MaterialSpec* material) {
   }
 }
 
+// The mass of a finite-volume material: material.density / node_mass / total_mass, or the KES
+// weight finite_volume.kes.W (mg/cm²) instead, never both. Returns the areal density that a
+// bending length is converted with.
+ArealDensity ReadFiniteVolumeMass(const YamlMap& map, MaterialSpec* material) {
+  std::optional<YamlValue> weight;
+  if (const auto fv = map.Find("finite_volume"); fv && fv->get().IsMap()) {
+    if (const auto kes = YamlMap(*fv).Find("kes"); kes && kes->get().IsMap()) {
+      weight = YamlMap(*kes).Find("W");
+    }
+  }
+  if (!weight) {
+    ReadMass(map, material);
+    if (material->mass_kind == MaterialSpec::MassKind::kDensity) return {material->mass_value, ""};
+    return {std::nullopt, "give material.density (kg/m²) or finite_volume.kes.W (mg/cm²)"};
+  }
+  for (const char* key : {"density", "node_mass", "total_mass"}) {
+    if (map.Has(key)) {
+      throw InputError(map.KeyLocation(key), std::string("give the mass in one way only: '") + key +
+                                                 "' and finite_volume.kes.W are both given");
+    }
+  }
+  material->mass_kind = MaterialSpec::MassKind::kDensity;
+  material->mass_value = KesArealDensity(ReadPositive(*weight));
+  return {material->mass_value, ""};
+}
+
 MaterialSpec ReadMaterial(const YamlValue& value) {
   const YamlMap map(value,
                     {"model", "density", "node_mass", "total_mass", "springs", "finite_volume"});
@@ -365,10 +483,10 @@ MaterialSpec ReadMaterial(const YamlValue& value) {
   if (const auto model = map.Find("model")) {
     material.model = ReadChoice(*model, {"springs", "finite_volume"});
   }
-  ReadMass(map, &material);
   const bool springs = material.model == "springs";
   const std::string own = springs ? "springs" : "finite_volume";
   const std::string other = springs ? "finite_volume" : "springs";
+  if (springs) ReadMass(map, &material);
   if (map.Has(other)) {
     throw InputError(map.KeyLocation(other), "'" + other +
                                                  "' applies only when material.model "
@@ -378,7 +496,8 @@ MaterialSpec ReadMaterial(const YamlValue& value) {
   if (springs) {
     material.springs = ReadSprings(map.Get("springs"));
   } else {
-    material.finite_volume = ReadFiniteVolume(map.Get("finite_volume"));
+    const ArealDensity density = ReadFiniteVolumeMass(map, &material);
+    material.finite_volume = ReadFiniteVolume(map.Get("finite_volume"), density);
   }
   return material;
 }

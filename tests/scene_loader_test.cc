@@ -677,5 +677,130 @@ TEST_F(SceneLoaderTest, EmptyFileMissesTheMesh) {
   EXPECT_EQ(Error(""), ScenePath() + ":1:1: mesh: required key 'mesh' is missing");
 }
 
+// ------------------------------------------------------- fabric measurements (kes, Peirce)
+
+// A finite-volume scene: lines 9 and 10 hold D_warp and D_weft.
+constexpr char kFiniteVolume[] = R"(mesh: {nodes: [3, 3]}
+material:
+  model: finite_volume
+  density: 0.12
+  finite_volume:
+    E_warp: 500
+    E_weft: 300
+    G: 5
+    D_warp: 1.0e-5
+    D_weft: 1.0e-5
+)";
+
+// kFiniteVolume with lines first..last (1-based) replaced by `replacement` (empty: removed).
+std::string FiniteVolumeWith(int first, int last, const std::string& replacement,
+                             std::string text = kFiniteVolume) {
+  size_t begin = 0;
+  for (int line = 1; line < first; ++line) begin = text.find('\n', begin) + 1;
+  size_t end = begin;
+  for (int line = first; line <= last; ++line) end = text.find('\n', end) + 1;
+  return text.replace(begin, end - begin, replacement.empty() ? "" : replacement + "\n");
+}
+
+// Each SI value worked out by hand (1 gf = 9.80665e-3 N): W 12 mg/cm² → 0.12 kg/m²;
+// B 0.12 gf·cm → 0.12 × 9.80665e-5 = 1.176798e-5 N·m; bending length 2 cm with ρ = 0.12 kg/m² →
+// 0.12 × 9.80665 × 0.02³ = 9.414384e-6 N·m; G 0.9 gf/(cm·deg) → 0.9 × 0.980665 × 180/π =
+// 50.56916 N/m; EMT 4 %, LT 0.65 at 500 gf/cm = 490.3325 N/m → 0.65 × 490.3325/0.04 =
+// 7967.903 N/m; EMT 7 % without LT (secant) → 490.3325/0.07 = 7004.750 N/m.
+TEST_F(SceneLoaderTest, KesAndBendingLengthGiveTheSiParameters) {
+  const Scene scene = Load(R"(mesh: {kind: circle, radius: 0.1, spacing: 0.02}
+material:
+  model: finite_volume
+  finite_volume:
+    kes: {W: 12, B_warp: 0.12, G: 0.9, EMT_warp: 4, LT_warp: 0.65, EMT_weft: 7}
+    bending_length: {weft: 2.0}
+    nu_warp: 0.1
+)");
+  const FiniteVolumeSpec& fv = scene.material.finite_volume;
+  EXPECT_EQ(scene.material.mass_kind, MaterialSpec::MassKind::kDensity);
+  EXPECT_NEAR(scene.material.mass_value, 0.12, 1e-15);
+  EXPECT_NEAR(fv.D_warp, 1.176798e-5, 1e-11);
+  EXPECT_NEAR(fv.D_weft, 9.414384e-6, 1e-12);
+  EXPECT_NEAR(fv.G, 50.56916, 1e-4);
+  EXPECT_NEAR(fv.E_warp, 7967.903, 1e-3);
+  EXPECT_NEAR(fv.E_weft, 7004.750, 1e-3);
+  EXPECT_DOUBLE_EQ(fv.nu_warp, 0.1);
+}
+
+// A bending length uses material.density when there is no kes.W; Fm changes the KES load.
+TEST_F(SceneLoaderTest, BendingLengthUsesTheMaterialDensity) {
+  const Scene scene =
+      Load(FiniteVolumeWith(6, 10,
+                            "    kes: {EMT_warp: 4, EMT_weft: 4, Fm: 50}\n    G: 5\n"
+                            "    bending_length: {warp: 2.0, weft: 1.0}"));
+  const FiniteVolumeSpec& fv = scene.material.finite_volume;
+  EXPECT_NEAR(fv.D_warp, 9.414384e-6, 1e-12);
+  EXPECT_NEAR(fv.D_weft, 9.414384e-6 / 8, 1e-12);
+  EXPECT_NEAR(fv.E_warp, 1225.831, 1e-3);  // 50 gf/cm = 49.03325 N/m over 0.04
+}
+
+std::vector<BadScene> FabricParameterBadScenes() {
+  return {
+      {"DirectAndKesBending",
+       FiniteVolumeWith(10, 10, "    D_weft: 1.0e-5\n    kes: {B_weft: 0.1}"),
+       "11:19: material.finite_volume.kes.B_weft",
+       "give D_weft in one way only: 'D_weft' is given too"},
+      {"KesAndPeirceBending",
+       FiniteVolumeWith(9, 10, "    kes: {B_warp: 0.1}\n    bending_length: {warp: 2, weft: 2}"),
+       "10:28: material.finite_volume.bending_length.warp",
+       "give D_warp in one way only: 'kes.B_warp' is given too"},
+      {"DirectAndKesTensile", FiniteVolumeWith(6, 6, "    E_warp: 500\n    kes: {EMT_warp: 4}"),
+       "7:21: material.finite_volume.kes.EMT_warp",
+       "give E_warp in one way only: 'E_warp' is given too"},
+      {"DirectAndKesShear", FiniteVolumeWith(8, 8, "    G: 5\n    kes: {G: 0.9}"),
+       "9:14: material.finite_volume.kes.G", "give G in one way only"},
+      {"MissingBending", FiniteVolumeWith(9, 9, ""), "5:3: material.finite_volume.D_warp",
+       "required key 'D_warp' is missing: give D_warp (N·m) or kes.B_warp or "
+       "bending_length.warp"},
+      {"MissingTensile", FiniteVolumeWith(7, 7, ""), "5:3: material.finite_volume.E_weft",
+       "give E_weft (N/m) or kes.EMT_weft"},
+      {"LinearityWithoutStrain", FiniteVolumeWith(6, 6, "    kes: {LT_warp: 0.7}"),
+       "6:20: material.finite_volume.kes.LT_warp", "LT_warp needs EMT_warp (%) as well"},
+      {"MaximumLoadWithoutStrain", FiniteVolumeWith(8, 8, "    G: 5\n    kes: {Fm: 50}"),
+       "9:15: material.finite_volume.kes.Fm", "applies only with EMT_warp or EMT_weft"},
+      {"DensityAndKesWeight", FiniteVolumeWith(8, 8, "    G: 5\n    kes: {W: 12}"),
+       "4:3: material.density",
+       "give the mass in one way only: 'density' and "
+       "finite_volume.kes.W are both given"},
+      {"BendingLengthWithoutArealDensity",
+       FiniteVolumeWith(4, 4, "  node_mass: 0.001",
+                        FiniteVolumeWith(9, 10, "    bending_length: {warp: 2.0, weft: 1.8}")),
+       "9:28: material.finite_volume.bending_length.warp",
+       "a bending length needs the areal density: give material.density (kg/m²) or "
+       "finite_volume.kes.W (mg/cm²)"},
+      {"BendingLengthNotPerDirection", FiniteVolumeWith(9, 10, "    bending_length: 2.0"),
+       "9:21: material.finite_volume.bending_length", "give the bending length per direction"},
+      {"KesKeyTypo", FiniteVolumeWith(9, 9, "    kes: {B_wrap: 0.1}"),
+       "9:11: material.finite_volume.kes.B_wrap", "did you mean 'B_warp'?"},
+      {"NegativeKesBending", FiniteVolumeWith(9, 9, "    kes: {B_warp: -0.1}"),
+       "9:19: material.finite_volume.kes.B_warp", "must be positive"},
+      {"ZeroKesWeight", FiniteVolumeWith(4, 4, "") + "    kes: {W: 0}\n",
+       "10:14: material.finite_volume.kes.W", "must be positive"},
+  };
+}
+
+class FabricParameterBadSceneTest : public SceneLoaderTest,
+                                    public ::testing::WithParamInterface<BadScene> {};
+
+TEST_P(FabricParameterBadSceneTest, IsRejectedWithALocatedMessage) {
+  const BadScene& bad = GetParam();
+  const std::string message = Error(bad.text);
+  ASSERT_FALSE(message.empty()) << "loaded without error:\n" << bad.text;
+  const std::string where = ScenePath() + ":" + bad.where + ": ";
+  EXPECT_EQ(message.rfind(where, 0), 0u)
+      << "expected the message to start with '" << where << "'\ngot: " << message << "\nscene:\n"
+      << bad.text;
+  EXPECT_TRUE(Contains(message, bad.what)) << "expected '" << bad.what << "' in: " << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(SceneLoader, FabricParameterBadSceneTest,
+                         ::testing::ValuesIn(FabricParameterBadScenes()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
 }  // namespace
 }  // namespace drape

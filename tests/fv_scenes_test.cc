@@ -1,0 +1,159 @@
+// The scenes of configs/fv/ (the drape tester, the square table, the sphere, the cantilevers):
+// every one loads, and newton solves it on a coarse mesh to its tolerance at a stable equilibrium;
+// the drape coefficient of a specimen that does not overhang is 1, and it is unchanged when the
+// whole drape is scaled in a way that keeps its equilibrium geometrically similar.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "src/drape_analysis.h"
+#include "src/run.h"
+#include "tests/test_scenes.h"
+
+namespace drape {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct CoarseScene {
+  std::string file;  // in configs/fv/
+  std::vector<std::string> overrides;
+};
+
+// Coarse versions of about 110–230 nodes: the circles at 2, 2.5 and 3 cm spacing for the 24, 30
+// and 36 cm specimens, the squares at 15 × 15, the strips at 21 nodes.
+std::vector<CoarseScene> CoarseScenes() {
+  const std::vector<std::string> square = {"mesh.nodes=[15, 15]"};
+  const std::vector<std::string> strip = {"mesh.nodes=[21, 1]"};
+  std::vector<CoarseScene> scenes = {{"cantilever.yaml", strip},
+                                     {"cantilever_tip.yaml", strip},
+                                     {"square_table.yaml", square},
+                                     {"sphere.yaml", square}};
+  for (const char* fabric : {"cotton", "polyester"}) {
+    for (const auto& [size, spacing] :
+         {std::pair<const char*, const char*>{"24", "0.02"}, {"30", "0.025"}, {"36", "0.03"}}) {
+      scenes.push_back({std::string("drape_tester_") + fabric + "_" + size + ".yaml",
+                        {std::string("mesh.spacing=") + spacing}});
+    }
+  }
+  return scenes;
+}
+
+TEST(FvScenes, EverySceneHasACoarseVersionAndBuilds) {
+  std::set<std::string> listed;
+  for (const auto& scene : CoarseScenes()) listed.insert(scene.file);
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::SourcePath("configs/fv"))) {
+    if (entry.path().extension() != ".yaml") continue;
+    const std::string file = entry.path().filename().string();
+    EXPECT_EQ(listed.count(file), 1u) << file << " has no coarse version in this test";
+    const Scene scene = LoadScene(entry.path().string());
+    EXPECT_EQ(scene.material.model, "finite_volume") << file;
+    EXPECT_GT(BuildModel(scene).num_nodes, 20) << file;
+    ++count;
+  }
+  EXPECT_EQ(count, static_cast<int>(listed.size()));
+}
+
+class FvSceneCoarse : public ::testing::TestWithParam<CoarseScene> {};
+
+// Newton reaches each scene's own tolerance, and the equilibrium is a stable minimum (the drapes
+// rest on their obstacles, held in-plane where the obstacle cannot hold them; the cantilevers
+// droop under their weight or load).
+TEST_P(FvSceneCoarse, NewtonSolvesItToAStableEquilibrium) {
+  const CoarseScene& c = GetParam();
+  const auto solved =
+      testing::SolveConfig(std::string("configs/fv/") + c.file, "newton", c.overrides);
+  ASSERT_TRUE(solved.result.converged) << solved.result.summary.termination;
+  EXPECT_LE(solved.result.certificate.relative_residual, solved.scene.solver.tolerance);
+  EXPECT_TRUE(solved.result.stability.computed);
+  EXPECT_TRUE(solved.result.stability.stable) << solved.result.stability.min_eigenvalue;
+  if (DiscRadius(solved.scene) > 0.0) {  // a drape tester: the fabric hangs, 0 < DC < 1
+    const DrapeCoefficient dc = ComputeDrapeCoefficient(solved.model, DiscRadius(solved.scene));
+    EXPECT_GT(dc.cusick, 0.0);
+    EXPECT_LT(dc.cusick, 1.0);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(FvScenes, FvSceneCoarse, ::testing::ValuesIn(CoarseScenes()),
+                         [](const auto& info) {
+                           std::string name = info.param.file;
+                           name = name.substr(0, name.find('.'));
+                           for (char& ch : name) {
+                             if (ch == '-') ch = '_';
+                           }
+                           return name;
+                         });
+
+// Cusick's DC = (A_shadow − A_disc)/(A_specimen − A_disc) is defined for a specimen that overhangs
+// the disc. A specimen no larger than the disc cannot hang: it lies flat, its shadow is its flat
+// area, and DC = 1 (the stiff limit) — for a smaller specimen the ratio of two equal negative
+// numbers, for A_specimen = A_disc by convention (ComputeDrapeCoefficient; no 0/0).
+TEST(FvScenes, SpecimenNoLargerThanTheDiscHasDrapeCoefficientOne) {
+  // 16 cm specimen on the 18 cm disc: every node lies within the clamped region.
+  const auto solved = testing::SolveConfig("configs/fv/drape_tester_polyester_24.yaml", "newton",
+                                           {"mesh.radius=0.08", "mesh.spacing=0.02"});
+  ASSERT_TRUE(solved.result.converged) << solved.result.summary.termination;
+  const double disc = DiscRadius(solved.scene);
+  ASSERT_DOUBLE_EQ(disc, 0.09);
+  const DrapeCoefficient smaller = ComputeDrapeCoefficient(solved.model, disc);
+  EXPECT_LT(smaller.flat_area, kPi * disc * disc);
+  EXPECT_NEAR(smaller.cusick, 1.0, 1e-12);
+  EXPECT_NEAR(smaller.ratio, 1.0, 1e-12);
+  // A disc of exactly the specimen's (flat) area.
+  const double equal_radius = std::sqrt(smaller.flat_area / kPi);
+  EXPECT_DOUBLE_EQ(ComputeDrapeCoefficient(solved.model, equal_radius).cusick, 1.0);
+}
+
+// Geometric similarity. Scale every length by λ (mesh, disc, the held region, the contact
+// thickness), keep the areal density ρ and gravity g, and scale D by λ³ and E, G by λ. For the
+// configuration x' = λx every energy then scales by λ³:
+//   bending  ½ D κ² A:        κ' = κ/λ, A' = λ² A, D' = λ³ D        → λ³;
+//   membrane ½ E ε² A:        ε' = ε (strains are ratios), E' = λ E  → λ³;
+//   gravity  ρ g z A:         z' = λ z, A' = λ² A                    → λ³;
+//   contact  (k/3) g_c³ with k = F_ref/(f t)²: F_ref (the weight, ∝ ρ g A) → λ² F_ref,
+//            t' = λ t, so k' = k, and the depth g_c' = λ g_c          → λ³.
+// So Π'(λx) = λ³ Π(x): equilibria map to equilibria with the same stability, and the shadow
+// (an area, × λ²) over A_specimen − A_disc (× λ²) gives the same DC. Equivalently the drape
+// depends on lengths only through ratios to the bending length c = (D/ρg)^(1/3), which scales
+// by λ. The shadow is rasterised on a pixel grid that scales with the extent, so both runs see
+// the same pixels; what differs is rounding and the solver's tolerance.
+TEST(FvScenes, DrapeCoefficientIsInvariantUnderGeometricScaling) {
+  const std::vector<std::string> coarse = {"mesh.spacing=0.02"};
+  Scene scene = testing::LoadConfig("configs/fv/drape_tester_polyester_24.yaml", coarse);
+  const double lambda = 2.5;
+  Scene scaled = scene;
+  scaled.mesh.radius *= lambda;
+  scaled.mesh.spacing *= lambda;
+  scaled.mesh.origin *= lambda;
+  FiniteVolumeSpec& fv = scaled.material.finite_volume;
+  for (double* d : {&fv.D_warp, &fv.D_weft, &fv.D_12}) *d *= lambda * lambda * lambda;
+  for (double* e : {&fv.E_warp, &fv.E_weft, &fv.G}) *e *= lambda;
+  for (FixedSpec& fixed : scaled.fixed) {
+    fixed.nodes.center *= lambda;
+    fixed.nodes.radius *= lambda;
+  }
+  for (ObstacleSpec& obstacle : scaled.obstacles) {
+    obstacle.center *= lambda;
+    obstacle.radius *= lambda;
+  }
+  scaled.contact.thickness *= lambda;
+  double dc[2];
+  int k = 0;
+  for (const Scene* s : {&scene, &scaled}) {
+    Model model = BuildModel(*s);
+    const RunResult run = RunSolve(*s, model, "newton");
+    ASSERT_TRUE(run.converged) << run.summary.termination;
+    dc[k++] = ComputeDrapeCoefficient(model, DiscRadius(*s)).cusick;
+  }
+  EXPECT_GT(dc[0], 0.05);
+  EXPECT_LT(dc[0], 0.95);
+  EXPECT_NEAR(dc[1], dc[0], 1e-6);
+}
+
+}  // namespace
+}  // namespace drape
