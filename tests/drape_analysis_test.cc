@@ -240,12 +240,18 @@ TEST(CountFolds, OfAHandBuiltFoldedSkirt) {
   }
 }
 
-TEST(AnalyseDrape, CentresTheProfileOnTheDiskAndFindsTheFolds) {
+// A scene whose only content is the drape tester's 18 cm support disc.
+Scene SceneWithSupportDisc() {
   Scene scene;
   ObstacleSpec disk;
   disk.kind = ObstacleSpec::Kind::kDisk;
   disk.radius = 0.09;
   scene.obstacles.push_back(disk);
+  return scene;
+}
+
+TEST(AnalyseDrape, CentresTheProfileOnTheDiskAndFindsTheFolds) {
+  const Scene scene = SceneWithSupportDisc();
   SkirtShape shape;
   shape.lobes = 7;
   const Model skirt = FoldedSkirt(shape);
@@ -280,11 +286,7 @@ Model LatticeSkirt(const SkirtShape& shape, bool draped) {
 }
 
 TEST(AnalyseDrape, CountsTheFoldsOfTheDrapeNotTheStaircaseOfALatticeOutline) {
-  Scene scene;
-  ObstacleSpec disk;
-  disk.kind = ObstacleSpec::Kind::kDisk;
-  disk.radius = 0.09;
-  scene.obstacles.push_back(disk);
+  const Scene scene = SceneWithSupportDisc();
   SkirtShape shape;
   shape.lobes = 7;
   const Model flat = LatticeSkirt(shape, false);

@@ -42,19 +42,30 @@ TEST(Stability, AHangingChainAtEquilibriumIsStable) {
   EXPECT_TRUE(stability.stable);
 }
 
-TEST(Stability, AStraightChainCompressedBetweenItsSupportsIsASaddle) {
-  // No gravity: the uniformly compressed straight chain is an equilibrium, but its springs push
-  // with T = k (l − L) < 0 and the transverse stiffness T/l of each is negative. Across the
-  // chain (y or z), the Hessian is (T/l) times the path Laplacian of N springs with fixed ends,
-  // whose largest eigenvalue is 2 + 2 cos(π/N): λ_min = (T/l)(2 + 2 cos(π/N)).
+// No gravity: 10 springs of rest length 0.1 m between supports 0.8 m apart. The uniformly
+// compressed straight chain is an equilibrium, but its springs push with T = k (l − L) < 0 and
+// the transverse stiffness T/l of each is negative. Across the chain (y or z), the Hessian is
+// (T/l) times the path Laplacian of N springs with fixed ends, whose largest eigenvalue is
+// 2 + 2 cos(π/N): λ_min = (T/l)(2 + 2 cos(π/N)).
+ChainSpec CompressedChain() {
   ChainSpec spec;
   spec.nodes = 11;
   spec.length = 0.8;
   spec.rest_length = 0.1;
   spec.gravity = {0.0, 0.0, 0.0};
-  const Model model = Chain(spec);
-  const double l = 0.08, tension = spec.stiffness * (l - spec.rest_length);
-  const double expected = tension / l * (2.0 + 2.0 * std::cos(M_PI / 10.0));
+  return spec;
+}
+
+double CompressedChainMinEigenvalue() {
+  const ChainSpec spec = CompressedChain();
+  const double l = spec.length / (spec.nodes - 1),
+               tension = spec.stiffness * (l - spec.rest_length);
+  return tension / l * (2.0 + 2.0 * std::cos(M_PI / (spec.nodes - 1)));
+}
+
+TEST(Stability, AStraightChainCompressedBetweenItsSupportsIsASaddle) {
+  const Model model = Chain(CompressedChain());
+  const double expected = CompressedChainMinEigenvalue();
   const Stability stability = AnalyseStability(model, model.positions.data());
   EXPECT_TRUE(stability.computed);
   EXPECT_FALSE(stability.stable);
@@ -71,14 +82,8 @@ TEST(Stability, AStretchedStraightChainIsStable) {
 }
 
 TEST(Stability, NegativeCurvatureGivesTheBucklingModeOfACompressedChain) {
-  ChainSpec spec;  // the compressed chain above: λ_min = (T/l)(2 + 2 cos(π/N))
-  spec.nodes = 11;
-  spec.length = 0.8;
-  spec.rest_length = 0.1;
-  spec.gravity = {0.0, 0.0, 0.0};
-  const Model model = Chain(spec);
-  const double l = 0.08, tension = spec.stiffness * (l - spec.rest_length);
-  const double expected = tension / l * (2.0 + 2.0 * std::cos(M_PI / 10.0));
+  const Model model = Chain(CompressedChain());
+  const double expected = CompressedChainMinEigenvalue();
   const TrueHessian hessian(model);
   double eigenvalue = 0.0;
   std::vector<double> v;
