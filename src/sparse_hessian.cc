@@ -45,6 +45,8 @@ bool ProjectToPositiveSemidefinite(EigenvalueFilter filter, int n, double* row_m
       return ProjectFixed<9>(filter, n, row_major);
     case 12:
       return ProjectFixed<12>(filter, n, row_major);
+    case 15:  // the finite-volume bending term (5 nodes)
+      return ProjectFixed<15>(filter, n, row_major);
     default:
       return ProjectFixed<Eigen::Dynamic>(filter, n, row_major);
   }
