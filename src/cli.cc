@@ -205,8 +205,9 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
   if (arguments.method) {
     const auto& methods = FitMethods();
     if (std::find(methods.begin(), methods.end(), *arguments.method) == methods.end()) {
-      throw UsageError("unknown fit method '" + *arguments.method +
-                       "' (known: bobyqa, nelder-mead, sbplx, cobyla, implicit-lbfgs, implicit-lm)");
+      throw UsageError(
+          "unknown fit method '" + *arguments.method +
+          "' (known: bobyqa, nelder-mead, sbplx, cobyla, implicit-lbfgs, implicit-lm)");
     }
     spec.method = *arguments.method;
   }
