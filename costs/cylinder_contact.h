@@ -5,6 +5,7 @@
 
 #include "costs/contact_penalty.h"
 #include "costs/energy_form.h"
+#include "costs/safe_math.h"
 
 namespace drape {
 
@@ -34,8 +35,7 @@ struct CylinderContact {
   T Distance(const T* const x) const {
     using std::sqrt;
     const T dx = x[0] - center[0], dy = x[1] - center[1], dz = x[2] - center[2];
-    const T radial_squared = dx * dx + dy * dy;
-    const T radial = radial_squared > 0.0 ? sqrt(radial_squared) : T();
+    const T radial = SafeSqrt(dx * dx + dy * dy);
     const T q_r = radial - radius;
     const T below = -height - dz;
     const T q_z = dz > below ? dz : below;

@@ -5,6 +5,7 @@
 
 #include "costs/contact_penalty.h"
 #include "costs/energy_form.h"
+#include "costs/safe_math.h"
 
 namespace drape {
 
@@ -34,8 +35,7 @@ struct DiskContact {
     const T radial_squared = dx * dx + dy * dy;
     if (!(radial_squared > radius * radius)) return h < 0.0 ? T(-h) : h;
     const T beyond = sqrt(radial_squared) - radius;
-    const T squared = beyond * beyond + h * h;
-    return squared > 0.0 ? sqrt(squared) : T();
+    return SafeSqrt(beyond * beyond + h * h);
   }
 
   template <typename T>

@@ -8,14 +8,19 @@
 
 namespace drape {
 
+// √s of a squared length s ≥ 0, with a zero derivative (not NaN or ∞) at s = 0.
+template <typename T>
+T SafeSqrt(const T& squared) {
+  using std::sqrt;
+  if (squared > 0.0) return sqrt(squared);
+  return T();
+}
+
 // |d| for d = b − a, with a zero derivative (not NaN) when the two points coincide.
 template <typename T>
 T SafeDistance(const T* a, const T* b) {
-  using std::sqrt;
   const T dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
-  const T squared = dx * dx + dy * dy + dz * dz;
-  if (squared > 0.0) return sqrt(squared);
-  return T();
+  return SafeSqrt(dx * dx + dy * dy + dz * dz);
 }
 
 }  // namespace drape

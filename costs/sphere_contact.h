@@ -5,6 +5,7 @@
 
 #include "costs/contact_penalty.h"
 #include "costs/energy_form.h"
+#include "costs/safe_math.h"
 
 namespace drape {
 
@@ -26,10 +27,8 @@ struct SphereContact {
   // Signed distance from the surface, positive outside, m.
   template <typename T>
   T Distance(const T* const x) const {
-    using std::sqrt;
     const T dx = x[0] - center[0], dy = x[1] - center[1], dz = x[2] - center[2];
-    const T squared = dx * dx + dy * dy + dz * dz;
-    return (squared > 0.0 ? sqrt(squared) : T()) - radius;
+    return SafeSqrt(dx * dx + dy * dy + dz * dz) - radius;
   }
 
   template <typename T>
