@@ -47,6 +47,7 @@ struct FvBendingEdge {
   static constexpr int kNumNodes = 3;
   static constexpr int kNumOutputs = 3;
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
+  static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
   FvBendingEdge(double rigidity, double volume_size, double volume_area)
       : scale(std::sqrt(rigidity * volume_area) / volume_size) {
@@ -90,6 +91,7 @@ struct FvBending {
   static constexpr int kNumNodes = 5;
   static constexpr int kNumOutputs = 8;
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
+  static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
   FvBending(double d1, double d2, double d12, double size1, double size2, double area)
       : size1(size1),

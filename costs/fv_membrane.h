@@ -27,6 +27,7 @@ struct FvMembrane {
   static constexpr int kNumNodes = 3;
   static constexpr int kNumOutputs = 3;
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
+  static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
   // e1, e2, e12: E1, E2, E12 as above (N/m); g: G (N/m); rest arm lengths l_PA, l_PB (m).
   FvMembrane(double e1, double e2, double e12, double g, double rest_a, double rest_b)

@@ -17,6 +17,7 @@ struct SpringStretch {
   static constexpr int kNumNodes = 2;
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
+  static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
   SpringStretch(double stiffness, double rest_length)
       : sqrt_stiffness(std::sqrt(stiffness)), rest_length(rest_length) {}

@@ -22,6 +22,7 @@ struct StretchLimitBarrier {
   static constexpr int kNumNodes = 2;
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
+  static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
   StretchLimitBarrier(double stiffness, double limit_length)
       : sqrt_stiffness(std::sqrt(stiffness)), limit_length(limit_length) {}

@@ -15,6 +15,7 @@ struct ZeroLengthSpring {
   static constexpr int kNumNodes = 2;
   static constexpr int kNumOutputs = 3;
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
+  static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
   explicit ZeroLengthSpring(double stiffness) : sqrt_stiffness(std::sqrt(stiffness)) {}
 

@@ -15,6 +15,7 @@
 #include "src/fit_problem.h"
 #include "src/fit_solver.h"
 #include "src/fit_writer.h"
+#include "src/library_threads.h"
 #include "src/model.h"
 #include "src/progress.h"
 #include "src/run.h"
@@ -295,6 +296,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
 
 int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
                const CommandOptions& options) {
+  RunLibrariesOnOneThread();
   try {
     return Dispatch(args, out, err, options);
   } catch (const UsageError& error) {

@@ -61,6 +61,8 @@ struct NewtonSettings {
   // Try the unprojected H first below this relative residual (by default always; after H fails to
   // factorise, H₊ is used until the residual has fallen tenfold).
   double exact_hessian_residual = std::numeric_limits<double>::infinity();
+  // After H fails, H is tried again once the residual has fallen tenfold or after this many steps.
+  int exact_retry_steps = 10;
   double armijo = 1e-4;
 };
 
@@ -78,6 +80,9 @@ NewtonSettings ReadSettings(const std::map<std::string, double>& options) {
   read("max_expansions", &max_expansions);
   settings.max_expansions = std::max(0, static_cast<int>(max_expansions));
   read("absolute_projection_above", &settings.absolute_projection_above);
+  double exact_retry_steps = settings.exact_retry_steps;
+  read("exact_retry_steps", &exact_retry_steps);
+  settings.exact_retry_steps = std::max(1, static_cast<int>(exact_retry_steps));
   return settings;
 }
 
@@ -188,6 +193,7 @@ class NewtonIteration {
   }
   double stiffness_scale_ = 1.0;
   double exact_blocked_above_ = std::numeric_limits<double>::infinity();
+  int steps_since_exact_failed_ = 0;
   FreeHessian::Assembly assembly_;
   std::vector<double> gradient_, free_gradient_, trial_, trial_gradient_, expanded_;
   Counters counters_;
@@ -222,6 +228,9 @@ bool NewtonIteration::Step(double residual) {
   free_gradient_.resize(dofs_.num_free());
   dofs_.Gather(gradient_.data(), free_gradient_.data());
   std::vector<double> step;
+  if (++steps_since_exact_failed_ > settings_.exact_retry_steps) {
+    exact_blocked_above_ = std::numeric_limits<double>::infinity();
+  }
   while (true) {
     const bool exact =
         residual < settings_.exact_hessian_residual && residual < exact_blocked_above_;
@@ -233,6 +242,7 @@ bool NewtonIteration::Step(double residual) {
     }
     if (exact) {  // H is not positive definite here (or gives no descent): use H₊ until closer
       exact_blocked_above_ = residual / 10.0;
+      steps_since_exact_failed_ = 0;
       continue;
     }
     mu_ = std::max(mu_ * 10.0, 1e-6);

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "src/library_threads.h"
+
 namespace drape {
 
 namespace {
@@ -35,12 +37,27 @@ bool ProjectFixed(EigenvalueFilter filter, int n, double* row_major) {
   return true;
 }
 
+// A translation-invariant 2-node term's Hessian is [A −A; −A A] = [1 −1; −1 1] ⊗ A (src/term.h
+// builds it so, exactly): its eigenvalues are 0 and 2·eig(A), and projecting A projects the whole.
+bool ProjectSpringLike(EigenvalueFilter filter, double* row_major) {
+  Eigen::Map<Eigen::Matrix<double, 6, 6, Eigen::RowMajor>> matrix(row_major);
+  const Eigen::Matrix3d block = matrix.topLeftCorner<3, 3>();
+  if (matrix.topRightCorner<3, 3>() != -block || matrix.bottomLeftCorner<3, 3>() != -block ||
+      matrix.bottomRightCorner<3, 3>() != block) {
+    return ProjectFixed<6>(filter, 6, row_major);
+  }
+  Eigen::Matrix<double, 3, 3, Eigen::RowMajor> projected = block;
+  if (!ProjectFixed<3>(filter, 3, projected.data())) return false;
+  matrix << projected, -projected, -projected, projected;
+  return true;
+}
+
 bool ProjectToPositiveSemidefinite(EigenvalueFilter filter, int n, double* row_major) {
   switch (n) {
     case 3:
       return ProjectFixed<3>(filter, n, row_major);
     case 6:
-      return ProjectFixed<6>(filter, n, row_major);
+      return ProjectSpringLike(filter, row_major);
     case 9:
       return ProjectFixed<9>(filter, n, row_major);
     case 12:
@@ -167,6 +184,7 @@ void FreeHessian::Multiply(const std::vector<double>& values, const double* x, d
 
 SparseCholesky::SparseCholesky(const FreeHessian& hessian) : hessian_(hessian) {
   assert(hessian.size() > 0);
+  RunLibrariesOnOneThread();
   cholmod_start(&common_);
   common_.print = 0;                        // failures are reported by the return value
   common_.supernodal = CHOLMOD_SUPERNODAL;  // always the supernodal (BLAS-3) factorisation

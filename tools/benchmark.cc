@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "src/equilibrium.h"
+#include "src/library_threads.h"
 #include "src/model.h"
 #include "src/scene_loader.h"
 #include "src/solver.h"
@@ -142,6 +143,7 @@ void PrintSplits(const std::vector<std::pair<int, Row>>& splits) {
 }
 
 int Main(int argc, char** argv) {
+  RunLibrariesOnOneThread();  // as drape does (src/library_threads.h)
   std::vector<int> sizes = {50, 100, 256};
   std::vector<std::string> solvers;
   for (const auto& info : AllSolvers()) solvers.push_back(info.name);
