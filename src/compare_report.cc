@@ -19,6 +19,8 @@
 #include <string>
 #include <thread>
 
+#include "src/library_threads.h"
+
 namespace drape {
 
 namespace fs = std::filesystem;
@@ -443,12 +445,15 @@ std::vector<Block> SceneBlocks(const SceneComparison& c, Plotter& plotter) {
 }
 
 std::vector<Block> HeaderBlocks(const CompareOptions& options, double total_time_s) {
-  const char* omp = std::getenv("OMP_NUM_THREADS");
+  const LibraryThreads threads = RunLibrariesOnOneThread();
   std::ostringstream machine;
   machine << "Machine: " << CpuModel() << ", " << std::thread::hardware_concurrency()
           << " logical CPUs (nproc). Threads: runs are sequential; Ceres runs with its default of "
-             "1 thread; OMP_NUM_THREADS="
-          << (omp ? omp : "unset") << " (CHOLMOD/BLAS). Versions: " << Versions() << '.';
+             "1 thread; CHOLMOD's OpenMP regions "
+          << (threads.openmp_single ? "on 1 thread" : "as the environment sets them")
+          << ", OpenBLAS "
+          << (threads.openblas_single ? "on 1 thread" : "as the environment sets it")
+          << " (src/library_threads.h). Versions: " << Versions() << '.';
   std::ostringstream method;
   method << "Each scene is solved first by the reference (newton to a relative residual of "
          << Number(options.reference_tolerance)

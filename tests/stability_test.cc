@@ -11,6 +11,7 @@
 #include "src/equilibrium.h"
 #include "src/solvers.h"
 #include "src/sparse_hessian.h"
+#include "tests/assembled_hessian.h"
 #include "tests/hand_built_models.h"
 
 namespace drape {
@@ -20,14 +21,8 @@ using testing::Chain;
 using testing::ChainSpec;
 
 // The true free Hessian of `model` at its positions.
-struct TrueHessian {
-  explicit TrueHessian(const Model& model) : dofs(model), hessian(model, dofs) {
-    FreeHessian::Assembly assembly;
-    std::vector<double> gradient;
-    EXPECT_TRUE(hessian.Assemble(model.positions.data(), false, &assembly, &gradient));
-  }
-  const DofMap dofs;
-  FreeHessian hessian;
+struct TrueHessian : testing::AssembledHessian {
+  explicit TrueHessian(const Model& model) : AssembledHessian(model, /*project=*/false) {}
 };
 
 TEST(Stability, AHangingChainAtEquilibriumIsStable) {

@@ -1,0 +1,150 @@
+// FreeHessian (the free Hessian assembled from the terms into a pattern built once, and its
+// per-term positive semidefinite projection) and SparseCholesky (CHOLMOD on it).
+#include "src/sparse_hessian.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "src/equilibrium.h"
+#include "src/model.h"
+#include "tests/assembled_hessian.h"
+#include "tests/hand_built_models.h"
+
+namespace drape {
+namespace {
+
+using testing::AssembledHessian;
+using testing::Dense;
+using testing::Sheet;
+using testing::SheetSpec;
+
+// A small sheet, two corners fixed, shrunk by `scale` about its centre and shaken, so that its
+// springs are stretched and compressed in all directions.
+Model ShakenSheet(double scale) {
+  SheetSpec spec;
+  spec.nu = 4;
+  spec.nv = 3;
+  spec.fixed = {0, 3};
+  Model model = Sheet(spec);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> noise(-0.05, 0.05);
+  for (int k = 0; k < model.num_dofs(); ++k) {
+    if (!model.fixed[k]) model.positions[k] = scale * model.positions[k] + noise(random);
+  }
+  return model;
+}
+
+Eigen::VectorXd FreeGradient(const Model& model, const DofMap& dofs,
+                             const std::vector<double>& positions) {
+  double energy;
+  std::vector<double> gradient;
+  EXPECT_TRUE(EvaluateEnergy(model, positions.data(), &energy, &gradient));
+  Eigen::VectorXd free(dofs.num_free());
+  dofs.Gather(gradient.data(), free.data());
+  return free;
+}
+
+TEST(FreeHessian, EqualsFiniteDifferencesOfTheAssembledGradient) {
+  const Model model = ShakenSheet(0.9);
+  const AssembledHessian assembled(model, /*project=*/false);
+  const DofMap& dofs = assembled.dofs;
+  const FreeHessian::Assembly& assembly = assembled.assembly;
+  const std::vector<double>& gradient = assembled.gradient;
+  const Eigen::MatrixXd exact = Dense(assembled.hessian, assembled.hessian.values());
+
+  const double h = 1e-6;
+  Eigen::MatrixXd differences(dofs.num_free(), dofs.num_free());
+  for (int f = 0; f < dofs.num_free(); ++f) {
+    std::vector<double> plus = model.positions, minus = model.positions;
+    plus[dofs.free_to_global()[f]] += h;
+    minus[dofs.free_to_global()[f]] -= h;
+    differences.col(f) =
+        (FreeGradient(model, dofs, plus) - FreeGradient(model, dofs, minus)) / (2.0 * h);
+  }
+  EXPECT_LT((exact - differences).cwiseAbs().maxCoeff(), 1e-6 * exact.cwiseAbs().maxCoeff());
+  // The gradient is the model's, and the energy too.
+  double energy;
+  std::vector<double> reference;
+  ASSERT_TRUE(EvaluateEnergy(model, model.positions.data(), &energy, &reference));
+  EXPECT_NEAR(assembly.energy, energy, 1e-12 * assembly.energy_magnitude);
+  for (size_t k = 0; k < reference.size(); ++k) EXPECT_NEAR(gradient[k], reference[k], 1e-10);
+}
+
+TEST(FreeHessian, ProjectedHessianIsPositiveSemidefiniteWhereTheTrueOneIsNot) {
+  const Model model = ShakenSheet(0.8);  // many springs compressed
+  const AssembledHessian assembled(model, /*project=*/true);
+  EXPECT_GT(assembled.assembly.projected_terms, 0);
+  const Eigen::MatrixXd exact = Dense(assembled.hessian, assembled.hessian.values());
+  const Eigen::MatrixXd projected = Dense(assembled.hessian, assembled.hessian.projected_values());
+  const double scale = exact.cwiseAbs().maxCoeff();
+  EXPECT_LT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(exact).eigenvalues().minCoeff(),
+            -1e-3 * scale);
+  EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(projected).eigenvalues().minCoeff(),
+            -1e-12 * scale);
+}
+
+// Each term's Hessian projected by a full eigen-decomposition (negative eigenvalues replaced by
+// their magnitudes, or by zero), summed over the free coordinates: what FreeHessian's projection
+// must give, whatever shortcut it takes (the 3×3 block of a spring).
+Eigen::MatrixXd ProjectedByFullDecomposition(const Model& model, const DofMap& dofs,
+                                             EigenvalueFilter filter) {
+  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(dofs.num_free(), dofs.num_free());
+  for (const auto& term : model.terms) {
+    const int n = term->num_coordinates();
+    std::vector<double> gradient(n), values(n * n);
+    double energy;
+    EXPECT_TRUE(
+        term->EnergyHessian(model.positions.data(), &energy, gradient.data(), values.data()));
+    const Eigen::MatrixXd local = Eigen::Map<Eigen::MatrixXd>(values.data(), n, n);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(local);
+    const Eigen::VectorXd filtered = filter == EigenvalueFilter::kAbsolute
+                                         ? Eigen::VectorXd(eigen.eigenvalues().cwiseAbs())
+                                         : Eigen::VectorXd(eigen.eigenvalues().cwiseMax(0.0));
+    const Eigen::MatrixXd projected =
+        eigen.eigenvectors() * filtered.asDiagonal() * eigen.eigenvectors().transpose();
+    for (int r = 0; r < n; ++r) {
+      const int row = dofs.global_to_free()[3 * term->nodes()[r / 3] + r % 3];
+      for (int c = 0; c < n; ++c) {
+        const int column = dofs.global_to_free()[3 * term->nodes()[c / 3] + c % 3];
+        if (row >= 0 && column >= 0) sum(row, column) += projected(r, c);
+      }
+    }
+  }
+  return sum;
+}
+
+TEST(FreeHessian, ProjectsEachSpringAsItsFullEigenDecompositionWould) {
+  const Model model = ShakenSheet(0.8);
+  const DofMap dofs(model);
+  for (EigenvalueFilter filter : {EigenvalueFilter::kAbsolute, EigenvalueFilter::kClamp}) {
+    const AssembledHessian assembled(model, /*project=*/true, filter);
+    ASSERT_GT(assembled.assembly.projected_terms, 0);
+    const Eigen::MatrixXd expected = ProjectedByFullDecomposition(model, dofs, filter);
+    const Eigen::MatrixXd projected =
+        Dense(assembled.hessian, assembled.hessian.projected_values());
+    EXPECT_LT((projected - expected).cwiseAbs().maxCoeff(), 1e-9 * expected.cwiseAbs().maxCoeff());
+  }
+}
+
+TEST(SparseCholesky, SolvesAPositiveDefiniteSystemAndRefusesAnIndefiniteOne) {
+  const Model model = ShakenSheet(0.8);
+  const AssembledHessian assembled(model, /*project=*/true);
+  const FreeHessian& hessian = assembled.hessian;
+  SparseCholesky cholesky(hessian);
+  EXPECT_FALSE(cholesky.Factorize(hessian.values(), nullptr));
+
+  const std::vector<double> shift(hessian.size(), 1.0);
+  ASSERT_TRUE(cholesky.Factorize(hessian.projected_values(), &shift));
+  std::vector<double> b(hessian.size()), x, product(hessian.size());
+  for (int k = 0; k < hessian.size(); ++k) b[k] = std::cos(k);
+  cholesky.Solve(b, &x);
+  hessian.Multiply(hessian.projected_values(), x.data(), product.data());
+  for (int k = 0; k < hessian.size(); ++k) EXPECT_NEAR(product[k] + x[k], b[k], 1e-9);
+}
+
+}  // namespace
+}  // namespace drape
