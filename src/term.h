@@ -10,9 +10,10 @@
 // kSquares: out are residuals r and the energy is ½|r|² (elastic terms, the Ceres convention).
 // kPotential: out[0] is the energy itself (linear potentials of gravity and loads).
 // Optionally, static constexpr bool kTranslationInvariant = true; for a term of several nodes whose
-// energy depends only on their differences (springs, finite-volume terms): its derivatives are
-// then taken with respect to x_a − x_0 (a ≥ 1), 3 fewer variables, and mapped back exactly (the
-// gradient on node 0 is minus the sum of the others; a spring's 6×6 Hessian is [A −A; −A A]).
+// energy depends only on their differences (springs, finite-volume terms): its Hessian (and the
+// gradient that comes with it) is then taken with respect to x_a − x_0 (a ≥ 1), 3 fewer
+// variables, and mapped back exactly (the gradient on node 0 is minus the sum of the others; a
+// spring's 6×6 Hessian is [A −A; −A A]).
 #ifndef DRAPE_SRC_TERM_H_
 #define DRAPE_SRC_TERM_H_
 
@@ -111,78 +112,56 @@ template <typename Functor>
 struct TranslationInvariant<Functor, std::void_t<decltype(Functor::kTranslationInvariant)>>
     : std::bool_constant<Functor::kTranslationInvariant && (Functor::kNumNodes > 1)> {};
 
-// Energy, gradient and Hessian (row-major) of a functor at nodes x[0..N−1] by nested Jets over
-// all 3N coordinates.
-template <typename Functor>
-bool HessianOverAllCoordinates(const Functor& functor, const double* const* positions,
-                               double* energy, double* gradient, double* hessian) {
+// Energy, gradient and Hessian (row-major, over all 3N coordinates) of a functor at nodes
+// x[0..N−1], by nested Jets. kRelative = false: over all 3N coordinates. kRelative = true (a
+// translation-invariant functor): over the 3(N−1) relative positions r_a = x_a − x_0, node 0 held
+// constant, mapped back exactly with P = (∂r/∂x)ᵀ: gradient P g_r, Hessian P H_r Pᵀ. A 2-node
+// term then carries 3 derivatives instead of 6, a quarter of the work.
+template <bool kRelative, typename Functor>
+bool NestedJetHessian(const Functor& functor, const double* const* positions, double* energy,
+                      double* gradient, double* hessian) {
   constexpr int kDofs = 3 * Functor::kNumNodes;
-  using Jet1 = ceres::Jet<double, kDofs>;
-  using Jet2 = ceres::Jet<Jet1, kDofs>;
+  constexpr int kFirst = kRelative ? 3 : 0;  // the first coordinate that carries a derivative
+  constexpr int kVariables = kDofs - kFirst;
+  using Jet1 = ceres::Jet<double, kVariables>;
+  using Jet2 = ceres::Jet<Jet1, kVariables>;
   Jet2 storage[kDofs];
   const Jet2* x[Functor::kNumNodes];
-  for (int a = 0; a < Functor::kNumNodes; ++a) {
-    for (int c = 0; c < 3; ++c) {
-      const int k = 3 * a + c;
-      storage[k].a = Jet1(positions[a][c], k);
+  for (int k = 0; k < kDofs; ++k) {
+    const double value = positions[k / 3][k % 3];
+    if (k < kFirst) {
+      storage[k] = Jet2(Jet1(value));
+    } else {
+      storage[k].a = Jet1(value, k - kFirst);
       storage[k].v.setZero();
-      storage[k].v[k] = Jet1(1.0);
-    }
-    x[a] = storage + 3 * a;
-  }
-  Jet2 e;
-  if (!EvaluateEnergy(functor, x, &e)) return false;
-  *energy = e.a.a;
-  bool finite = std::isfinite(e.a.a);
-  for (int r = 0; r < kDofs; ++r) {
-    gradient[r] = e.a.v[r];
-    for (int c = 0; c < kDofs; ++c) hessian[r * kDofs + c] = e.v[r].v[c];
-    finite = finite && std::isfinite(gradient[r]) && e.v[r].v.allFinite();
-  }
-  return finite;
-}
-
-// The same for a translation-invariant functor, by nested Jets over the 3(N−1) relative positions
-// r_a = x_a − x_0 (node 0 held constant), mapped back with x-derivatives = P·(r-derivatives),
-// P = ∂r/∂x transposed: the Hessian is P H_r Pᵀ. A 2-node term costs a quarter as much.
-template <typename Functor>
-bool HessianOverRelativePositions(const Functor& functor, const double* const* positions,
-                                  double* energy, double* gradient, double* hessian) {
-  constexpr int kDofs = 3 * Functor::kNumNodes;
-  constexpr int kRelative = kDofs - 3;
-  using Jet1 = ceres::Jet<double, kRelative>;
-  using Jet2 = ceres::Jet<Jet1, kRelative>;
-  Jet2 storage[kDofs];
-  const Jet2* x[Functor::kNumNodes];
-  for (int c = 0; c < 3; ++c) storage[c] = Jet2(Jet1(positions[0][c]));
-  for (int a = 1; a < Functor::kNumNodes; ++a) {
-    for (int c = 0; c < 3; ++c) {
-      const int k = 3 * (a - 1) + c;
-      storage[3 * a + c].a = Jet1(positions[a][c], k);
-      storage[3 * a + c].v.setZero();
-      storage[3 * a + c].v[k] = Jet1(1.0);
+      storage[k].v[k - kFirst] = Jet1(1.0);
     }
   }
   for (int a = 0; a < Functor::kNumNodes; ++a) x[a] = storage + 3 * a;
   Jet2 e;
   if (!EvaluateEnergy(functor, x, &e)) return false;
-  Eigen::Matrix<double, kDofs, kRelative> p = Eigen::Matrix<double, kDofs, kRelative>::Zero();
-  for (int k = 0; k < kRelative; ++k) {
-    p(k % 3, k) = -1.0;
-    p(k + 3, k) = 1.0;
-  }
-  Eigen::Matrix<double, kRelative, 1> relative_gradient;
-  Eigen::Matrix<double, kRelative, kRelative> relative_hessian;
-  for (int r = 0; r < kRelative; ++r) {
-    relative_gradient[r] = e.a.v[r];
-    relative_hessian.row(r) = e.v[r].v.transpose();
+  Eigen::Matrix<double, kVariables, 1> g;
+  Eigen::Matrix<double, kVariables, kVariables> h;
+  for (int r = 0; r < kVariables; ++r) {
+    g[r] = e.a.v[r];
+    h.row(r) = e.v[r].v.transpose();
   }
   *energy = e.a.a;
   Eigen::Map<Eigen::Matrix<double, kDofs, 1>> full_gradient(gradient);
   Eigen::Map<Eigen::Matrix<double, kDofs, kDofs, Eigen::RowMajor>> full_hessian(hessian);
-  full_gradient = p * relative_gradient;
-  full_hessian = p * relative_hessian * p.transpose();
-  return std::isfinite(e.a.a) && relative_gradient.allFinite() && relative_hessian.allFinite();
+  if constexpr (kRelative) {
+    Eigen::Matrix<double, kDofs, kVariables> p = Eigen::Matrix<double, kDofs, kVariables>::Zero();
+    for (int k = 0; k < kVariables; ++k) {
+      p(k % 3, k) = -1.0;
+      p(k + 3, k) = 1.0;
+    }
+    full_gradient = p * g;
+    full_hessian = p * h * p.transpose();
+  } else {
+    full_gradient = g;
+    full_hessian = h;
+  }
+  return std::isfinite(e.a.a) && g.allFinite() && h.allFinite();
 }
 
 template <typename Functor, std::size_t... I>
@@ -239,11 +218,8 @@ class AutoDiffTerm : public Term {
                      double* hessian) const override {
     const double* x[kN];
     for (int a = 0; a < kN; ++a) x[a] = positions + 3 * nodes()[a];
-    if constexpr (internal::TranslationInvariant<Functor>::value) {
-      return internal::HessianOverRelativePositions(functor_, x, energy, gradient, hessian);
-    } else {
-      return internal::HessianOverAllCoordinates(functor_, x, energy, gradient, hessian);
-    }
+    return internal::NestedJetHessian<internal::TranslationInvariant<Functor>::value>(
+        functor_, x, energy, gradient, hessian);
   }
 
   ceres::CostFunction* NewCostFunction() const override {

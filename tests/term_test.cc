@@ -30,10 +30,10 @@ void ExpectRelativeDerivativesEqualFullOnes(const Functor& functor, unsigned see
   double energy_full, energy_relative;
   std::vector<double> gradient_full(kDofs), gradient_relative(kDofs);
   std::vector<double> hessian_full(kDofs * kDofs), hessian_relative(kDofs * kDofs);
-  ASSERT_TRUE(internal::HessianOverAllCoordinates(functor, x, &energy_full, gradient_full.data(),
-                                                  hessian_full.data()));
-  ASSERT_TRUE(internal::HessianOverRelativePositions(
-      functor, x, &energy_relative, gradient_relative.data(), hessian_relative.data()));
+  ASSERT_TRUE(internal::NestedJetHessian<false>(functor, x, &energy_full, gradient_full.data(),
+                                                hessian_full.data()));
+  ASSERT_TRUE(internal::NestedJetHessian<true>(functor, x, &energy_relative,
+                                               gradient_relative.data(), hessian_relative.data()));
   EXPECT_GT(std::abs(energy_full), 0.0);  // a configuration away from rest: the test can fail
   EXPECT_NEAR(energy_relative, energy_full, 1e-14 * std::abs(energy_full));
   double g_scale = 0.0, h_scale = 0.0;
