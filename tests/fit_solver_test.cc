@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -122,6 +123,25 @@ TEST(FitSolverTest, RecoversBendingAndShearRigiditiesFromAScannedDrape) {
   }
 }
 
+// A number written with all its digits (17 significant), for a fit file.
+std::string Exact(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// Fits D_warp of configs/fit/drape_fv.yaml (log scale, bounds 1e-6 … 1e-3 N·m, from `initial`) to
+// one measurement, given as the YAML of its list item; the fit file goes to FitTempDir(name).
+FitResult FitWarpBending(const std::string& name, const std::string& initial,
+                         const std::string& measurement) {
+  const std::string path = FitTempDir(name) + "/fit.yaml";
+  WriteTextFile(
+      path, "scene: " + SourcePath("configs/fit/drape_fv.yaml") +
+                "\nparameters:\n  - {key: material.finite_volume.D_warp, initial: " + initial +
+                ", bounds: [1.0e-6, 1.0e-3], log: true}\nmeasurements:\n  - " + measurement + "\n");
+  return FitFile(path);
+}
+
 // The bending rigidity from a drape coefficient (Cusick's, 12 cm clamp), D_weft known.
 TEST(FitSolverTest, RecoversBendingRigidityFromADrapeCoefficient) {
   const double truth = 1.0e-4;
@@ -135,15 +155,8 @@ TEST(FitSolverTest, RecoversBendingRigidityFromADrapeCoefficient) {
       EvaluateMeasurement(dc, solved.model, solved.model.positions.data(), context).model_value;
   ASSERT_GT(value, 0.2);
   ASSERT_LT(value, 0.95);
-  const std::string folder = FitTempDir("dc");
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "scene: %s\nparameters:\n  - {key: material.finite_volume.D_warp, initial: 7.0e-5, "
-                "bounds: [1.0e-6, 1.0e-3], log: true}\nmeasurements:\n  - drape_coefficient: "
-                "{value: %.17g, disc_radius: 0.06}\n",
-                SourcePath("configs/fit/drape_fv.yaml").c_str(), value);
-  WriteTextFile(folder + "/fit_dc.yaml", text);
-  const FitResult result = FitFile(folder + "/fit_dc.yaml");
+  const FitResult result = FitWarpBending(
+      "dc", "7.0e-5", "drape_coefficient: {value: " + Exact(value) + ", disc_radius: 0.06}");
   EXPECT_TRUE(result.converged) << result.termination;
   EXPECT_LT(RelativeError(result.parameters[0], truth), 1e-4);
 }
@@ -168,15 +181,8 @@ TEST(FitSolverTest, RecoversBendingRigidityFromABendingLength) {
   // Peirce's formula is a fit to the elastica, 1.9% high at 41.5° (tests/cantilever_test.cc) and
   // more at the steeper angle (l = 2c > 2 (D/ρg)^⅓) of this fixed point: c ≈ (D / ρg)^⅓ within 5%.
   EXPECT_NEAR(measurement.value / std::cbrt(truth / (0.15 * 9.81)), 1.0, 0.05);
-  const std::string folder = FitTempDir("bending_length");
-  char text[400];
-  std::snprintf(text, sizeof text,
-                "scene: %s\nparameters:\n  - {key: material.finite_volume.D_warp, initial: 4.0e-5, "
-                "bounds: [1.0e-6, 1.0e-3], log: true}\nmeasurements:\n  - bending_length: "
-                "{value: %.17g}\n",
-                SourcePath("configs/fit/drape_fv.yaml").c_str(), measurement.value);
-  WriteTextFile(folder + "/fit_bl.yaml", text);
-  const FitResult result = FitFile(folder + "/fit_bl.yaml");
+  const FitResult result = FitWarpBending(
+      "bending_length", "4.0e-5", "bending_length: {value: " + Exact(measurement.value) + "}");
   EXPECT_TRUE(result.converged) << result.termination;
   EXPECT_LT(RelativeError(result.parameters[0], truth), 1e-4);
 }
