@@ -12,7 +12,7 @@ namespace drape {
 // The pushing force is k g² along the surface normal and the stiffness 2 k g: the energy is C²
 // (its Hessian is continuous, zero at first touch), so Newton keeps quadratic convergence as
 // nodes come into contact. Units: k in N/m², lengths in m, U in J. At equilibrium a node pressed
-// with force F sits g = √(F/k) inside the layer (src/contact.h states the stiffness rule).
+// with force F sits g = √(F/k) inside the layer (src/model/contact.h states the stiffness rule).
 template <typename T>
 T ContactPenalty(const T& distance, double clearance, double stiffness) {
   const T gap = clearance - distance;

@@ -1,4 +1,4 @@
-// How a cost functor's outputs make an energy (see src/term.h).
+// How a cost functor's outputs make an energy (see src/model/term.h).
 #ifndef DRAPE_COSTS_ENERGY_FORM_H_
 #define DRAPE_COSTS_ENERGY_FORM_H_
 

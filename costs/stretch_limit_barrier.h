@@ -16,7 +16,7 @@ namespace drape {
 // λ L0; C¹ beyond (like a tension-only spring whose rest length is λ L0). It acts in parallel with
 // the spring, so where the limit is active the tension T is shared: T = k (l − L0) + κ (l − λ L0).
 // Tolerance: a spring that would reach the stretch ratio λ_free under the same tension without
-// the limit ends at λ + (λ_free − λ) k / (k + κ); with κ = 1000 k (src/stretch_limit.cc) the
+// the limit ends at λ + (λ_free − λ) k / (k + κ); with κ = 1000 k (src/model/stretch_limit.cc) the
 // excess is about 1e-3 (λ_free − λ). Rigid-motion invariant.
 struct StretchLimitBarrier {
   static constexpr int kNumNodes = 2;

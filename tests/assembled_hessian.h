@@ -8,8 +8,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "src/model.h"
-#include "src/sparse_hessian.h"
+#include "src/model/model.h"
+#include "src/numerics/sparse_hessian.h"
 
 namespace drape::testing {
 

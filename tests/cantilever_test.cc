@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "src/finite_volume.h"
-#include "src/mesh.h"
-#include "src/run.h"
+#include "src/model/finite_volume.h"
+#include "src/model/mesh.h"
+#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

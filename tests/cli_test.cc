@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "src/solver.h"
+#include "src/solvers/solver.h"
 
 namespace drape {
 namespace {

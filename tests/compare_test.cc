@@ -1,5 +1,5 @@
 // drape compare: the error measures against a reference, and a report that keeps failing runs.
-#include "src/compare.h"
+#include "src/compare/compare.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <sstream>
 #include <string>
 
-#include "src/drape_analysis.h"
-#include "src/scene_loader.h"
+#include "src/analysis/drape_analysis.h"
+#include "src/scene/scene_loader.h"
 
 namespace drape {
 namespace {

@@ -1,13 +1,13 @@
-#include "src/contact.h"
+#include "src/model/contact.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "src/finite_volume.h"
-#include "src/mesh.h"
-#include "src/run.h"
+#include "src/model/finite_volume.h"
+#include "src/model/mesh.h"
+#include "src/solvers/run.h"
 #include "tests/hand_built_models.h"
 
 namespace drape {

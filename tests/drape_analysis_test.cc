@@ -1,4 +1,4 @@
-#include "src/drape_analysis.h"
+#include "src/analysis/drape_analysis.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "src/mesh.h"
+#include "src/model/mesh.h"
 #include "tests/folded_skirt.h"
 
 namespace drape {

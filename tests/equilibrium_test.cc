@@ -1,4 +1,4 @@
-#include "src/equilibrium.h"
+#include "src/model/equilibrium.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Conversions of KES-FB and Peirce measurements to the model's SI parameters, each checked against
 // a hand calculation written out above it (1 gf = 9.80665e-3 N, 1 cm = 1e-2 m).
-#include "src/fabric_parameters.h"
+#include "src/scene/fabric_parameters.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "src/finite_volume.h"
+#include "src/model/finite_volume.h"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "costs/constant_force_potential.h"
-#include "src/equilibrium.h"
-#include "src/mesh.h"
-#include "src/run.h"
+#include "src/model/equilibrium.h"
+#include "src/model/mesh.h"
+#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

@@ -1,11 +1,11 @@
 // The fit file: every key of issue 8's format read, and bad input reported as file:line:column.
-#include "src/fit_file.h"
+#include "src/fit/fit_file.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "src/cli.h"
+#include "src/cli/cli.h"
 #include "tests/fit_test_support.h"
 
 namespace drape::testing {

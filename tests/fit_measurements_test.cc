@@ -1,6 +1,6 @@
 // The residual of each measurement kind, the closest point on a triangle, and the virtual Peirce
 // test against Peirce's own geometry and the bending length (D / ρg)^⅓.
-#include "src/fit_measurements.h"
+#include "src/fit/fit_measurements.h"
 
 #include <gtest/gtest.h>
 

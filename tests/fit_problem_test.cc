@@ -1,7 +1,7 @@
 // The fit as a function of the parameters: residual layout, warm starts, and the implicit
 // derivatives dr/du = ∂r/∂x (−H⁻¹ ∂g/∂u) (+ ∂r/∂u) checked against central differences of
 // whole, re-solved equilibria.
-#include "src/fit_problem.h"
+#include "src/fit/fit_problem.h"
 
 #include <gtest/gtest.h>
 

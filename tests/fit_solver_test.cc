@@ -2,7 +2,7 @@
 // parameters, with and without noise, and the fitted parameters compared with the known ones.
 // Noise: independent Gaussian N(0, (0.5 mm)²) on every measured coordinate, std::mt19937 with the
 // seed given in each test. Tolerances: 1e-4 relative noise-free, 2% with noise.
-#include "src/fit_solver.h"
+#include "src/fit/fit_solver.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "src/fit_measurements.h"
+#include "src/fit/fit_measurements.h"
 #include "tests/fit_test_support.h"
 
 namespace drape::testing {

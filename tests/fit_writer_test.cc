@@ -1,6 +1,6 @@
 // `drape fit` end to end: the outputs fit.json, history.csv, sensitivity.csv, fit.png, report.md,
 // the progress lines, and the sensitivity table against a closed-form reference.
-#include "src/fit_writer.h"
+#include "src/fit/fit_writer.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "src/cli.h"
+#include "src/cli/cli.h"
 #include "tests/fit_test_support.h"
 
 namespace drape::testing {

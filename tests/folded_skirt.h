@@ -17,7 +17,7 @@
 #include <cmath>
 #include <vector>
 
-#include "src/model.h"
+#include "src/model/model.h"
 
 namespace drape {
 

@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include "src/finite_volume.h"
-#include "src/mesh.h"
+#include "src/model/finite_volume.h"
+#include "src/model/mesh.h"
 #include "tests/term_checks.h"
 
 namespace drape {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "src/drape_analysis.h"
-#include "src/run.h"
+#include "src/analysis/drape_analysis.h"
+#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

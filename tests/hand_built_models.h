@@ -13,7 +13,7 @@
 #include "costs/constant_force_potential.h"
 #include "costs/spring_stretch.h"
 #include "costs/tension_only_spring.h"
-#include "src/model.h"
+#include "src/model/model.h"
 
 namespace drape::testing {
 

@@ -1,5 +1,5 @@
 // RunLibrariesOnOneThread: CHOLMOD's OpenMP regions and OpenBLAS end up on one thread.
-#include "src/library_threads.h"
+#include "src/numerics/library_threads.h"
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>

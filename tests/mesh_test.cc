@@ -1,4 +1,4 @@
-#include "src/mesh.h"
+#include "src/model/mesh.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "src/model.h"
+#include "src/model/model.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include "costs/spring_stretch.h"
 #include "costs/tension_only_spring.h"
 #include "costs/zero_length_spring.h"
-#include "src/equilibrium.h"
+#include "src/model/equilibrium.h"
 
 namespace drape {
 namespace {

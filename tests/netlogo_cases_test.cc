@@ -4,9 +4,9 @@
 
 #include <filesystem>
 
-#include "src/drape_analysis.h"
-#include "src/run.h"
-#include "src/stretch_limit.h"
+#include "src/analysis/drape_analysis.h"
+#include "src/solvers/run.h"
+#include "src/model/stretch_limit.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

@@ -1,5 +1,5 @@
 // The progress line: rewritten in place, rate-limited, erased at the end.
-#include "src/progress.h"
+#include "src/cli/progress.h"
 
 #include <gtest/gtest.h>
 

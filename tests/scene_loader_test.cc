@@ -1,6 +1,6 @@
 // Scene loading: every key of scene-format.md, the defaults, `--set` overrides, and every bad
 // input rejected with "file:line:column: key.path: what is wrong".
-#include "src/scene_loader.h"
+#include "src/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "src/solver.h"
+#include "src/solvers/solver.h"
 
 namespace drape {
 namespace {

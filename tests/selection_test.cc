@@ -1,4 +1,4 @@
-#include "src/selection.h"
+#include "src/model/selection.h"
 
 #include <gtest/gtest.h>
 

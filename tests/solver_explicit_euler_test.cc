@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "src/run.h"
-#include "src/stretch_limit.h"
+#include "src/solvers/run.h"
+#include "src/model/stretch_limit.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

@@ -2,11 +2,11 @@
 // parts (the assembled Hessian, the projection, the factorisation) in sparse_hessian_test.cc.
 #include <gtest/gtest.h>
 
-#include "src/equilibrium.h"
-#include "src/model.h"
-#include "src/scene_loader.h"
-#include "src/solvers.h"
-#include "src/stability.h"
+#include "src/model/equilibrium.h"
+#include "src/model/model.h"
+#include "src/scene/scene_loader.h"
+#include "src/solvers/solvers.h"
+#include "src/numerics/stability.h"
 #include "tests/hand_built_models.h"
 
 namespace drape {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "src/solvers.h"
+#include "src/solvers/solvers.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

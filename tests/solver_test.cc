@@ -1,5 +1,5 @@
 // The shared stopping rule (IterationMonitor) and the registry.
-#include "src/solver.h"
+#include "src/solvers/solver.h"
 
 #include <gtest/gtest.h>
 

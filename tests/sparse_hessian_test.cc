@@ -1,6 +1,6 @@
 // FreeHessian (the free Hessian assembled from the terms into a pattern built once, and its
 // per-term positive semidefinite projection) and SparseCholesky (CHOLMOD on it).
-#include "src/sparse_hessian.h"
+#include "src/numerics/sparse_hessian.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "src/equilibrium.h"
-#include "src/model.h"
+#include "src/model/equilibrium.h"
+#include "src/model/model.h"
 #include "tests/assembled_hessian.h"
 #include "tests/hand_built_models.h"
 

@@ -1,6 +1,6 @@
 // The stability certificate: positive definite free Hessian ⇒ stable; otherwise an estimate of
 // the most negative eigenvalue.
-#include "src/stability.h"
+#include "src/numerics/stability.h"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <numeric>
 #include <vector>
 
-#include "src/equilibrium.h"
-#include "src/solvers.h"
-#include "src/sparse_hessian.h"
+#include "src/model/equilibrium.h"
+#include "src/solvers/solvers.h"
+#include "src/numerics/sparse_hessian.h"
 #include "tests/assembled_hessian.h"
 #include "tests/hand_built_models.h"
 

@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "src/term.h"
+#include "src/model/term.h"
 
 namespace drape::testing {
 

@@ -1,6 +1,6 @@
 // AutoDiffTerm: the derivatives of a translation-invariant functor, taken over the relative
 // positions x_a − x_0 and mapped back, equal those over all coordinates.
-#include "src/term.h"
+#include "src/model/term.h"
 
 #include <gtest/gtest.h>
 

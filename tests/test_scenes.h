@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "src/model.h"
-#include "src/run.h"
-#include "src/scene.h"
-#include "src/scene_loader.h"
+#include "src/model/model.h"
+#include "src/solvers/run.h"
+#include "src/scene/scene.h"
+#include "src/scene/scene_loader.h"
 
 namespace drape::testing {
 

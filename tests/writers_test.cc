@@ -1,6 +1,6 @@
 // The result files: each one reads back, consistent with the RunResult it was written from.
 // summary.json is read back with yaml-cpp (JSON is YAML), the tables line by line.
-#include "src/writers.h"
+#include "src/output/writers.h"
 
 #include <cairo.h>
 #include <gtest/gtest.h>
@@ -19,7 +19,7 @@
 
 #include "costs/constant_force_potential.h"
 #include "costs/spring_stretch.h"
-#include "src/equilibrium.h"
+#include "src/model/equilibrium.h"
 #include "tests/folded_skirt.h"
 
 namespace drape {

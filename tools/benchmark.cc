@@ -25,11 +25,11 @@
 #include <utility>
 #include <vector>
 
-#include "src/equilibrium.h"
-#include "src/library_threads.h"
-#include "src/model.h"
-#include "src/scene_loader.h"
-#include "src/solver.h"
+#include "src/model/equilibrium.h"
+#include "src/numerics/library_threads.h"
+#include "src/model/model.h"
+#include "src/scene/scene_loader.h"
+#include "src/solvers/solver.h"
 
 namespace drape {
 namespace {
@@ -158,7 +158,7 @@ void PrintSplits(const std::vector<std::pair<int, Row>>& splits) {
 }
 
 int Main(int argc, char** argv) {
-  RunLibrariesOnOneThread();  // as drape does (src/library_threads.h)
+  RunLibrariesOnOneThread();  // as drape does (src/numerics/library_threads.h)
   std::vector<int> sizes = {50, 100, 256};
   std::vector<std::string> solvers;
   for (const auto& info : AllSolvers()) solvers.push_back(info.name);

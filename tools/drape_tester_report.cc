@@ -2,7 +2,7 @@
 // polyester, 24, 30 and 36 cm specimens on the standard 18 cm disc) with newton and prints the
 // table of docs/drape-tester.md: nodes, iterations, wall time, relative residual, stability, the
 // drape coefficient in both conventions (Cusick's (A_shadow − A_disc)/(A_specimen − A_disc) and
-// A_shadow/A_flat) and the fold count (src/drape_analysis.h).
+// A_shadow/A_flat) and the fold count (src/analysis/drape_analysis.h).
 //   drape_tester_report [REPO_ROOT] [--only TEXT] [--set key.path=value ...]
 // --only solves only the scenes whose file name contains TEXT; --set overrides every scene (e.g.
 // --set mesh.spacing=0.0026 for the 10,000-node specimens). About 2 minutes at the default 1 cm
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "src/drape_analysis.h"
-#include "src/run.h"
-#include "src/scene_loader.h"
+#include "src/analysis/drape_analysis.h"
+#include "src/solvers/run.h"
+#include "src/scene/scene_loader.h"
 
 namespace drape {
 namespace {

@@ -19,13 +19,13 @@
 #include <string>
 #include <vector>
 
-#include "src/fit_file.h"
-#include "src/fit_measurements.h"
-#include "src/fit_problem.h"
-#include "src/fit_solver.h"
-#include "src/model.h"
-#include "src/run.h"
-#include "src/scene_loader.h"
+#include "src/fit/fit_file.h"
+#include "src/fit/fit_measurements.h"
+#include "src/fit/fit_problem.h"
+#include "src/fit/fit_solver.h"
+#include "src/model/model.h"
+#include "src/solvers/run.h"
+#include "src/scene/scene_loader.h"
 
 namespace drape {
 namespace {

@@ -5,7 +5,7 @@
 // Solves configs/netlogo/*.yaml with explicit-euler (their scheme; with and without the 10%
 // stretch limit, enforced by Provot's constraint) and newton (the limit as a penalty energy), and
 // reports for each: nodes, steps, wall time, relative residual, energy, the largest stretch ratio
-// and the drape coefficient A_drape / A_flat (src/drape_analysis.h). Takes about 40 s.
+// and the drape coefficient A_drape / A_flat (src/analysis/drape_analysis.h). Takes about 40 s.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "src/drape_analysis.h"
-#include "src/run.h"
-#include "src/scene_loader.h"
-#include "src/stretch_limit.h"
+#include "src/analysis/drape_analysis.h"
+#include "src/solvers/run.h"
+#include "src/scene/scene_loader.h"
+#include "src/model/stretch_limit.h"
 
 namespace drape {
 namespace {
@@ -89,7 +89,7 @@ rest length √2·l), and `arc` with 10 rings × 32 spokes (321 nodes), each wit
 energy, *including the penalty* where the scene sets a limit. At Provot's rest point the penalty
 is not stretched, so that residual is the constraint's own tension and is not small: the column
 "solver's own stop measure" gives explicit-euler's constrained residual. DC is the area of the
-union of the projected triangles, rasterised with cairo (`src/drape_analysis.h`; the ± is half
+union of the projected triangles, rasterised with cairo (`src/analysis/drape_analysis.h`; the ± is half
 a pixel along the outline), over the same union for the flat start.
 
 @TABLE@

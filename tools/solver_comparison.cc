@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "src/compare.h"
+#include "src/compare/compare.h"
 
 namespace fs = std::filesystem;
 

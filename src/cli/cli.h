@@ -1,0 +1,32 @@
+// The `drape` command: its arguments, subcommands and exit status (scene-format.md, "The command
+// line"). Kept apart from main() so tests can drive it without a process.
+#ifndef DRAPE_SRC_CLI_CLI_H_
+#define DRAPE_SRC_CLI_CLI_H_
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace drape {
+
+// Exit status of the command.
+enum ExitStatus {
+  kExitConverged = 0,     // solved to the tolerance (or another subcommand succeeded)
+  kExitNotConverged = 1,  // ran, results written, but the tolerance was not reached
+  kExitBadInput = 2,      // bad scene, bad usage, or results that could not be written
+};
+
+struct CommandOptions {
+  // Show the one-line progress report on `err` (the caller decides: stderr is a terminal).
+  bool show_progress = false;
+};
+
+// Runs `drape args...` (args without the program name): prints results on `out`, errors, usage
+// and progress on `err`, and returns the exit status. Input errors are caught here and printed as
+// their located message; nothing is written unless a solve ran.
+int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+               const CommandOptions& options = {});
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_CLI_CLI_H_

@@ -1,0 +1,15 @@
+// drape: the equilibrium shape of fabric. See README.md and `drape help`.
+#include <unistd.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "src/cli/cli.h"
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  drape::CommandOptions options;
+  options.show_progress = ::isatty(STDERR_FILENO) == 1;
+  return drape::RunCommand(args, std::cout, std::cerr, options);
+}

@@ -1,0 +1,619 @@
+#include "src/compare/compare_report.h"
+
+#include <ceres/version.h>
+#include <cholmod.h>
+#include <unistd.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <nlopt.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "src/numerics/library_threads.h"
+
+namespace drape {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The report as a list of blocks, written once as Markdown and once as HTML.
+struct Block {
+  enum class Kind { kHeading, kText, kTable, kImage };
+  Kind kind = Kind::kText;
+  std::string text;                            // heading, paragraph or image caption
+  std::vector<std::vector<std::string>> rows;  // table: header row first
+  std::string image;                           // image path relative to the report
+};
+
+std::string Format(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+std::string Number(double value) { return std::isfinite(value) ? Format("%.3g", value) : "—"; }
+std::string Raw(double value) { return Format("%.17g", value); }
+
+void WriteAtomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+  const fs::path temporary =
+      path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (!file) throw std::runtime_error("cannot write " + temporary.string());
+    write(file);
+    file.flush();
+    if (!file) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
+}
+
+// Letters, digits, '-' and '_' only: safe in file names and gnuplot word lists.
+std::string Slug(const std::string& name) {
+  std::string slug;
+  for (char c : name) slug += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
+  return slug.empty() ? "scene" : slug;
+}
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text)
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return quoted + "\"";
+}
+
+std::string CommandOutput(const std::string& command) {
+  std::string output;
+  if (std::FILE* pipe = ::popen(command.c_str(), "r")) {
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    ::pclose(pipe);
+  }
+  while (!output.empty() && (output.back() == '\n' || output.back() == ' ')) output.pop_back();
+  return output;
+}
+
+std::string CpuModel() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown";
+}
+
+std::string Versions() {
+  int major = 0, minor = 0, bugfix = 0;
+  nlopt::version(major, minor, bugfix);
+  std::ostringstream text;
+  text << "Ceres " << CERES_VERSION_STRING << ", NLopt " << major << '.' << minor << '.' << bugfix
+       << ", Eigen " << EIGEN_WORLD_VERSION << '.' << EIGEN_MAJOR_VERSION << '.'
+       << EIGEN_MINOR_VERSION << ", CHOLMOD " << CHOLMOD_MAIN_VERSION << '.' << CHOLMOD_SUB_VERSION
+       << '.' << CHOLMOD_SUBSUB_VERSION << ", " << CommandOutput("gnuplot --version 2>/dev/null");
+  return text.str();
+}
+
+double RelativeError(const RunRecord& run) { return run.error.rms_m / run.size; }
+bool HasPositions(const RunRecord& run) { return !run.positions.empty(); }
+
+// ---- CSV files ----------------------------------------------------------------------------------
+
+void WriteRunsCsv(const std::vector<SceneComparison>& comparisons, std::ostream& out) {
+  out << "scene,solver,status,reason,iterations,time_median_s,times_s,callback_time_s,"
+         "relative_residual,max_node_force_N,energy_J,energy_gap_J,max_distance_m,rms_distance_m,"
+         "max_distance_rel,rms_distance_rel,drape_coefficient_gap,stable,peak_memory_MB";
+  for (double level : AccuracyLevels()) out << ",time_to_" << Format("%.0e", level) << "_s";
+  out << '\n';
+  for (const SceneComparison& comparison : comparisons) {
+    for (const RunRecord& run : comparison.runs) {
+      std::string times;
+      for (double t : run.times_s) times += (times.empty() ? "" : ";") + Raw(t);
+      out << CsvField(run.scene) << ',' << run.solver << ',' << RunStatusName(run.status) << ','
+          << CsvField(run.reason) << ',' << run.iterations << ',' << Raw(run.time_s) << ',' << times
+          << ',' << Raw(run.callback_time_s) << ',' << Raw(run.relative_residual) << ','
+          << Raw(run.max_node_force) << ',' << Raw(run.energy) << ',' << Raw(run.energy_gap) << ','
+          << Raw(run.error.max_m) << ',' << Raw(run.error.rms_m) << ','
+          << Raw(run.error.max_m / run.size) << ',' << Raw(RelativeError(run)) << ','
+          << Raw(run.drape_coefficient_gap) << ','
+          << (run.stability_computed ? (run.stable ? "yes" : "no") : "unknown") << ','
+          << Raw(run.peak_memory_mb);
+      for (double level : AccuracyLevels()) {
+        const double t = HasPositions(run) ? TimeToReach(run, level) : -1.0;
+        out << ',' << (t == kTimeUnknown ? "nan" : t < 0 ? "" : Raw(t));
+      }
+      out << '\n';
+    }
+  }
+}
+
+void WriteCurvesCsv(const std::vector<SceneComparison>& comparisons, std::ostream& out) {
+  out << "scene,solver,iteration,time_s,relative_residual,energy_gap_J,max_distance_m,"
+         "rms_distance_m,rms_distance_rel\n";
+  for (const SceneComparison& comparison : comparisons) {
+    for (const RunRecord& run : comparison.runs) {
+      for (const CurvePoint& point : run.curve) {
+        out << CsvField(run.scene) << ',' << run.solver << ',' << point.iteration << ','
+            << Raw(point.time_s) << ',' << Raw(point.relative_residual) << ','
+            << Raw(point.energy_gap) << ',' << Raw(point.error.max_m) << ','
+            << Raw(point.error.rms_m) << ',' << Raw(point.error.rms_m / run.size) << '\n';
+      }
+    }
+  }
+}
+
+void WriteReferencesCsv(const std::vector<SceneComparison>& comparisons, std::ostream& out) {
+  out << "scene,file,method,tolerance,converged,termination,iterations,time_s,energy_J,"
+         "relative_residual,max_node_force_N,stable,energy_tolerance_J,size_m\n";
+  for (const SceneComparison& c : comparisons) {
+    const SceneReference& r = c.reference;
+    out << CsvField(c.name) << ',' << CsvField(c.file) << ',' << r.method << ',' << Raw(r.tolerance)
+        << ',' << (r.converged ? "yes" : "no") << ',' << CsvField(r.termination) << ','
+        << r.iterations << ',' << Raw(r.time_s) << ',' << Raw(r.energy) << ','
+        << Raw(r.relative_residual) << ',' << Raw(r.max_node_force) << ','
+        << (r.stability_computed ? (r.stable ? "yes" : "no") : "unknown") << ','
+        << Raw(r.energy_tolerance) << ',' << Raw(c.size) << '\n';
+  }
+}
+
+// ---- plots --------------------------------------------------------------------------------------
+
+std::string FindToolsDir(const CompareOptions& options) {
+  if (!options.tools_dir.empty()) return options.tools_dir;
+  if (const char* dir = std::getenv("DRAPE_TOOLS_DIR")) return dir;
+  std::error_code error;
+  fs::path folder = fs::read_symlink("/proc/self/exe", error).parent_path();
+  for (int up = 0; !error && up < 3; ++up, folder = folder.parent_path()) {
+    if (fs::exists(folder / "tools" / "compare_curves.gp", error)) return (folder / "tools");
+  }
+  return "";
+}
+
+// A shell word: single quotes, with '\'' for a quote inside.
+std::string ShellQuoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// A gnuplot string literal: single quotes, with '' for a quote inside.
+std::string Quoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+  return quoted + "'";
+}
+
+class Plotter {
+ public:
+  Plotter(const CompareOptions& options, const fs::path& out_dir, std::ostream& log)
+      : out_dir_(out_dir), log_(log) {
+    if (!options.plots) return;
+    tools_dir_ = FindToolsDir(options);
+    if (tools_dir_.empty()) {
+      log_ << "plots left out: tools/compare_curves.gp not found (set DRAPE_TOOLS_DIR)\n";
+    }
+    fs::create_directories(out_dir_ / "plots" / "data");
+  }
+  bool enabled() const { return !tools_dir_.empty(); }
+
+  // Writes a data file under plots/data; returns its path relative to the report.
+  std::string Data(const std::string& name, const std::function<void(std::ostream&)>& write) {
+    const std::string relative = "plots/data/" + name;
+    WriteAtomically(out_dir_ / relative, write);
+    return relative;
+  }
+
+  // Runs tools/<script> in the report folder with the given variables; returns the PNG's path
+  // relative to the report, or "" when gnuplot failed (logged).
+  std::string Draw(const std::string& script, const std::string& png,
+                   const std::vector<std::pair<std::string, std::string>>& variables) {
+    if (!enabled()) return "";
+    const std::string relative = "plots/" + png;
+    std::string settings = "output=" + Quoted(relative) + ";";
+    for (const auto& [name, value] : variables) settings += name + "=" + Quoted(value) + ";";
+    const std::string command =
+        "cd " + ShellQuoted(out_dir_.string()) + " && gnuplot -e " + ShellQuoted(settings) + " " +
+        ShellQuoted((fs::path(tools_dir_) / script).string()) + " >/dev/null 2>>plots/gnuplot.log";
+    if (std::system(command.c_str()) != 0 || !fs::exists(out_dir_ / relative)) {
+      log_ << "plot " << relative << " failed (see plots/gnuplot.log)\n";
+      return "";
+    }
+    return relative;
+  }
+
+ private:
+  fs::path out_dir_;
+  std::ostream& log_;
+  std::string tools_dir_;
+};
+
+// Log axes drop zeros: times and errors are floored for the plot only (the CSVs keep them).
+double Floor(double value, double floor) { return std::max(value, floor); }
+
+std::string CurvesPlot(const SceneComparison& comparison, Plotter& plotter) {
+  std::string files, titles;
+  for (const RunRecord& run : comparison.runs) {
+    if (run.curve.empty() || !run.curve_positions_valid) continue;
+    const std::string file =
+        plotter.Data(Slug(comparison.name) + "__" + run.solver + ".dat", [&](std::ostream& out) {
+          out << "# time_s rms_distance_rel relative_residual\n";
+          for (const CurvePoint& p : run.curve) {
+            out << Raw(Floor(p.time_s, 1e-6)) << ' ' << Raw(Floor(p.error.rms_m / run.size, 1e-17))
+                << ' ' << Raw(Floor(p.relative_residual, 1e-17)) << '\n';
+          }
+        });
+    files += (files.empty() ? "" : " ") + file;
+    titles += (titles.empty() ? "" : " ") + run.solver;
+  }
+  if (files.empty()) return "";
+  return plotter.Draw("compare_curves.gp", Slug(comparison.name) + "_curves.png",
+                      {{"files", files}, {"titles", titles}, {"title", comparison.name}});
+}
+
+std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, Plotter& plotter) {
+  std::vector<std::string> solvers;
+  for (const SceneComparison& c : comparisons) {
+    for (const RunRecord& run : c.runs) {
+      if (HasPositions(run) &&
+          std::find(solvers.begin(), solvers.end(), run.solver) == solvers.end()) {
+        solvers.push_back(run.solver);
+      }
+    }
+  }
+  std::string files, titles;
+  for (const std::string& solver : solvers) {
+    const std::string file = plotter.Data("pareto__" + solver + ".dat", [&](std::ostream& out) {
+      out << "# time_s rms_distance_rel scene\n";
+      for (const SceneComparison& c : comparisons) {
+        for (const RunRecord& run : c.runs) {
+          if (run.solver != solver || !HasPositions(run)) continue;
+          out << Raw(Floor(run.time_s, 1e-6)) << ' ' << Raw(Floor(RelativeError(run), 1e-17)) << ' '
+              << Slug(c.name) << '\n';
+        }
+      }
+    });
+    files += (files.empty() ? "" : " ") + file;
+    titles += (titles.empty() ? "" : " ") + solver;
+  }
+  if (files.empty()) return "";
+  return plotter.Draw("compare_pareto.gp", "pareto.png", {{"files", files}, {"titles", titles}});
+}
+
+std::string DrapePlot(const SceneComparison& comparison, const std::vector<double>& positions,
+                      bool colour_by_distance, const std::string& name, const std::string& title,
+                      Plotter& plotter) {
+  const std::vector<double>& reference = comparison.reference.positions;
+  const std::string file =
+      plotter.Data(Slug(comparison.name) + "__" + name + ".dat", [&](std::ostream& out) {
+        out << "# x y z colour\n";
+        for (size_t node = 0; 3 * node + 2 < positions.size(); ++node) {
+          double distance = 0.0;
+          for (int c = 0; c < 3; ++c) {
+            distance += std::pow(positions[3 * node + c] - reference[3 * node + c], 2);
+          }
+          out << Raw(positions[3 * node]) << ' ' << Raw(positions[3 * node + 1]) << ' '
+              << Raw(positions[3 * node + 2]) << ' '
+              << Raw(colour_by_distance ? std::sqrt(distance) : positions[3 * node + 2]) << '\n';
+        }
+      });
+  return plotter.Draw("compare_drape.gp", Slug(comparison.name) + "_" + name + ".png",
+                      {{"input", file},
+                       {"title", title},
+                       {"colour", colour_by_distance ? "distance to the reference (m)" : "z (m)"}});
+}
+
+// ---- report blocks ------------------------------------------------------------------------------
+
+std::string Seconds(double t) {
+  if (t == kTimeUnknown) return "n/a";
+  return t < 0 ? "—" : Format("%.3g s", t);
+}
+
+Block Table(std::vector<std::vector<std::string>> rows) {
+  Block block;
+  block.kind = Block::Kind::kTable;
+  block.rows = std::move(rows);
+  return block;
+}
+Block Text(const std::string& text, Block::Kind kind = Block::Kind::kText) {
+  Block block;
+  block.kind = kind;
+  block.text = text;
+  return block;
+}
+Block Image(const std::string& path, const std::string& caption) {
+  Block block;
+  block.kind = Block::Kind::kImage;
+  block.image = path;
+  block.text = caption;
+  return block;
+}
+
+std::string ReferenceText(const SceneComparison& c) {
+  const SceneReference& r = c.reference;
+  std::ostringstream text;
+  text << "Scene `" << c.file << "`: " << c.num_nodes << " nodes, " << c.free_dofs
+       << " free dofs, size " << Number(c.size) << " m. Reference: " << r.method
+       << " asked for a relative residual of " << Number(r.tolerance) << ": "
+       << (r.converged ? "converged" : "stopped") << " (" << r.termination << ") in "
+       << r.iterations << " iterations, " << Seconds(r.time_s) << "; "
+       << (r.relative_residual <= r.scene_tolerance ? "accepted: within"
+                                                    : "NOT within (errors below are approximate)")
+       << " the scene's tolerance " << Number(r.scene_tolerance) << ". Certificate: energy "
+       << Format("%.10g", r.energy) << " J, relative residual " << Number(r.relative_residual)
+       << ", largest nodal force " << Number(r.max_node_force) << " N, "
+       << (r.stability_computed ? (r.stable ? "stable" : "unstable") : "stability unknown")
+       << ". A converged run whose energy differs by more than " << Number(r.energy_tolerance)
+       << " J is reported as a different equilibrium.";
+  return text.str();
+}
+
+Block FinalTable(const SceneComparison& c) {
+  std::vector<std::vector<std::string>> rows = {
+      {"solver", "status", "iterations", "time", "residual", "energy gap (J)", "max dist (m)",
+       "RMS dist / size", "DC gap", "peak memory (MB)", "reason"}};
+  for (const RunRecord& run : c.runs) {
+    const bool measured = HasPositions(run);
+    const bool has_dc = measured && std::isfinite(run.drape_coefficient_gap);
+    rows.push_back(
+        {run.solver, RunStatusName(run.status), measured ? std::to_string(run.iterations) : "—",
+         measured ? Seconds(run.time_s) : "—", measured ? Number(run.relative_residual) : "—",
+         measured ? Number(run.energy_gap) : "—", measured ? Number(run.error.max_m) : "—",
+         measured ? Number(RelativeError(run)) : "—",
+         has_dc ? Number(run.drape_coefficient_gap) : "—",
+         measured ? Number(run.peak_memory_mb) : "—", run.reason});
+  }
+  return Table(std::move(rows));
+}
+
+Block SpeedTable(const SceneComparison& c) {
+  std::vector<std::vector<std::string>> rows(1, {"solver"});
+  for (double level : AccuracyLevels()) rows[0].push_back("to " + Format("%.0e", level));
+  for (const RunRecord& run : c.runs) {
+    std::vector<std::string> row = {run.solver};
+    for (double level : AccuracyLevels()) {
+      row.push_back(HasPositions(run) ? Seconds(TimeToReach(run, level)) : "—");
+    }
+    rows.push_back(std::move(row));
+  }
+  return Table(std::move(rows));
+}
+
+const RunRecord* LargestDeviation(const SceneComparison& c) {
+  const RunRecord* largest = nullptr;
+  for (const RunRecord& run : c.runs) {
+    if (!HasPositions(run) || !std::isfinite(run.error.max_m)) continue;
+    if (!largest || run.error.max_m > largest->error.max_m) largest = &run;
+  }
+  return largest;
+}
+
+std::vector<Block> SceneBlocks(const SceneComparison& c, Plotter& plotter) {
+  std::vector<Block> blocks = {Text(c.name, Block::Kind::kHeading)};
+  if (!c.error.empty()) {
+    blocks.push_back(Text("Scene `" + c.file + "` not compared: " + c.error));
+    return blocks;
+  }
+  blocks.push_back(Text(ReferenceText(c)));
+  blocks.push_back(
+      Text("Final state of every run (time: median of the repeats, without the "
+           "time spent measuring in the iteration callback):"));
+  blocks.push_back(FinalTable(c));
+  blocks.push_back(
+      Text("Time to reach a relative position error (RMS node distance to the "
+           "reference / size):"));
+  blocks.push_back(SpeedTable(c));
+  std::string blind;
+  for (const RunRecord& run : c.runs) {
+    if (!run.curve_positions_valid) blind += (blind.empty() ? "" : ", ") + run.solver;
+  }
+  if (!blind.empty()) {
+    blocks.push_back(Text("n/a: " + blind +
+                          " did not expose the current iterate in model.positions during the "
+                          "iteration callback, so their intermediate position errors are "
+                          "unknown (their final state above is measured)."));
+  }
+  if (!plotter.enabled()) return blocks;
+  if (std::string png = CurvesPlot(c, plotter); !png.empty()) {
+    blocks.push_back(Image(png, "Position error against time, " + c.name));
+  }
+  if (std::string png = DrapePlot(c, c.reference.positions, false, "reference",
+                                  c.name + ": reference (" + c.reference.method + ")", plotter);
+      !png.empty()) {
+    blocks.push_back(Image(png, "Reference drape, " + c.name));
+  }
+  if (const RunRecord* run = LargestDeviation(c)) {
+    const std::string title =
+        c.name + ": " + run->solver + ", largest distance " + Number(run->error.max_m) + " m";
+    if (std::string png = DrapePlot(c, run->positions, true, "deviation", title, plotter);
+        !png.empty()) {
+      blocks.push_back(Image(png, "Largest deviation: " + run->solver + " on " + c.name));
+    }
+  }
+  return blocks;
+}
+
+std::vector<Block> HeaderBlocks(const CompareOptions& options, double total_time_s) {
+  const LibraryThreads threads = RunLibrariesOnOneThread();
+  std::ostringstream machine;
+  machine << "Machine: " << CpuModel() << ", " << std::thread::hardware_concurrency()
+          << " logical CPUs (nproc). Threads: runs are sequential; Ceres runs with its default of "
+             "1 thread; CHOLMOD's OpenMP regions "
+          << (threads.openmp_single ? "on 1 thread" : "as the environment sets them")
+          << ", OpenBLAS "
+          << (threads.openblas_single ? "on 1 thread" : "as the environment sets it")
+          << " (src/numerics/library_threads.h). Versions: " << Versions() << '.';
+  std::ostringstream method;
+  method << "Each scene is solved first by the reference (newton to a relative residual of "
+         << Number(options.reference_tolerance)
+         << "; if it does not reach the scene's tolerance, the converged run with the smallest "
+            "residual among the selected solvers). Every solver then runs with the scene's "
+            "tolerance and iteration limit and a time limit of "
+         << Number(options.time_limit) << " s; " << options.repeat
+         << " timed repeat(s), the median is reported. Errors are measured in the iteration "
+            "callback; its time is subtracted from the solver's clock. Peak memory: the "
+            "process's peak resident size (VmHWM) reset through /proc/self/clear_refs before "
+            "each run, minus the resident size (VmRSS) at its start. Total time of this "
+            "comparison: "
+         << Seconds(total_time_s) << '.';
+  return {Text("drape solver comparison", Block::Kind::kHeading), Text(machine.str()),
+          Text(method.str())};
+}
+
+// ---- Markdown and HTML --------------------------------------------------------------------------
+
+std::string Escaped(const std::string& text, bool html) {
+  std::string escaped;
+  for (char c : text) {
+    if (html && c == '<')
+      escaped += "&lt;";
+    else if (html && c == '>')
+      escaped += "&gt;";
+    else if (html && c == '&')
+      escaped += "&amp;";
+    else if (!html && c == '|')
+      escaped += "\\|";
+    else
+      escaped += c;
+  }
+  return escaped;
+}
+
+void WriteMarkdown(const std::vector<Block>& blocks, std::ostream& out) {
+  bool first_heading = true;
+  for (const Block& block : blocks) {
+    switch (block.kind) {
+      case Block::Kind::kHeading:
+        out << (first_heading ? "# " : "## ") << block.text << "\n\n";
+        first_heading = false;
+        break;
+      case Block::Kind::kText:
+        out << block.text << "\n\n";
+        break;
+      case Block::Kind::kImage:
+        out << "![" << block.text << "](" << block.image << ")\n\n";
+        break;
+      case Block::Kind::kTable:
+        for (size_t r = 0; r < block.rows.size(); ++r) {
+          out << '|';
+          for (const std::string& cell : block.rows[r]) out << ' ' << Escaped(cell, false) << " |";
+          out << '\n';
+          if (r == 0) {
+            out << '|';
+            for (size_t k = 0; k < block.rows[0].size(); ++k)
+              out << (k == 0 || block.rows[0][k] == "reason" ? "---|" : "--:|");
+            out << '\n';
+          }
+        }
+        out << '\n';
+        break;
+    }
+  }
+}
+
+std::string Base64(const std::string& bytes) {
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string encoded;
+  size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned value = (static_cast<unsigned char>(bytes[i]) << 16) |
+                           (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                           static_cast<unsigned char>(bytes[i + 2]);
+    for (int shift = 18; shift >= 0; shift -= 6) encoded += alphabet[(value >> shift) & 63];
+  }
+  if (i < bytes.size()) {
+    unsigned value = static_cast<unsigned char>(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) value |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    encoded += alphabet[(value >> 18) & 63];
+    encoded += alphabet[(value >> 12) & 63];
+    encoded += i + 1 < bytes.size() ? alphabet[(value >> 6) & 63] : '=';
+    encoded += '=';
+  }
+  return encoded;
+}
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(file), {});
+}
+
+void WriteHtml(const std::vector<Block>& blocks, const fs::path& out_dir, std::ostream& out) {
+  out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>drape solver comparison"
+         "</title><style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
+         "table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #bbb;padding:2px "
+         "6px}td{text-align:right}td:first-child,td:last-child{text-align:left}img{max-width:100%"
+         "}</style></head><body>\n";
+  bool first_heading = true;
+  for (const Block& block : blocks) {
+    switch (block.kind) {
+      case Block::Kind::kHeading:
+        out << (first_heading ? "<h1>" : "<h2>") << Escaped(block.text, true)
+            << (first_heading ? "</h1>\n" : "</h2>\n");
+        first_heading = false;
+        break;
+      case Block::Kind::kText:
+        out << "<p>" << Escaped(block.text, true) << "</p>\n";
+        break;
+      case Block::Kind::kImage:
+        out << "<figure><img alt=\"" << Escaped(block.text, true)
+            << "\" src=\"data:image/png;base64," << Base64(ReadFile(out_dir / block.image))
+            << "\"><figcaption>" << Escaped(block.text, true) << "</figcaption></figure>\n";
+        break;
+      case Block::Kind::kTable:
+        out << "<table>\n";
+        for (size_t r = 0; r < block.rows.size(); ++r) {
+          out << "<tr>";
+          for (const std::string& cell : block.rows[r]) {
+            out << (r == 0 ? "<th>" : "<td>") << Escaped(cell, true)
+                << (r == 0 ? "</th>" : "</td>");
+          }
+          out << "</tr>\n";
+        }
+        out << "</table>\n";
+        break;
+    }
+  }
+  out << "</body></html>\n";
+}
+
+}  // namespace
+
+void WriteCompareReport(const std::vector<SceneComparison>& comparisons,
+                        const CompareOptions& options, double total_time_s, std::ostream& log) {
+  const fs::path out_dir = options.out_dir;
+  fs::create_directories(out_dir);
+  WriteAtomically(out_dir / "runs.csv", [&](std::ostream& o) { WriteRunsCsv(comparisons, o); });
+  WriteAtomically(out_dir / "curves.csv", [&](std::ostream& o) { WriteCurvesCsv(comparisons, o); });
+  WriteAtomically(out_dir / "references.csv",
+                  [&](std::ostream& o) { WriteReferencesCsv(comparisons, o); });
+
+  Plotter plotter(options, out_dir, log);
+  std::vector<Block> blocks = HeaderBlocks(options, total_time_s);
+  if (plotter.enabled()) {
+    if (std::string png = ParetoPlot(comparisons, plotter); !png.empty()) {
+      blocks.push_back(Image(png, "Time against final position error, every solver and scene"));
+    }
+  }
+  for (const SceneComparison& comparison : comparisons) {
+    std::vector<Block> scene_blocks = SceneBlocks(comparison, plotter);
+    blocks.insert(blocks.end(), scene_blocks.begin(), scene_blocks.end());
+  }
+  blocks.push_back(
+      Text("Raw numbers: runs.csv (one row per run), curves.csv (one row per "
+           "iteration per run), references.csv (one row per scene)."));
+  WriteAtomically(out_dir / "report.md", [&](std::ostream& o) { WriteMarkdown(blocks, o); });
+  WriteAtomically(out_dir / "report.html", [&](std::ostream& o) { WriteHtml(blocks, out_dir, o); });
+}
+
+}  // namespace drape

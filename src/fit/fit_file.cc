@@ -1,0 +1,508 @@
+// The fit-file schema (issue 8; README "Fitting"): keys, types, ranges and defaults, and the
+// measurement data files. Every error is located in the file that holds it.
+#include "src/fit/fit_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "src/model/model.h"
+#include "src/scene/scene_loader.h"
+#include "src/scene/yaml_reader.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Resolve(const std::string& directory, const std::string& path) {
+  const fs::path given(path);
+  if (given.is_absolute()) return given.lexically_normal().string();
+  return (fs::path(directory) / given).lexically_normal().string();
+}
+
+std::string DirectoryOf(const std::string& path) {
+  const std::string directory = fs::path(path).parent_path().string();
+  return directory.empty() ? "." : directory;
+}
+
+YAML::Node ReadFitDocument(const std::string& path) {
+  std::error_code error;
+  if (fs::is_directory(path, error)) {
+    throw InputError(path + ": cannot read the fit file: it is a folder");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read the fit file: " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text.str());
+    if (documents.size() > 1) {
+      const YAML::Mark mark = documents[1].Mark();
+      throw InputError(Location{path, mark.line + 1, mark.column + 1, ""},
+                       "a fit file holds one YAML document; this is a second one");
+    }
+    return documents.empty() ? YAML::Node() : documents[0];
+  } catch (const YAML::Exception& exception) {
+    const YAML::Mark mark = exception.mark;
+    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
+                     "YAML syntax error: " + exception.msg);
+  }
+}
+
+// ------------------------------------------------------------------------------- data files
+
+// The numbers of one comma- or blank-separated row; the column of each field for messages.
+bool SplitNumbers(const std::string& line, std::vector<double>* numbers, std::vector<int>* columns,
+                  int* bad_column) {
+  numbers->clear();
+  columns->clear();
+  size_t k = 0;
+  while (k < line.size()) {
+    while (k < line.size() && (line[k] == ',' || std::isspace(static_cast<unsigned char>(line[k]))))
+      ++k;
+    if (k >= line.size()) break;
+    size_t end = k;
+    while (end < line.size() && line[end] != ',' &&
+           !std::isspace(static_cast<unsigned char>(line[end])))
+      ++end;
+    std::string error;
+    const auto number = ParseNumber(line.substr(k, end - k), &error);
+    if (!number) {
+      *bad_column = static_cast<int>(k) + 1;
+      return false;
+    }
+    numbers->push_back(*number);
+    columns->push_back(static_cast<int>(k) + 1);
+    k = end;
+  }
+  return true;
+}
+
+struct Rows {
+  std::vector<std::vector<double>> values;
+  std::vector<int> lines;
+};
+
+std::ifstream OpenData(const std::string& path, const Location& where) {
+  std::ifstream in(path);
+  if (!in) throw InputError(where, "cannot read '" + path + "': " + std::strerror(errno));
+  return in;
+}
+
+// Rows of numbers; a first line that is not numeric is a header. `first_line` is the file line of
+// the stream's first line; `max_rows` < 0 reads to the end.
+Rows ReadRows(std::istream& in, const std::string& path, int first_line, int max_rows,
+              bool allow_header) {
+  Rows rows;
+  std::string line;
+  std::vector<double> numbers;
+  std::vector<int> columns;
+  for (int number = first_line;
+       (max_rows < 0 || static_cast<int>(rows.values.size()) < max_rows) && std::getline(in, line);
+       ++number) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
+    int bad_column = 0;
+    if (!SplitNumbers(line, &numbers, &columns, &bad_column)) {
+      if (allow_header && number == first_line) continue;
+      throw InputError(Location{path, number, bad_column, ""}, "expected a number");
+    }
+    rows.values.push_back(numbers);
+    rows.lines.push_back(number);
+  }
+  return rows;
+}
+
+void RequireColumns(const Rows& rows, size_t row, size_t count, const std::string& path,
+                    const std::string& what) {
+  if (rows.values[row].size() != count) {
+    throw InputError(Location{path, rows.lines[row], 1, ""},
+                     "expected " + std::to_string(count) + " columns (" + what + "), got " +
+                         std::to_string(rows.values[row].size()));
+  }
+}
+
+int RowId(const Rows& rows, size_t row, const std::string& path) {
+  const double id = rows.values[row][0];
+  if (id < 0 || id != static_cast<int>(id)) {
+    throw InputError(Location{path, rows.lines[row], 1, ""},
+                     "expected a node id (a whole number "
+                     ">= 0) in the first column");
+  }
+  return static_cast<int>(id);
+}
+
+// An ASCII PLY file's vertices (the first three properties must be x, y, z).
+PositionData ReadPly(const std::string& path, const Location& where) {
+  std::ifstream in = OpenData(path, where);
+  std::string line;
+  int line_number = 0, vertices = -1;
+  std::vector<std::string> properties;
+  bool in_vertex = false;
+  while (std::getline(in, line)) {
+    ++line_number;
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if (line_number == 1 && word != "ply") {
+      throw InputError(Location{path, 1, 1, ""}, "expected 'ply' on the first line");
+    }
+    if (word == "format" && line.find("ascii") == std::string::npos) {
+      throw InputError(Location{path, line_number, 1, ""},
+                       "only ASCII PLY files are read; convert this one to ASCII");
+    }
+    if (word == "element") {
+      std::string name;
+      words >> name;
+      in_vertex = name == "vertex";
+      if (in_vertex) words >> vertices;
+    }
+    if (word == "property" && in_vertex) {
+      std::string type, name;
+      words >> type >> name;
+      properties.push_back(name);
+    }
+    if (word == "end_header") break;
+  }
+  if (vertices <= 0 || properties.size() < 3 || properties[0] != "x" || properties[1] != "y" ||
+      properties[2] != "z") {
+    throw InputError(Location{path, 1, 1, ""},
+                     "expected a vertex element whose first properties are x, y, z");
+  }
+  const Rows rows = ReadRows(in, path, line_number + 1, vertices, false);
+  if (static_cast<int>(rows.values.size()) < vertices) {
+    throw InputError(Location{path, line_number + 1, 1, ""},
+                     "the header announces " + std::to_string(vertices) + " vertices, found " +
+                         std::to_string(rows.values.size()));
+  }
+  PositionData data;
+  data.cloud = true;
+  for (const auto& row : rows.values) data.points.emplace_back(row[0], row[1], row[2]);
+  data.lines = rows.lines;
+  return data;
+}
+
+// ----------------------------------------------------------------------------- fit file
+
+FitParameter ReadParameter(const YamlValue& value) {
+  const YamlMap map(value, {"key", "initial", "bounds", "log"});
+  FitParameter parameter;
+  parameter.where = map.Get("key").where;
+  parameter.key = ReadString(map.Get("key"));
+  if (parameter.key.empty() || parameter.key.find('=') != std::string::npos) {
+    Fail(map.Get("key"), "expected a scene key by path, such as material.finite_volume.D_warp");
+  }
+  if (const auto log = map.Find("log")) parameter.log = ReadBool(*log);
+  const YamlValue initial = map.Get("initial");
+  parameter.initial = parameter.log ? ReadPositive(initial) : ReadNumber(initial);
+  const YamlValue bounds = map.Get("bounds");
+  const std::vector<double> range = ReadNumbers(bounds, 2);
+  parameter.lower = range[0];
+  parameter.upper = range[1];
+  if (!(parameter.lower < parameter.upper))
+    Fail(bounds, "expected [lower, upper] with lower < upper");
+  if (parameter.log && !(parameter.lower > 0)) {
+    Fail(bounds, "a log parameter needs a positive lower bound");
+  }
+  if (parameter.initial < parameter.lower || parameter.initial > parameter.upper) {
+    Fail(initial, "the initial value lies outside the bounds");
+  }
+  return parameter;
+}
+
+std::vector<FitParameter> ReadParameters(const YamlValue& value) {
+  const auto items = ReadList(value);
+  if (!value.get().IsSequence() || items.empty()) {
+    Fail(value,
+         "expected a list of parameters such as {key: material.finite_volume.D_warp, "
+         "initial: 1.0e-5, bounds: [1.0e-7, 1.0e-3], log: true}");
+  }
+  std::vector<FitParameter> parameters;
+  for (const auto& item : items) {
+    parameters.push_back(ReadParameter(item));
+    for (size_t k = 0; k + 1 < parameters.size(); ++k) {
+      if (parameters[k].key == parameters.back().key) {
+        throw InputError(parameters.back().where,
+                         "'" + parameters.back().key + "' is fitted twice");
+      }
+    }
+  }
+  return parameters;
+}
+
+void ReadCommon(const YamlMap& map, FitMeasurement* measurement) {
+  if (const auto weight = map.Find("weight")) measurement->weight = ReadPositive(*weight);
+  if (const auto sigma = map.Find("sigma")) measurement->sigma = ReadPositive(*sigma);
+}
+
+FitMeasurement ReadMeasurementKind(const std::string& kind, const YamlValue& value,
+                                   const std::string& directory) {
+  FitMeasurement measurement;
+  measurement.where = value.where;
+  if (kind == "drape_coefficient") {
+    const YamlMap map(value, {"value", "weight", "sigma", "disc_radius"});
+    measurement.kind = FitMeasurement::Kind::kDrapeCoefficient;
+    measurement.value = ReadPositive(map.Get("value"));
+    if (const auto radius = map.Find("disc_radius"))
+      measurement.disc_radius = ReadPositive(*radius);
+    measurement.sigma = 0.01;
+    ReadCommon(map, &measurement);
+  } else if (kind == "bending_length") {
+    const YamlMap map(value, {"value", "weight", "sigma", "direction"});
+    measurement.kind = FitMeasurement::Kind::kBendingLength;
+    measurement.value = ReadPositive(map.Get("value"));
+    if (const auto direction = map.Find("direction")) {
+      measurement.direction = ReadChoice(*direction, {"warp", "weft"});
+    }
+    measurement.sigma = 0.001;
+    ReadCommon(map, &measurement);
+  } else {
+    const YamlMap map(value, {"file", "weight", "sigma"});
+    const YamlValue file = map.Get("file");
+    measurement.file = Resolve(directory, ReadString(file));
+    if (kind == "positions") {
+      measurement.kind = FitMeasurement::Kind::kPositions;
+      measurement.positions = ReadPositionFile(measurement.file, file.where);
+      measurement.sigma = 0.001;
+    } else {
+      measurement.kind = FitMeasurement::Kind::kReactions;
+      measurement.reactions = ReadReactionFile(measurement.file, file.where);
+      double largest = 0.0;
+      for (const auto& force : measurement.reactions.forces)
+        largest = std::max(largest, force.norm());
+      measurement.sigma = largest > 0 ? 0.01 * largest : 1e-3;
+    }
+    ReadCommon(map, &measurement);
+  }
+  return measurement;
+}
+
+const std::vector<std::string>& MeasurementKinds() {
+  static const std::vector<std::string> kinds = {"drape_coefficient", "positions", "bending_length",
+                                                 "reactions", "scene"};
+  return kinds;
+}
+
+std::vector<FitMeasurement> ReadMeasurements(const YamlValue& value, const std::string& directory,
+                                             std::vector<FitSpecimen>* specimens, bool nested);
+
+// `- scene: other.yaml` with a sibling `measurements:` list, or `- scene: {file: other.yaml,
+// measurements: [...]}`.
+FitSpecimen ReadSpecimen(const YamlMap& item, const std::string& directory) {
+  FitSpecimen specimen;
+  const YamlValue scene = item.Get("scene");
+  specimen.where = scene.where;
+  std::optional<YamlValue> measurements = item.Find("measurements");
+  if (scene.get().IsMap()) {
+    if (measurements)
+      Fail(*measurements, "give the measurements inside scene: {file, measurements}");
+    const YamlMap map(scene, {"file", "measurements"});
+    specimen.scene_file = Resolve(directory, ReadString(map.Get("file")));
+    measurements = map.Get("measurements");
+  } else {
+    specimen.scene_file = Resolve(directory, ReadString(scene));
+    if (!measurements) {
+      Fail(scene,
+           "another specimen needs its own measurements: add `measurements: [...]` to this "
+           "item, or write scene: {file: " +
+               ReadString(scene) + ", measurements: [...]}");
+    }
+  }
+  specimen.measurements = ReadMeasurements(*measurements, directory, nullptr, true);
+  return specimen;
+}
+
+std::vector<FitMeasurement> ReadMeasurements(const YamlValue& value, const std::string& directory,
+                                             std::vector<FitSpecimen>* specimens, bool nested) {
+  const auto items = ReadList(value);
+  if (!value.get().IsSequence() || items.empty()) {
+    Fail(value, "expected a list of measurements such as - drape_coefficient: {value: 0.62}");
+  }
+  std::vector<FitMeasurement> measurements;
+  for (const auto& item : items) {
+    std::vector<std::string> allowed = MeasurementKinds();
+    allowed.push_back("measurements");
+    const YamlMap map(item, allowed);
+    std::vector<std::string> kinds;
+    for (const auto& key : map.Keys()) {
+      if (key != "measurements") kinds.push_back(key);
+    }
+    if (kinds.size() != 1) {
+      Fail(item,
+           "expected exactly one measurement kind (drape_coefficient, positions, "
+           "bending_length, reactions or scene) in this item");
+    }
+    if (kinds[0] == "scene") {
+      if (nested) Fail(map.Get("scene"), "a specimen's measurements cannot name another scene");
+      specimens->push_back(ReadSpecimen(map, directory));
+      continue;
+    }
+    if (map.Has("measurements")) {
+      Fail(map.Get("measurements"), "only a `scene:` item has its own measurements");
+    }
+    measurements.push_back(ReadMeasurementKind(kinds[0], map.Get(kinds[0]), directory));
+  }
+  return measurements;
+}
+
+std::string FormatValue(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// Checks a specimen's scene with every parameter at its initial value, and each measurement
+// against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
+void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
+  std::vector<std::string> overrides;
+  for (const auto& parameter : spec.parameters) {
+    overrides.push_back(parameter.key + "=" + FormatValue(parameter.initial));
+  }
+  Scene scene;
+  try {
+    scene = LoadScene(specimen.scene_file, overrides);
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    if (message.rfind("--set:", 0) != 0) throw;
+    // Locate a bad key at the parameter that names it.
+    const int index = std::atoi(message.c_str() + 6) - 1;
+    const size_t text = message.find(": ", 6);
+    const FitParameter& parameter = spec.parameters.at(std::max(0, index));
+    throw InputError(parameter.where,
+                     "not a numeric key of " + specimen.scene_file + ": " +
+                         (text == std::string::npos ? message : message.substr(text + 2)));
+  }
+  const Model model = BuildModel(scene);
+  for (const auto& measurement : specimen.measurements) {
+    using Kind = FitMeasurement::Kind;
+    if (measurement.kind == Kind::kPositions && !measurement.positions.cloud) {
+      const auto& ids = measurement.positions.ids;
+      for (size_t k = 0; k < ids.size(); ++k) {
+        const int id = ids[k];
+        if (id >= model.num_nodes) {
+          throw InputError(Location{measurement.file, measurement.positions.lines[k], 1, ""},
+                           "node id " + std::to_string(id) + " is out of range (the scene has " +
+                               std::to_string(model.num_nodes) + " nodes)");
+        }
+      }
+    }
+    if (measurement.kind == Kind::kPositions && measurement.positions.cloud &&
+        model.triangles.empty()) {
+      throw InputError(measurement.where,
+                       "a point cloud needs a surface mesh (a grid, circle or arc)");
+    }
+    if (measurement.kind == Kind::kReactions) {
+      const auto& ids = measurement.reactions.ids;
+      for (size_t k = 0; k < ids.size(); ++k) {
+        const int id = ids[k];
+        if (id >= model.num_nodes || !model.fixed[3 * id] || !model.fixed[3 * id + 1] ||
+            !model.fixed[3 * id + 2]) {
+          throw InputError(Location{measurement.file, measurement.reactions.lines[k], 1, ""},
+                           "node " + std::to_string(id) + " is not a fixed node of the scene");
+        }
+      }
+    }
+    if (measurement.kind == Kind::kDrapeCoefficient && model.triangles.empty()) {
+      throw InputError(measurement.where, "a drape coefficient needs a surface mesh");
+    }
+    if (measurement.kind == Kind::kBendingLength && scene.material.model != "finite_volume") {
+      throw InputError(measurement.where,
+                       "the virtual Peirce test needs material.model: finite_volume");
+    }
+  }
+}
+
+void ReadTop(const YamlValue& root, FitSpec* spec) {
+  const YamlMap top(root, {"scene", "parameters", "measurements", "method", "output",
+                           "max_evaluations", "tolerance"});
+  const std::string directory = DirectoryOf(spec->file);
+  FitSpecimen main;
+  main.where = top.Get("scene").where;
+  main.scene_file = Resolve(directory, ReadString(top.Get("scene")));
+  spec->parameters = ReadParameters(top.Get("parameters"));
+  std::vector<FitSpecimen> others;
+  main.measurements = ReadMeasurements(top.Get("measurements"), directory, &others, false);
+  spec->specimens.push_back(main);
+  for (auto& other : others) spec->specimens.push_back(other);
+  if (const auto method = top.Find("method")) {
+    spec->method = ReadChoice(*method, FitMethods());
+    spec->method_where = method->where;
+  }
+  if (const auto count = top.Find("max_evaluations"))
+    spec->max_evaluations = ReadIntAtLeast(*count, 1);
+  if (const auto tolerance = top.Find("tolerance")) spec->tolerance = ReadPositive(*tolerance);
+  // Like a scene's output.directory: relative to the fit file's folder.
+  spec->output_directory = Resolve(directory, "out/" + spec->name);
+  if (const auto output = top.Find("output")) {
+    const YamlMap map(*output, {"directory"});
+    if (const auto folder = map.Find("directory")) {
+      const std::string given = ReadString(*folder);
+      if (given.empty()) Fail(*folder, "expected a folder, got nothing");
+      spec->output_directory = Resolve(directory, given);
+    }
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& FitMethods() {
+  static const std::vector<std::string> methods = {"bobyqa", "nelder-mead",    "sbplx",
+                                                   "cobyla", "implicit-lbfgs", "implicit-lm"};
+  return methods;
+}
+
+PositionData ReadPositionFile(const std::string& path, const Location& where) {
+  const std::string extension = fs::path(path).extension().string();
+  if (extension == ".ply") return ReadPly(path, where);
+  std::ifstream in = OpenData(path, where);
+  const Rows rows = ReadRows(in, path, 1, -1, true);
+  if (rows.values.empty()) throw InputError(where, "'" + path + "' holds no points");
+  PositionData data;
+  data.cloud = extension == ".xyz" || rows.values[0].size() == 3;
+  for (size_t row = 0; row < rows.values.size(); ++row) {
+    if (data.cloud) {
+      RequireColumns(rows, row, 3, path, "x,y,z");
+      data.points.emplace_back(rows.values[row][0], rows.values[row][1], rows.values[row][2]);
+    } else {
+      RequireColumns(rows, row, 4, path, "id,x,y,z");
+      data.ids.push_back(RowId(rows, row, path));
+      data.points.emplace_back(rows.values[row][1], rows.values[row][2], rows.values[row][3]);
+    }
+  }
+  data.lines = rows.lines;
+  return data;
+}
+
+ReactionData ReadReactionFile(const std::string& path, const Location& where) {
+  std::ifstream in = OpenData(path, where);
+  const Rows rows = ReadRows(in, path, 1, -1, true);
+  if (rows.values.empty()) throw InputError(where, "'" + path + "' holds no reactions");
+  ReactionData data;
+  for (size_t row = 0; row < rows.values.size(); ++row) {
+    RequireColumns(rows, row, 4, path, "id,fx,fy,fz");
+    data.ids.push_back(RowId(rows, row, path));
+    data.forces.emplace_back(rows.values[row][1], rows.values[row][2], rows.values[row][3]);
+  }
+  data.lines = rows.lines;
+  return data;
+}
+
+FitSpec LoadFitFile(const std::string& path) {
+  FitSpec spec;
+  spec.file = path;
+  spec.name = fs::path(path).stem().string();
+  spec.root = Location{path, 1, 1, ""};
+  const YAML::Node document = ReadFitDocument(path);
+  YamlOrigins origins(path);
+  ReadTop(YamlRoot(document, origins), &spec);
+  for (const auto& specimen : spec.specimens) CheckSpecimen(spec, specimen);
+  return spec;
+}
+
+}  // namespace drape

@@ -1,0 +1,97 @@
+// The fit file of `drape fit` (issue 8): which scene keys to fit, to which measurements, by which
+// method. Read with located errors ("file:line:column: key.path: what is wrong"); measurement
+// data files (csv, xyz, ply) are read here too, so that every bad input is reported before a
+// single equilibrium is solved.
+#ifndef DRAPE_SRC_FIT_FIT_FILE_H_
+#define DRAPE_SRC_FIT_FIT_FILE_H_
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "src/scene/scene.h"
+
+namespace drape {
+
+// One fitted scene key. The outer optimiser works on u = log θ when `log`, on θ otherwise.
+struct FitParameter {
+  std::string key;  // a numeric scene key by path, e.g. material.finite_volume.D_warp
+  double initial = 0.0;
+  double lower = 0.0, upper = 0.0;  // bounds on θ
+  bool log = false;
+  Location where;
+};
+
+// Measured node positions: `id,x,y,z` rows (chosen nodes), or a point cloud (`x,y,z` csv, .xyz,
+// .ply) compared by the distance of each point to the nearest point of the model's surface.
+struct PositionData {
+  bool cloud = false;
+  std::vector<int> ids;                 // node ids (not a cloud)
+  std::vector<Eigen::Vector3d> points;  // m
+  std::vector<int> lines;               // the file line of each point
+};
+
+// Measured support reactions: `id,fx,fy,fz` rows for fixed nodes, N.
+struct ReactionData {
+  std::vector<int> ids;
+  std::vector<Eigen::Vector3d> forces;
+  std::vector<int> lines;  // the file line of each row
+};
+
+struct FitMeasurement {
+  enum class Kind { kDrapeCoefficient, kPositions, kBendingLength, kReactions };
+  Kind kind = Kind::kPositions;
+  double value = 0.0;   // drape coefficient (dimensionless) or bending length (m)
+  double weight = 1.0;  // multiplies the squared, normalised residuals
+  // The measurement's standard uncertainty, in its own unit: the residuals are (model −
+  // measured) / sigma. Defaults: drape coefficient 0.01, positions 1 mm, bending length 1 mm,
+  // reactions 1% of the largest measured force.
+  double sigma = 0.0;
+  // drape_coefficient: the support disc radius (m) for Cusick's DC; 0 = the scene's disk
+  // obstacle, and without one the ratio A_shadow / A_flat.
+  double disc_radius = 0.0;
+  // bending_length: the yarn direction of the virtual Peirce strip ("warp" or "weft").
+  std::string direction = "warp";
+  std::string file;  // the data file (positions, reactions), resolved
+  PositionData positions;
+  ReactionData reactions;
+  Location where;
+};
+
+// A specimen: one scene solved with the fitted parameters, and what was measured on it. The first
+// is the fit file's `scene`; `- scene: {file: other.yaml, measurements: [...]}` adds more.
+struct FitSpecimen {
+  std::string scene_file;  // resolved against the fit file's folder
+  std::vector<FitMeasurement> measurements;
+  Location where;
+};
+
+struct FitSpec {
+  std::string file;  // the fit file as given
+  std::string name;  // its stem
+  std::vector<FitParameter> parameters;
+  std::vector<FitSpecimen> specimens;  // [0] is the main scene
+  // bobyqa | nelder-mead | sbplx | cobyla | implicit-lbfgs | implicit-lm
+  std::string method = "bobyqa";
+  int max_evaluations = 200;  // outer objective evaluations
+  double tolerance = 1e-8;    // relative change of the (log-)parameters that stops the outer loop
+  // Resolved against the fit file's folder (as a scene's output.directory); default out/<name>.
+  std::string output_directory;
+  Location method_where;
+  Location root;
+};
+
+const std::vector<std::string>& FitMethods();
+
+// Loads and checks `path` and the files it names (scenes are loaded once with every parameter at
+// its initial value, which checks the keys). Throws InputError on any bad input.
+FitSpec LoadFitFile(const std::string& path);
+
+// Reads a positions file (`id,x,y,z`, or `x,y,z` / .xyz / .ply as a point cloud); `where` locates
+// the key that names it. Throws InputError located in the data file for a bad row.
+PositionData ReadPositionFile(const std::string& path, const Location& where);
+ReactionData ReadReactionFile(const std::string& path, const Location& where);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_FIT_FIT_FILE_H_

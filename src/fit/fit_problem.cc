@@ -1,0 +1,369 @@
+#include "src/fit/fit_problem.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "src/analysis/drape_analysis.h"
+#include "src/model/equilibrium.h"
+#include "src/scene/scene_loader.h"
+#include "src/solvers/solver.h"
+#include "src/numerics/sparse_hessian.h"
+
+namespace drape {
+namespace {
+
+constexpr double kParameterStep = 1e-4;  // in u, for ∂g/∂u
+
+std::string FormatValue(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+std::string BlockLabel(const FitMeasurement& measurement) {
+  switch (measurement.kind) {
+    case FitMeasurement::Kind::kDrapeCoefficient:
+      return "drape_coefficient";
+    case FitMeasurement::Kind::kBendingLength:
+      return "bending_length (" + measurement.direction + ")";
+    case FitMeasurement::Kind::kPositions:
+      return "positions " + measurement.file;
+    case FitMeasurement::Kind::kReactions:
+      return "reactions " + measurement.file;
+  }
+  return "";
+}
+
+// The displacement (as a fraction of the model's size) of the central differences that carry a
+// direction dx*/du through a measurement function: the rasterised shadow needs a step of a few
+// pixels, the smooth kinds a small one.
+double DirectionStep(const FitMeasurement& measurement) {
+  return measurement.kind == FitMeasurement::Kind::kDrapeCoefficient ? 2e-3 : 1e-6;
+}
+
+}  // namespace
+
+FitProblem::FitProblem(const FitSpec& spec) : spec_(spec) {
+  for (size_t s = 0; s < spec_.specimens.size(); ++s) {
+    FitEquilibrium main;
+    main.specimen = static_cast<int>(s);
+    equilibria_.push_back(std::move(main));
+    const int main_index = static_cast<int>(equilibria_.size()) - 1;
+    const auto& measurements = spec_.specimens[s].measurements;
+    for (size_t k = 0; k < measurements.size(); ++k) {
+      ResidualBlock block;
+      block.specimen = static_cast<int>(s);
+      block.measurement = static_cast<int>(k);
+      block.equilibrium = main_index;
+      if (measurements[k].kind == FitMeasurement::Kind::kBendingLength) {
+        FitEquilibrium strip;
+        strip.specimen = static_cast<int>(s);
+        strip.strip_of = static_cast<int>(k);
+        equilibria_.push_back(std::move(strip));
+        block.equilibrium = static_cast<int>(equilibria_.size()) - 1;
+      }
+      block.offset = num_residuals_;
+      block.count = ResidualCount(measurements[k]);
+      block.label = BlockLabel(measurements[k]);
+      if (spec_.specimens.size() > 1) block.label += " @ " + spec_.specimens[s].scene_file;
+      num_residuals_ += block.count;
+      blocks_.push_back(block);
+      equilibria_[block.equilibrium].measured = true;
+    }
+  }
+}
+
+std::vector<double> FitProblem::ToParameters(const std::vector<double>& u) const {
+  std::vector<double> theta(u.size());
+  for (size_t j = 0; j < u.size(); ++j) {
+    const FitParameter& p = spec_.parameters[j];
+    theta[j] = p.log ? std::exp(u[j]) : u[j] * (p.upper - p.lower);
+  }
+  return theta;
+}
+
+std::vector<double> FitProblem::ToUnknowns(const std::vector<double>& theta) const {
+  std::vector<double> u(theta.size());
+  for (size_t j = 0; j < theta.size(); ++j) {
+    const FitParameter& p = spec_.parameters[j];
+    u[j] = p.log ? std::log(theta[j]) : theta[j] / (p.upper - p.lower);
+  }
+  return u;
+}
+
+std::vector<double> FitProblem::ParameterDerivatives(const std::vector<double>& u) const {
+  const std::vector<double> theta = ToParameters(u);
+  std::vector<double> derivative(u.size());
+  for (size_t j = 0; j < u.size(); ++j) {
+    const FitParameter& p = spec_.parameters[j];
+    derivative[j] = p.log ? theta[j] : p.upper - p.lower;
+  }
+  return derivative;
+}
+
+std::vector<double> FitProblem::LowerUnknowns() const {
+  std::vector<double> lower;
+  for (const auto& p : spec_.parameters) lower.push_back(p.lower);
+  return ToUnknowns(lower);
+}
+
+std::vector<double> FitProblem::UpperUnknowns() const {
+  std::vector<double> upper;
+  for (const auto& p : spec_.parameters) upper.push_back(p.upper);
+  return ToUnknowns(upper);
+}
+
+const FitMeasurement& FitProblem::MeasurementOf(const ResidualBlock& block) const {
+  return spec_.specimens[block.specimen].measurements[block.measurement];
+}
+
+Scene FitProblem::SceneAt(const FitEquilibrium& equilibrium,
+                          const std::vector<double>& theta) const {
+  std::vector<std::string> overrides;
+  for (size_t j = 0; j < theta.size(); ++j) {
+    overrides.push_back(spec_.parameters[j].key + "=" + FormatValue(theta[j]));
+  }
+  Scene scene = LoadScene(spec_.specimens[equilibrium.specimen].scene_file, overrides);
+  if (equilibrium.strip_of < 0) return scene;
+  return PeirceStripScene(scene,
+                          spec_.specimens[equilibrium.specimen].measurements[equilibrium.strip_of]);
+}
+
+// The stored equilibrium solved at the u nearest to `u` (Euclidean in u) if it lies within
+// kWarmStartRadius, or null.
+static const std::vector<double>* NearestStart(const FitEquilibrium& equilibrium,
+                                               const std::vector<double>& u) {
+  const std::vector<double>* start = nullptr;
+  double best = kWarmStartRadius * kWarmStartRadius;
+  for (size_t k = 0; k < equilibrium.solved_u.size(); ++k) {
+    double distance = 0.0;
+    for (size_t j = 0; j < u.size(); ++j) {
+      distance += std::pow(equilibrium.solved_u[k][j] - u[j], 2);
+    }
+    if (distance <= best) {
+      best = distance;
+      start = &equilibrium.solved_positions[k];
+    }
+  }
+  return start;
+}
+
+MeasurementContext FitProblem::ContextOf(const ResidualBlock& block) const {
+  const FitEquilibrium& equilibrium = equilibria_[block.equilibrium];
+  MeasurementContext context;
+  context.disc_radius = DiscRadius(equilibrium.scene);
+  context.flat_area = equilibrium.flat_area;
+  return context;
+}
+
+namespace {
+
+struct InnerRun {
+  int iterations = 0;
+  double residual = INFINITY;  // relative, recomputed at the final positions
+  bool stagnated = false;      // stopped at its roundoff floor (`best`) before the tolerance
+  double best = INFINITY;
+};
+
+// One newton solve from model.positions, stopped at `tolerance`, at `max_iterations`, or when
+// the residual, already acceptable, has not halved in kStagnationIterations iterations.
+InnerRun RunNewton(Model& model, double tolerance, int max_iterations, double time_limit) {
+  SolverOptions options;
+  options.tolerance = tolerance;
+  options.max_iterations = max_iterations;
+  options.time_limit = time_limit;
+  InnerRun run;
+  int best_iteration = 0;
+  options.on_iteration = [&](const IterationRecord& record) {
+    if (record.relative_residual < 0.5 * run.best) {
+      run.best = record.relative_residual;
+      best_iteration = record.iteration;
+    }
+    run.stagnated =
+        run.best <= kAcceptedResidual && record.iteration - best_iteration >= kStagnationIterations;
+    return !run.stagnated;
+  };
+  run.iterations = FindSolver("newton")->make()->Solve(model, options).iterations;
+  double energy = 0.0;
+  std::vector<double> gradient;
+  if (EvaluateEnergy(model, model.positions.data(), &energy, &gradient)) {
+    run.residual = RelativeResidual(model, gradient);
+  }
+  return run;
+}
+
+}  // namespace
+
+bool FitProblem::SolveEquilibrium(FitEquilibrium* equilibrium, const std::vector<double>& u,
+                                  bool cold) {
+  equilibrium->scene = SceneAt(*equilibrium, ToParameters(u));
+  auto model = std::make_unique<Model>(BuildModel(equilibrium->scene));
+  if (equilibrium->flat_area == 0.0 && !model->triangles.empty()) {
+    equilibrium->flat_area = FlatShadowArea(*model);
+  }
+  if (equilibrium->tolerance == 0.0) {
+    equilibrium->tolerance = std::min(equilibrium->scene.solver.tolerance, kInnerTolerance);
+  }
+  const SolverSpec& limits = equilibrium->scene.solver;
+  // Warm start: the free coordinates of the nearest equilibrium (fixed ones as the scene says),
+  // with a short budget; from the scene's own start if that fails.
+  InnerRun run;
+  const std::vector<double>* start = cold ? nullptr : NearestStart(*equilibrium, u);
+  if (start && start->size() == model->positions.size()) {
+    for (size_t k = 0; k < model->positions.size(); ++k) {
+      if (!model->fixed[k]) model->positions[k] = (*start)[k];
+    }
+    run = RunNewton(*model, equilibrium->tolerance,
+                    std::min(kWarmStartIterations, limits.max_iterations), limits.time_limit);
+  }
+  int iterations = run.iterations;
+  if (!(run.residual <= kAcceptedResidual)) {
+    model->positions = model->initial;
+    run = RunNewton(*model, equilibrium->tolerance, limits.max_iterations, limits.time_limit);
+    iterations += run.iterations;
+  }
+  // A floor above the tolerance: later solves of this equilibrium stop as soon as they reach it.
+  if (run.stagnated) {
+    equilibrium->tolerance =
+        std::min(kAcceptedResidual, std::max(equilibrium->tolerance, 2 * run.best));
+  }
+  equilibrium->relative_residual = run.residual;
+  equilibrium->converged = run.residual <= kAcceptedResidual;
+  equilibrium->inner_iterations = iterations;
+  equilibrium->positions = model->positions;
+  equilibrium->model = std::move(model);
+  if (equilibrium->converged) {
+    equilibrium->solved_u.push_back(u);
+    equilibrium->solved_positions.push_back(equilibrium->positions);
+  }
+  return equilibrium->converged;
+}
+
+FitEvaluation FitProblem::Evaluate(const std::vector<double>& u, bool cold) {
+  FitEvaluation evaluation;
+  for (auto& equilibrium : equilibria_) {
+    if (!equilibrium.measured) continue;  // a specimen measured only through its Peirce strips
+    evaluation.converged &= SolveEquilibrium(&equilibrium, u, cold);
+    evaluation.inner_iterations += equilibrium.inner_iterations;
+  }
+  evaluation.residuals.assign(num_residuals_, 0.0);
+  for (const auto& block : blocks_) {
+    const FitEquilibrium& equilibrium = equilibria_[block.equilibrium];
+    const MeasuredValue measured = EvaluateMeasurement(
+        MeasurementOf(block), *equilibrium.model, equilibrium.positions.data(), ContextOf(block));
+    std::copy(measured.residuals.begin(), measured.residuals.end(),
+              evaluation.residuals.begin() + block.offset);
+    evaluation.model_values.push_back(measured.model_value);
+  }
+  for (double r : evaluation.residuals) evaluation.objective += 0.5 * r * r;
+  if (!std::isfinite(evaluation.objective)) evaluation.converged = false;
+  last_u_ = u;
+  return evaluation;
+}
+
+bool FitProblem::EquilibriumDirections(const FitEquilibrium& equilibrium,
+                                       Eigen::MatrixXd* directions,
+                                       Eigen::MatrixXd* direct_gradient) const {
+  const Model& model = *equilibrium.model;
+  const int n = model.num_dofs(), p = num_parameters();
+  DofMap dofs(model);
+  FreeHessian hessian(model, dofs);
+  FreeHessian::Assembly assembly;
+  std::vector<double> gradient;
+  if (!hessian.Assemble(equilibrium.positions.data(), false, &assembly, &gradient)) return false;
+  SparseCholesky cholesky(hessian);
+  if (!cholesky.Factorize(hessian.values(), nullptr)) return false;
+  directions->setZero(n, p);
+  direct_gradient->setZero(n, p);
+  std::vector<double> rhs(dofs.num_free()), solution;
+  for (int j = 0; j < p; ++j) {
+    std::vector<double> gradients[2];
+    for (int side = 0; side < 2; ++side) {
+      std::vector<double> u = last_u_;
+      u[j] += side == 0 ? kParameterStep : -kParameterStep;
+      const Model shifted = BuildModel(SceneAt(equilibrium, ToParameters(u)));
+      double energy = 0.0;
+      if (!EvaluateEnergy(shifted, equilibrium.positions.data(), &energy, &gradients[side])) {
+        return false;
+      }
+    }
+    for (int k = 0; k < n; ++k) {
+      (*direct_gradient)(k, j) = (gradients[0][k] - gradients[1][k]) / (2.0 * kParameterStep);
+    }
+    for (int f = 0; f < dofs.num_free(); ++f) {
+      rhs[f] = -(*direct_gradient)(dofs.free_to_global()[f], j);
+    }
+    cholesky.Solve(rhs, &solution);
+    for (int f = 0; f < dofs.num_free(); ++f) {
+      (*directions)(dofs.free_to_global()[f], j) = solution[f];
+    }
+  }
+  return true;
+}
+
+bool FitProblem::ImplicitJacobian(Eigen::MatrixXd* jacobian) {
+  const int p = num_parameters();
+  jacobian->setZero(num_residuals_, p);
+  std::vector<Eigen::MatrixXd> directions(equilibria_.size()), direct(equilibria_.size());
+  for (size_t e = 0; e < equilibria_.size(); ++e) {
+    if (!equilibria_[e].measured) continue;
+    if (!EquilibriumDirections(equilibria_[e], &directions[e], &direct[e])) return false;
+  }
+  for (const auto& block : blocks_) {
+    const FitEquilibrium& equilibrium = equilibria_[block.equilibrium];
+    const FitMeasurement& measurement = MeasurementOf(block);
+    const MeasurementContext context = ContextOf(block);
+    const Model& model = *equilibrium.model;
+    for (int j = 0; j < p; ++j) {
+      const Eigen::VectorXd v = directions[block.equilibrium].col(j);
+      const double largest = v.cwiseAbs().maxCoeff();
+      if (largest > 0.0) {
+        const double step = DirectionStep(measurement) * model.size / largest;
+        std::vector<double> plus = equilibrium.positions, minus = equilibrium.positions;
+        for (int k = 0; k < model.num_dofs(); ++k) {
+          plus[k] += step * v[k];
+          minus[k] -= step * v[k];
+        }
+        const auto r_plus = EvaluateMeasurement(measurement, model, plus.data(), context).residuals;
+        const auto r_minus =
+            EvaluateMeasurement(measurement, model, minus.data(), context).residuals;
+        for (int i = 0; i < block.count; ++i) {
+          (*jacobian)(block.offset + i, j) = (r_plus[i] - r_minus[i]) / (2.0 * step);
+        }
+      }
+      if (measurement.kind == FitMeasurement::Kind::kReactions) {
+        // The reactions depend on θ directly too: ∂R/∂u = ∂g/∂u at the fixed coordinates.
+        const double scale = std::sqrt(measurement.weight) / measurement.sigma;
+        const auto& ids = measurement.reactions.ids;
+        for (size_t k = 0; k < ids.size(); ++k) {
+          for (int c = 0; c < 3; ++c) {
+            (*jacobian)(block.offset + 3 * k + c, j) +=
+                scale * direct[block.equilibrium](3 * ids[k] + c, j);
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+Eigen::MatrixXd FitProblem::FiniteDifferenceJacobian(const std::vector<double>& u, double step) {
+  const int p = num_parameters();
+  Eigen::MatrixXd jacobian(num_residuals_, p);
+  for (int j = 0; j < p; ++j) {
+    std::vector<double> plus = u, minus = u;
+    plus[j] += step;
+    minus[j] -= step;
+    const std::vector<double> r_plus = Evaluate(plus).residuals;
+    const std::vector<double> r_minus = Evaluate(minus).residuals;
+    for (int i = 0; i < num_residuals_; ++i) {
+      jacobian(i, j) = (r_plus[i] - r_minus[i]) / (2.0 * step);
+    }
+  }
+  Evaluate(u);
+  return jacobian;
+}
+
+}  // namespace drape

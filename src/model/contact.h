@@ -1,0 +1,61 @@
+// Rigid obstacles as contact energies (costs/*_contact.h): one term per obstacle and node that can
+// reach it, and the penetration report written to summary.json.
+//
+// Stiffness rule. Every contact term is the cubic penalty U = (k/3) g³ of a node that is g deep
+// inside the clearance layer of thickness t = contact.thickness (costs/contact_penalty.h), so a
+// node pressed with force F rests at g = √(F/k). With
+//   k = F_ref / (f t)²,   F_ref = Σ_nodes |weight + applied load|,   f = kAllowedPenetration = 0.1,
+// any node whose contact force is at most F_ref — the whole load, which bounds the force of a
+// single support point unless opposing contacts squeeze the fabric — stays at most f t = 10 % of
+// the thickness deep: g/t = f √(F/F_ref). A scene without weight or loads (only prescribed
+// displacements) uses F_ref = 1 N. MeasureContact reports the penetration actually reached.
+//
+// Which nodes get terms. A node fully fixed never does. If no node is fully fixed, the whole
+// fabric may move anywhere (it rests on the obstacles), so every node gets a term for every
+// obstacle. Otherwise a node stays within (1 + ε) × (its distance along the fabric to a fixed
+// node) of that node, at most (1 + ε) × the fabric's size (Model::size) for a flat convex piece,
+// so it can only touch an obstacle whose surface lies within 2.5 × size of its start (ε ≤ 0.5);
+// farther obstacles get no term for it.
+#ifndef DRAPE_SRC_MODEL_CONTACT_H_
+#define DRAPE_SRC_MODEL_CONTACT_H_
+
+#include <vector>
+
+#include "src/model/model.h"
+#include "src/scene/scene.h"
+
+namespace drape {
+
+constexpr double kAllowedPenetration = 0.1;  // of contact.thickness, the stiffness rule's f
+constexpr double kReachFactor = 2.5;         // × Model::size: the farthest a node may travel
+
+struct ContactReport {
+  int terms = 0;                                  // contact terms in the model
+  double thickness = 0.0;                         // contact.thickness t, m
+  double stiffness = 0.0;                         // k of the penalty, N/m²
+  int nodes_in_contact = 0;                       // nodes inside some obstacle's clearance layer
+  double max_penetration = 0.0;                   // m, the deepest node's depth g inside the layer
+  double max_penetration_fraction = 0.0;          // max_penetration / t
+  double allowed_fraction = kAllowedPenetration;  // what the stiffness rule aims to keep
+};
+
+// k = F_ref / (f t)² (see above), N/m².
+double ContactStiffness(const ContactSpec& contact, const Model& model);
+
+// Adds one "<kind>_contact" term (sphere, disk, cylinder, box, plane, pin) per obstacle and
+// reachable node. Call after the loads are in the model (the stiffness depends on them).
+// Throws InputError for a zero thickness with obstacles, or friction (not supported: obstacles
+// are frictionless).
+void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
+                     Model* model);
+
+// Signed distance from `x` to the obstacle's surface (positive outside), m.
+double ObstacleDistance(const ObstacleSpec& obstacle, const double* x);
+
+// Penetration into the clearance layers at `positions` (3 per node), over every node and obstacle.
+ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
+                             const Model& model, const double* positions);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_MODEL_CONTACT_H_

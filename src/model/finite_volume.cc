@@ -1,0 +1,171 @@
+#include "src/model/finite_volume.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "costs/fv_bending.h"
+#include "costs/fv_membrane.h"
+#include "costs/spring_stretch.h"
+
+namespace drape {
+
+MembraneRigidities PlaneStressRigidities(const FiniteVolumeSpec& spec) {
+  const double factor = 1.0 - spec.nu_warp * spec.nu_weft;
+  return {spec.E_warp / factor, spec.E_weft / factor, spec.nu_warp * spec.E_weft / factor, spec.G};
+}
+
+namespace {
+
+void CheckMaterial(const FiniteVolumeSpec& spec) {
+  auto fail = [&spec](const std::string& what) {
+    throw InputError(spec.where, "finite_volume: " + what);
+  };
+  if (!(spec.E_warp > 0.0) || !(spec.E_weft > 0.0)) fail("E_warp and E_weft must be positive");
+  if (spec.G < 0.0 || spec.D_warp < 0.0 || spec.D_weft < 0.0) {
+    fail("G, D_warp and D_weft must not be negative");
+  }
+  if (!(spec.nu_warp * spec.nu_weft < 1.0)) fail("nu_warp * nu_weft must be below 1");
+  const MembraneRigidities e = PlaneStressRigidities(spec);
+  if (e.e1 * e.e2 < e.e12 * e.e12) {
+    fail("nu_warp^2 * E_weft must not exceed E_warp (the membrane energy would be indefinite)");
+  }
+  if (spec.D_12 * spec.D_12 > spec.D_warp * spec.D_weft) {
+    fail("D_12^2 must not exceed D_warp * D_weft (the bending energy would be indefinite)");
+  }
+}
+
+// Node ids by lattice position: (i, j) in [0, nu) × [0, nv) from Mesh::grid_index, -1 where the
+// lattice has no node (outside a circle mesh's disc, or beyond the edge).
+class Lattice {
+ public:
+  Lattice(int nu, int nv) : nu_(nu), nv_(nv), ids_(static_cast<size_t>(nu) * nv, -1) {}
+
+  bool InRange(int i, int j) const { return i >= 0 && j >= 0 && i < nu_ && j < nv_; }
+  int At(int i, int j) const { return InRange(i, j) ? ids_[Index(i, j)] : -1; }
+  // False if (i, j) is out of range or taken already.
+  bool Set(int i, int j, int id) {
+    if (!InRange(i, j) || ids_[Index(i, j)] >= 0) return false;
+    ids_[Index(i, j)] = id;
+    return true;
+  }
+
+ private:
+  size_t Index(int i, int j) const { return static_cast<size_t>(j) * nu_ + i; }
+  int nu_, nv_;
+  std::vector<int> ids_;
+};
+
+// The lattice of a grid or circle mesh whose nodes all carry area; throws InputError otherwise.
+Lattice CheckedLattice(const FiniteVolumeSpec& spec, const Mesh& mesh, const Model& model) {
+  const int n = static_cast<int>(mesh.nodes.size());
+  bool ok = mesh.nu > 0 && mesh.nv > 0 && static_cast<int>(mesh.grid_index.size()) == n &&
+            static_cast<int>(mesh.area.size()) == n && model.num_nodes == n;
+  Lattice lattice(ok ? mesh.nu : 0, ok ? mesh.nv : 0);
+  for (int k = 0; ok && k < n; ++k) {
+    ok = mesh.area[k] > 0.0 && lattice.Set(mesh.grid_index[k][0], mesh.grid_index[k][1], k);
+  }
+  if (!ok) {
+    throw InputError(spec.where,
+                     "the finite_volume material needs a grid or circle mesh with area "
+                     "(mesh.kind: grid or circle; a 2-D strip is a grid with nodes: [n, 1] and "
+                     "size: [length, width])");
+  }
+  return lattice;
+}
+
+double RestDistance(const Mesh& mesh, int a, int b) {
+  return (mesh.nodes[b] - mesh.nodes[a]).norm();
+}
+
+// A single row (or column) of nodes: a strip bending in one direction.
+void AddStrip(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model) {
+  const bool row = mesh.nv == 1;
+  const int count = row ? mesh.nu : mesh.nv;
+  const int step = row ? 1 : mesh.nu;
+  const double modulus = row ? spec.E_warp : spec.E_weft;
+  const double rigidity = row ? spec.D_warp : spec.D_weft;
+  std::vector<double> size(count, 0.0);  // lumped length of each control volume
+  for (int k = 0; k + 1 < count; ++k) {
+    const double half = 0.5 * RestDistance(mesh, k * step, (k + 1) * step);
+    size[k] += half;
+    size[k + 1] += half;
+  }
+  for (int k = 0; k + 1 < count; ++k) {
+    const int a = k * step, b = (k + 1) * step;
+    const double length = RestDistance(mesh, a, b);
+    const double area = 0.5 * length * (mesh.area[a] / size[k] + mesh.area[b] / size[k + 1]);
+    model->terms.push_back(MakeTerm(
+        "fv_membrane", {a, b}, SpringStretch::Create(modulus * area / (length * length), length)));
+  }
+  if (!(rigidity > 0.0)) return;
+  for (int k = 1; k + 1 < count; ++k) {
+    const int a = (k - 1) * step, p = k * step, b = (k + 1) * step;
+    model->terms.push_back(
+        MakeTerm("fv_bending", {a, p, b}, FvBendingEdge::Create(rigidity, size[k], mesh.area[p])));
+  }
+}
+
+// Neighbour ids of node (i, j) along the warp (W, E: i ∓ 1) and weft (S, N: j ∓ 1), -1 where
+// the lattice has no node (beyond the edge, outside a circle's disc).
+struct Neighbours {
+  int w, e, s, n;
+};
+
+Neighbours NeighboursOf(const Lattice& lattice, int i, int j) {
+  return {lattice.At(i - 1, j), lattice.At(i + 1, j), lattice.At(i, j - 1), lattice.At(i, j + 1)};
+}
+
+void AddBending(const FiniteVolumeSpec& spec, const Mesh& mesh, int p, const Neighbours& nb,
+                Model* model) {
+  const bool warp = nb.w >= 0 && nb.e >= 0, weft = nb.s >= 0 && nb.n >= 0;
+  const double area = mesh.area[p];
+  const double size1 = warp ? 0.5 * (RestDistance(mesh, nb.w, p) + RestDistance(mesh, p, nb.e)) : 0;
+  const double size2 = weft ? 0.5 * (RestDistance(mesh, nb.s, p) + RestDistance(mesh, p, nb.n)) : 0;
+  if (warp && weft) {
+    if (spec.D_warp > 0.0 || spec.D_weft > 0.0) {
+      model->terms.push_back(
+          MakeTerm("fv_bending", {nb.w, p, nb.e, nb.s, nb.n},
+                   FvBending::Create(spec.D_warp, spec.D_weft, spec.D_12, size1, size2, area)));
+    }
+  } else if (warp && spec.D_warp > 0.0) {
+    model->terms.push_back(
+        MakeTerm("fv_bending", {nb.w, p, nb.e}, FvBendingEdge::Create(spec.D_warp, size1, area)));
+  } else if (weft && spec.D_weft > 0.0) {
+    model->terms.push_back(
+        MakeTerm("fv_bending", {nb.s, p, nb.n}, FvBendingEdge::Create(spec.D_weft, size2, area)));
+  }
+}
+
+void AddMembrane(const MembraneRigidities& e, const Mesh& mesh, int p, const Neighbours& nb,
+                 Model* model) {
+  for (int a : {nb.e, nb.w}) {
+    for (int b : {nb.n, nb.s}) {
+      if (a < 0 || b < 0) continue;
+      model->terms.push_back(
+          MakeTerm("fv_membrane", {p, a, b},
+                   FvMembrane::Create(e.e1, e.e2, e.e12, e.g, RestDistance(mesh, p, a),
+                                      RestDistance(mesh, p, b))));
+    }
+  }
+}
+
+}  // namespace
+
+void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model) {
+  CheckMaterial(spec);
+  const Lattice lattice = CheckedLattice(spec, mesh, *model);
+  const int n = static_cast<int>(mesh.nodes.size());
+  if ((mesh.nu == 1 || mesh.nv == 1) && mesh.nu * mesh.nv == n) {
+    AddStrip(spec, mesh, model);
+    return;
+  }
+  const MembraneRigidities rigidities = PlaneStressRigidities(spec);
+  for (int p = 0; p < n; ++p) {  // a full grid's ids run row by row: p = j*nu + i
+    const Neighbours nb = NeighboursOf(lattice, mesh.grid_index[p][0], mesh.grid_index[p][1]);
+    AddBending(spec, mesh, p, nb, model);
+    AddMembrane(rigidities, mesh, p, nb, model);
+  }
+}
+
+}  // namespace drape

@@ -1,0 +1,589 @@
+// Mesh generation for every `mesh.kind`: node positions, the spring topology by family, surface
+// triangles and the lumped area (or length) of each node.
+//
+// Conventions (also in README's scene reference):
+// - grid: node (i, j) has id j*nu + i. A single row (nodes [n, 1]) or column is a strip whose
+//   width is the other entry of `size`; its nodes carry length × width as area.
+// - chain: a single row of nodes (nu = n, nv = 1, grid_index (k, 0)), so that edge/corner/ij
+//   selectors address its ends; its lumped length is half of each adjacent segment. Its nodes are
+//   evenly spaced along `direction`, or the explicit `points` (offset by `origin`); a closed chain
+//   also links the last node to the first, and `loop` lists its links in order.
+// - circle: lattice points (i s, j s) of spacing s, with the origin a lattice point, inside the
+//   disc; full lattice cells give 2 triangles, cells with 3 corners inside the disc one.
+// - arc: node 0 is the centre, then ring r = 1..rings, spoke k: id 1 + (r-1)*spokes + k.
+// - file: OBJ or ASCII PLY; node ids are the vertex order, from 0 (OBJ counts from 1).
+#include "src/model/mesh.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace drape {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Link Ordered(int a, int b) { return a < b ? Link{a, b} : Link{b, a}; }
+
+// Area of triangle abc.
+double TriangleArea(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return 0.5 * (b - a).cross(c - a).norm();
+}
+
+// Adds a third of each triangle's area to each of its vertices.
+void LumpTriangleAreas(Mesh* mesh) {
+  mesh->area.assign(mesh->nodes.size(), 0.0);
+  for (const auto& t : mesh->triangles) {
+    const double third =
+        TriangleArea(mesh->nodes[t[0]], mesh->nodes[t[1]], mesh->nodes[t[2]]) / 3.0;
+    for (int v : t) mesh->area[v] += third;
+  }
+}
+
+double BoundingDiagonal(const std::vector<Eigen::Vector3d>& nodes) {
+  if (nodes.empty()) return 0.0;
+  Eigen::Vector3d low = nodes[0], high = nodes[0];
+  for (const auto& p : nodes) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  return (high - low).norm();
+}
+
+// ---------------------------------------------------------------------------------------------
+// grid
+
+// Coordinates along one grid axis: the explicit list, or `count` points evenly over `extent`.
+std::vector<double> AxisCoordinates(const std::vector<double>& explicit_values, int count,
+                                    double extent, const char* axis, const Location& where) {
+  if (!explicit_values.empty()) {
+    for (size_t k = 1; k < explicit_values.size(); ++k) {
+      if (!(explicit_values[k] > explicit_values[k - 1])) {
+        throw InputError(where, std::string("grid coordinates ") + axis +
+                                    " must be strictly increasing (entries " +
+                                    std::to_string(k - 1) + " and " + std::to_string(k) + ")");
+      }
+    }
+    return explicit_values;
+  }
+  if (count < 1) {
+    throw InputError(where, std::string("a grid needs at least 1 node along ") + axis);
+  }
+  std::vector<double> values(count, 0.0);
+  for (int k = 1; k < count; ++k) values[k] = extent * k / (count - 1);
+  return values;
+}
+
+// Half of each adjacent interval: the lumped length of each point of a line.
+std::vector<double> LumpedLengths(const std::vector<double>& coordinates) {
+  std::vector<double> lengths(coordinates.size(), 0.0);
+  for (size_t k = 0; k + 1 < coordinates.size(); ++k) {
+    const double half = 0.5 * (coordinates[k + 1] - coordinates[k]);
+    lengths[k] += half;
+    lengths[k + 1] += half;
+  }
+  return lengths;
+}
+
+void AddGridLinks(int nu, int nv, Mesh* mesh) {
+  auto id = [nu](int i, int j) { return j * nu + i; };
+  for (int j = 0; j < nv; ++j) {
+    for (int i = 0; i < nu; ++i) {
+      if (i + 1 < nu) mesh->warp.push_back({id(i, j), id(i + 1, j)});
+      if (j + 1 < nv) mesh->weft.push_back({id(i, j), id(i, j + 1)});
+      if (i + 1 < nu && j + 1 < nv) {
+        mesh->shear.push_back({id(i, j), id(i + 1, j + 1)});
+        mesh->shear.push_back({id(i + 1, j), id(i, j + 1)});
+        mesh->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        mesh->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+      if (i + 2 < nu) mesh->flexion_warp.push_back({id(i, j), id(i + 2, j)});
+      if (j + 2 < nv) mesh->flexion_weft.push_back({id(i, j), id(i, j + 2)});
+    }
+  }
+}
+
+// Lumped areas: each cell's area a quarter to each corner; a single row or column is a strip of
+// width `strip_width`, each node carrying its lumped length times that width.
+void AddGridAreas(const std::vector<double>& u, const std::vector<double>& v,
+                  const Eigen::Vector2d& strip_width, Mesh* mesh) {
+  const int nu = static_cast<int>(u.size()), nv = static_cast<int>(v.size());
+  mesh->area.assign(nu * nv, 0.0);
+  if (nu == 1 || nv == 1) {
+    const bool row = nv == 1;
+    mesh->length = LumpedLengths(row ? u : v);
+    const double width = row ? strip_width.y() : strip_width.x();
+    for (int k = 0; k < nu * nv; ++k) mesh->area[k] = mesh->length[k] * width;
+    return;
+  }
+  for (int j = 0; j + 1 < nv; ++j) {
+    for (int i = 0; i + 1 < nu; ++i) {
+      const double quarter = 0.25 * (u[i + 1] - u[i]) * (v[j + 1] - v[j]);
+      for (int dj = 0; dj < 2; ++dj) {
+        for (int di = 0; di < 2; ++di) mesh->area[(j + dj) * nu + i + di] += quarter;
+      }
+    }
+  }
+}
+
+Mesh BuildGrid(const MeshSpec& spec) {
+  if (spec.plane != "xy" && spec.plane != "xz") {
+    throw InputError(spec.where, "unknown grid plane '" + spec.plane + "' (use xy or xz)");
+  }
+  const std::vector<double> u =
+      AxisCoordinates(spec.u, spec.nodes[0], spec.size.x(), "u", spec.where);
+  const std::vector<double> v =
+      AxisCoordinates(spec.v, spec.nodes[1], spec.size.y(), "v", spec.where);
+  Mesh mesh;
+  mesh.nu = static_cast<int>(u.size());
+  mesh.nv = static_cast<int>(v.size());
+  for (int j = 0; j < mesh.nv; ++j) {
+    for (int i = 0; i < mesh.nu; ++i) {
+      const Eigen::Vector3d offset =
+          spec.plane == "xy" ? Eigen::Vector3d(u[i], v[j], 0.0) : Eigen::Vector3d(u[i], 0.0, v[j]);
+      mesh.nodes.push_back(spec.origin + offset);
+      mesh.grid_index.push_back({i, j});
+    }
+  }
+  AddGridLinks(mesh.nu, mesh.nv, &mesh);
+  AddGridAreas(u, v, spec.size, &mesh);
+  if (mesh.nv == 1) mesh.lines = mesh.warp;  // a single row has no faces: draw it as a line
+  if (mesh.nu == 1) mesh.lines = mesh.weft;
+  return mesh;
+}
+
+// ---------------------------------------------------------------------------------------------
+// chain
+
+// Chain nodes: the explicit points, or `chain_nodes` evenly along `direction` over `length`.
+std::vector<Eigen::Vector3d> ChainPoints(const MeshSpec& spec) {
+  if (!spec.points.empty()) {
+    std::vector<Eigen::Vector3d> points;
+    for (const auto& p : spec.points) points.push_back(spec.origin + p);
+    return points;
+  }
+  const double norm = spec.direction.norm();
+  if (!(norm > 0.0)) throw InputError(spec.where, "chain direction must not be zero");
+  if (spec.chain_nodes < 2) throw InputError(spec.where, "a chain needs at least 2 nodes");
+  const Eigen::Vector3d step = spec.direction / norm * (spec.length / (spec.chain_nodes - 1));
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < spec.chain_nodes; ++k) points.push_back(spec.origin + k * step);
+  return points;
+}
+
+// A chain: warp links between consecutive nodes, flexion links between every other node; a closed
+// chain also links its last node back to its first (and wraps the flexion links).
+Mesh BuildChain(const MeshSpec& spec) {
+  Mesh mesh;
+  mesh.nodes = ChainPoints(spec);
+  const int n = static_cast<int>(mesh.nodes.size());
+  if (n < 2) throw InputError(spec.where, "a chain needs at least 2 nodes");
+  if (spec.closed && n < 3) throw InputError(spec.where, "a closed chain needs at least 3 nodes");
+  mesh.nu = n;
+  mesh.nv = 1;
+  const int links = spec.closed ? n : n - 1;
+  const int flexion = spec.closed ? (n > 4 ? n : 0) : n - 2;  // no pair twice
+  for (int k = 0; k < n; ++k) mesh.grid_index.push_back({k, 0});
+  for (int k = 0; k < links; ++k) mesh.warp.push_back({k, (k + 1) % n});
+  for (int k = 0; k < flexion; ++k) mesh.flexion_warp.push_back({k, (k + 2) % n});
+  mesh.lines = mesh.warp;
+  if (spec.closed) mesh.loop = mesh.warp;
+  mesh.length.assign(n, 0.0);
+  for (const Link& link : mesh.warp) {
+    const double half = 0.5 * (mesh.nodes[link[1]] - mesh.nodes[link[0]]).norm();
+    mesh.length[link[0]] += half;
+    mesh.length[link[1]] += half;
+  }
+  mesh.area.assign(n, 0.0);
+  return mesh;
+}
+
+// ---------------------------------------------------------------------------------------------
+// circle
+
+// Area lumping and triangles of one lattice cell with corners a (i, j), b (i+1, j),
+// c (i+1, j+1), d (i, j+1), ids -1 where outside the disc.
+void AddCircleCell(int a, int b, int c, int d, double cell_area, Mesh* mesh) {
+  const int present = (a >= 0) + (b >= 0) + (c >= 0) + (d >= 0);
+  if (present == 4) {
+    mesh->triangles.push_back({a, b, c});
+    mesh->triangles.push_back({a, c, d});
+    for (int v : {a, b, c, d}) mesh->area[v] += 0.25 * cell_area;
+  } else if (present == 3) {
+    std::array<int, 3> triangle{};
+    int k = 0;
+    for (int v : {a, b, c, d}) {
+      if (v >= 0) triangle[k++] = v;
+    }
+    mesh->triangles.push_back(triangle);
+    for (int v : triangle) mesh->area[v] += cell_area / 6.0;  // a third of half the cell
+  }
+}
+
+Mesh BuildCircle(const MeshSpec& spec) {
+  if (!(spec.radius > 0.0) || !(spec.spacing > 0.0)) {
+    throw InputError(spec.where, "a circle mesh needs a positive radius and spacing");
+  }
+  const double rho = spec.radius / spec.spacing;  // radius in lattice steps
+  const int m = static_cast<int>(std::floor(rho * (1.0 + 1e-9)));
+  const int side = 2 * m + 1;
+  const double limit = rho * rho * (1.0 + 1e-9);
+  Mesh mesh;
+  mesh.nu = mesh.nv = side;
+  std::vector<int> id(side * side, -1);
+  auto at = [&](int i, int j) {  // lattice (i, j) in [0, side)², -1 outside
+    return (i < 0 || j < 0 || i >= side || j >= side) ? -1 : id[j * side + i];
+  };
+  for (int j = 0; j < side; ++j) {
+    for (int i = 0; i < side; ++i) {
+      const double x = i - m, y = j - m;
+      if (x * x + y * y > limit) continue;
+      id[j * side + i] = static_cast<int>(mesh.nodes.size());
+      mesh.nodes.push_back(spec.origin + spec.spacing * Eigen::Vector3d(x, y, 0.0));
+      mesh.grid_index.push_back({i, j});
+    }
+  }
+  mesh.area.assign(mesh.nodes.size(), 0.0);
+  const double cell_area = spec.spacing * spec.spacing;
+  for (int j = 0; j < side; ++j) {
+    for (int i = 0; i < side; ++i) {
+      const int a = at(i, j);
+      if (a >= 0 && at(i + 1, j) >= 0) mesh.warp.push_back({a, at(i + 1, j)});
+      if (a >= 0 && at(i, j + 1) >= 0) mesh.weft.push_back({a, at(i, j + 1)});
+      if (a >= 0 && at(i + 2, j) >= 0) mesh.flexion_warp.push_back({a, at(i + 2, j)});
+      if (a >= 0 && at(i, j + 2) >= 0) mesh.flexion_weft.push_back({a, at(i, j + 2)});
+      if (a >= 0 && at(i + 1, j + 1) >= 0) mesh.shear.push_back({a, at(i + 1, j + 1)});
+      if (at(i + 1, j) >= 0 && at(i, j + 1) >= 0)
+        mesh.shear.push_back({at(i + 1, j), at(i, j + 1)});
+      AddCircleCell(a, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), cell_area, &mesh);
+    }
+  }
+  return mesh;
+}
+
+// ---------------------------------------------------------------------------------------------
+// arc
+
+// Adds link {a, b} to `links` unless it is there already (in either order).
+void AddUnique(int a, int b, std::set<Link>* seen, std::vector<Link>* links) {
+  if (seen->insert(Ordered(a, b)).second) links->push_back({a, b});
+}
+
+Mesh BuildArc(const MeshSpec& spec) {
+  if (!(spec.radius > 0.0) || spec.rings < 1 || spec.spokes < 3) {
+    throw InputError(spec.where,
+                     "an arc mesh needs a positive radius, at least 1 ring and 3 spokes");
+  }
+  const int rings = spec.rings, spokes = spec.spokes;
+  auto id = [spokes](int ring, int spoke) {  // ring 0 is the centre
+    return ring == 0 ? 0 : 1 + (ring - 1) * spokes + (spoke % spokes);
+  };
+  Mesh mesh;
+  mesh.nodes.push_back(spec.origin);
+  for (int r = 1; r <= rings; ++r) {
+    const double radius = spec.radius * r / rings;
+    for (int k = 0; k < spokes; ++k) {
+      const double angle = 2.0 * kPi * k / spokes;
+      mesh.nodes.push_back(spec.origin +
+                           radius * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0));
+    }
+  }
+  mesh.grid_index.assign(mesh.nodes.size(), {-1, -1});
+  std::set<Link> seen_weft, seen_flexion_warp, seen_flexion_weft;
+  for (int k = 0; k < spokes; ++k) {
+    for (int r = 0; r < rings; ++r) mesh.warp.push_back({id(r, k), id(r + 1, k)});
+    for (int r = 0; r + 2 <= rings; ++r) {
+      AddUnique(id(r, k), id(r + 2, k), &seen_flexion_warp, &mesh.flexion_warp);
+    }
+    // Along a diameter, through the centre (opposite spokes).
+    if (spokes % 2 == 0 && k < spokes / 2) {
+      AddUnique(id(1, k), id(1, k + spokes / 2), &seen_flexion_warp, &mesh.flexion_warp);
+    }
+    mesh.triangles.push_back({0, id(1, k), id(1, k + 1)});
+    for (int r = 1; r <= rings; ++r) {
+      AddUnique(id(r, k), id(r, k + 1), &seen_weft, &mesh.weft);
+      AddUnique(id(r, k), id(r, k + 2), &seen_flexion_weft, &mesh.flexion_weft);
+      if (r < rings) {
+        mesh.shear.push_back({id(r, k), id(r + 1, k + 1)});
+        mesh.shear.push_back({id(r, k + 1), id(r + 1, k)});
+        mesh.triangles.push_back({id(r, k), id(r + 1, k), id(r + 1, k + 1)});
+        mesh.triangles.push_back({id(r, k), id(r + 1, k + 1), id(r, k + 1)});
+      }
+    }
+  }
+  LumpTriangleAreas(&mesh);
+  return mesh;
+}
+
+// ---------------------------------------------------------------------------------------------
+// file
+
+struct SurfaceData {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::vector<int>> faces;  // 0-based vertex ids, not yet range-checked
+  std::vector<int> face_lines;          // line of each face in the file, for errors
+};
+
+std::string Lowercase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+[[noreturn]] void FileError(const MeshSpec& spec, int line, const std::string& what) {
+  std::string where = spec.path;
+  if (line > 0) where += ":" + std::to_string(line);
+  throw InputError(spec.where, where + ": " + what);
+}
+
+// OBJ: `v x y z` and `f a b c ...` lines (a may be `a/t/n`, `a//n`, or negative = relative);
+// every other statement (vn, vt, o, g, s, usemtl, comments) is ignored.
+SurfaceData ReadObj(std::istream& in, const MeshSpec& spec) {
+  SurfaceData data;
+  std::string text;
+  for (int line = 1; std::getline(in, text); ++line) {
+    std::istringstream fields(text);
+    std::string keyword;
+    if (!(fields >> keyword)) continue;
+    if (keyword == "v") {
+      Eigen::Vector3d p;
+      if (!(fields >> p.x() >> p.y() >> p.z()) || !p.allFinite()) {
+        FileError(spec, line, "a vertex needs three finite coordinates");
+      }
+      data.vertices.push_back(p);
+    } else if (keyword == "f") {
+      std::vector<int> face;
+      std::string token;
+      while (fields >> token) {
+        const std::string number = token.substr(0, token.find('/'));
+        std::size_t used = 0;
+        int index = 0;
+        try {
+          index = std::stoi(number, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != number.size() || index == 0) {
+          FileError(spec, line, "bad face vertex '" + token + "'");
+        }
+        face.push_back(index > 0 ? index - 1 : static_cast<int>(data.vertices.size()) + index);
+      }
+      data.faces.push_back(face);
+      data.face_lines.push_back(line);
+    }
+  }
+  return data;
+}
+
+struct PlyElement {
+  std::string name;
+  long count = 0;
+  std::vector<std::string> properties;  // names; lists marked with a leading '*'
+};
+
+// Reads one element row of `element`: the scalar values by property name, and the first list.
+void ReadPlyRow(std::istream& in, const PlyElement& element, std::map<std::string, double>* values,
+                std::vector<int>* list) {
+  for (const auto& property : element.properties) {
+    if (property[0] == '*') {
+      long count = 0;
+      in >> count;
+      for (long k = 0; k < count && in; ++k) {
+        double index = 0;
+        in >> index;
+        if (list) list->push_back(static_cast<int>(index));
+      }
+      list = nullptr;  // only the first list is the face's vertex indices
+    } else {
+      double value = 0;
+      in >> value;
+      (*values)[property] = value;
+    }
+  }
+}
+
+// ASCII PLY: the `vertex` element's x, y, z and the `face` element's vertex index list.
+SurfaceData ReadPly(std::istream& in, const MeshSpec& spec) {
+  std::string text;
+  std::vector<PlyElement> elements;
+  int line = 1;
+  if (!std::getline(in, text) || text.rfind("ply", 0) != 0) FileError(spec, 1, "not a PLY file");
+  for (++line; std::getline(in, text); ++line) {
+    std::istringstream fields(text);
+    std::string keyword;
+    fields >> keyword;
+    if (keyword == "format") {
+      std::string format;
+      fields >> format;
+      if (format != "ascii") {
+        FileError(spec, line, "only ASCII PLY is supported (this one is " + format + ")");
+      }
+    } else if (keyword == "element") {
+      PlyElement element;
+      fields >> element.name >> element.count;
+      elements.push_back(element);
+    } else if (keyword == "property" && !elements.empty()) {
+      std::string type, name;
+      fields >> type;
+      if (type == "list") {
+        std::string count_type, item_type;
+        fields >> count_type >> item_type >> name;
+        name = "*" + name;
+      } else {
+        fields >> name;
+      }
+      elements.back().properties.push_back(name);
+    } else if (keyword == "end_header") {
+      break;
+    }
+  }
+  SurfaceData data;
+  for (const auto& element : elements) {
+    for (long row = 0; row < element.count; ++row) {
+      std::map<std::string, double> values;
+      std::vector<int> list;
+      ReadPlyRow(in, element, &values, &list);
+      if (!in) FileError(spec, 0, "the " + element.name + " data ends early");
+      if (element.name == "vertex") {
+        const Eigen::Vector3d p(values["x"], values["y"], values["z"]);
+        if (!p.allFinite()) FileError(spec, 0, "a vertex has a non-finite coordinate");
+        data.vertices.push_back(p);
+      } else if (element.name == "face") {
+        data.faces.push_back(list);
+        data.face_lines.push_back(0);
+      }
+    }
+  }
+  return data;
+}
+
+// Triangulates the faces (fans), checking every index; fills nodes, triangles, springs, areas.
+Mesh SurfaceMesh(const SurfaceData& data, const MeshSpec& spec) {
+  const int n = static_cast<int>(data.vertices.size());
+  if (n == 0) FileError(spec, 0, "the file has no vertices");
+  if (data.faces.empty()) FileError(spec, 0, "the file has no faces (springs follow face edges)");
+  Mesh mesh;
+  mesh.nodes = data.vertices;
+  mesh.grid_index.assign(n, {-1, -1});
+  std::vector<char> used(n, 0);
+  for (size_t f = 0; f < data.faces.size(); ++f) {
+    const auto& face = data.faces[f];
+    const int line = data.face_lines[f];
+    if (face.size() < 3) FileError(spec, line, "a face needs at least 3 vertices");
+    std::set<int> distinct;
+    for (int v : face) {
+      if (v < 0 || v >= n) {
+        FileError(spec, line,
+                  "face vertex " + std::to_string(v + 1) + " is out of range (the file has " +
+                      std::to_string(n) + " vertices, counted from 1)");
+      }
+      if (!distinct.insert(v).second) {
+        FileError(spec, line, "a face uses vertex " + std::to_string(v + 1) + " twice");
+      }
+      used[v] = 1;
+    }
+    for (size_t k = 1; k + 1 < face.size(); ++k) {
+      mesh.triangles.push_back({face[0], face[k], face[k + 1]});
+    }
+  }
+  for (int v = 0; v < n; ++v) {
+    if (!used[v]) {
+      FileError(spec, 0,
+                "vertex " + std::to_string(v + 1) + " belongs to no face (it would float free)");
+    }
+  }
+  // Edges and, for each, the vertices opposite it in the triangles that share it.
+  std::map<Link, std::vector<int>> opposite;
+  for (const auto& t : mesh.triangles) {
+    for (int e = 0; e < 3; ++e) opposite[Ordered(t[e], t[(e + 1) % 3])].push_back(t[(e + 2) % 3]);
+  }
+  std::set<Link> flexion;
+  for (const auto& [edge, vertices] : opposite) {
+    mesh.warp.push_back(edge);
+    for (size_t a = 0; a < vertices.size(); ++a) {
+      for (size_t b = a + 1; b < vertices.size(); ++b) {
+        if (vertices[a] != vertices[b]) flexion.insert(Ordered(vertices[a], vertices[b]));
+      }
+    }
+  }
+  mesh.flexion_warp.assign(flexion.begin(), flexion.end());
+  LumpTriangleAreas(&mesh);
+  return mesh;
+}
+
+Mesh BuildFromFile(const MeshSpec& spec) {
+  std::ifstream in(spec.path);
+  if (!in) FileError(spec, 0, "cannot read the mesh file");
+  const std::string extension = Lowercase(spec.path.substr(spec.path.find_last_of('.') + 1));
+  if (extension == "obj") return SurfaceMesh(ReadObj(in, spec), spec);
+  if (extension == "ply") return SurfaceMesh(ReadPly(in, spec), spec);
+  FileError(spec, 0, "unknown mesh file format (use .obj or .ply)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// checks for every kind
+
+// Two nodes closer than 1e-12 × the mesh size: a duplicated vertex or a zero-length spring.
+// Sorted along the axis of largest extent, only nodes close along that axis are compared.
+void CheckNoCoincidentNodes(const Mesh& mesh, const Location& where) {
+  const auto& p = mesh.nodes;
+  const double tolerance = 1e-12 * BoundingDiagonal(p);
+  Eigen::Vector3d low = p[0], high = p[0];
+  for (const auto& q : p) {
+    low = low.cwiseMin(q);
+    high = high.cwiseMax(q);
+  }
+  int axis = 0;
+  (high - low).maxCoeff(&axis);
+  std::vector<int> order(p.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return p[a][axis] < p[b][axis]; });
+  for (size_t k = 0; k < order.size(); ++k) {
+    for (size_t l = k + 1; l < order.size(); ++l) {
+      if (p[order[l]][axis] - p[order[k]][axis] > tolerance) break;
+      if ((p[order[l]] - p[order[k]]).norm() <= tolerance) {
+        const int a = std::min(order[k], order[l]), b = std::max(order[k], order[l]);
+        throw InputError(where, "nodes " + std::to_string(a) + " and " + std::to_string(b) +
+                                    " coincide (a duplicated vertex or a zero-length spring)");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Mesh BuildMesh(const MeshSpec& spec) {
+  Mesh mesh;
+  switch (spec.kind) {
+    case MeshSpec::Kind::kGrid:
+      mesh = BuildGrid(spec);
+      break;
+    case MeshSpec::Kind::kChain:
+      mesh = BuildChain(spec);
+      break;
+    case MeshSpec::Kind::kCircle:
+      mesh = BuildCircle(spec);
+      break;
+    case MeshSpec::Kind::kArc:
+      mesh = BuildArc(spec);
+      break;
+    case MeshSpec::Kind::kFile:
+      mesh = BuildFromFile(spec);
+      break;
+  }
+  if (mesh.nodes.size() < 2) {
+    throw InputError(spec.where, "the mesh has " + std::to_string(mesh.nodes.size()) +
+                                     " node(s); at least 2 are needed");
+  }
+  CheckNoCoincidentNodes(mesh, spec.where);
+  return mesh;
+}
+
+}  // namespace drape

@@ -1,0 +1,37 @@
+// Mesh generation: node positions and the topology the spring families follow.
+#ifndef DRAPE_SRC_MODEL_MESH_H_
+#define DRAPE_SRC_MODEL_MESH_H_
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "src/scene/scene.h"
+
+namespace drape {
+
+using Link = std::array<int, 2>;
+
+struct Mesh {
+  std::vector<Eigen::Vector3d> nodes;
+  std::vector<std::array<int, 2>> grid_index;  // (i, j) per node; (-1, -1) where not a grid
+  int nu = 0, nv = 0;                          // grid: node counts along u and v (else 0)
+  // Spring topology, by family. Grid and circle: warp along u (x), weft along v; arc: warp along
+  // the spokes, weft around the rings; chain: warp along the line; file: warp = the mesh edges.
+  std::vector<Link> warp, weft;
+  std::vector<Link> shear;                       // diagonals of each quad
+  std::vector<Link> flexion_warp, flexion_weft;  // skip-one neighbours
+  std::vector<std::array<int, 3>> triangles;     // surface, for output and areas
+  std::vector<Link> lines;                       // line elements (chains), for output
+  std::vector<double> area;                      // lumped area per node, m² (0 for a chain)
+  std::vector<double> length;                    // lumped length per node, m (chains)
+  std::vector<Link> loop;  // closed chain: its links in order around the loop (else empty)
+};
+
+// Builds the mesh of `spec`. Throws InputError (at spec.where) for fewer than 2 nodes, an
+// unreadable or malformed mesh file, or coincident nodes.
+Mesh BuildMesh(const MeshSpec& spec);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_MODEL_MESH_H_

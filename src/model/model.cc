@@ -1,0 +1,390 @@
+// BuildModel: from a loaded Scene to nodes, masses, fixed coordinates and the energy terms.
+//
+// Masses (material):
+// - density: kg/m² times each node's lumped area (a quarter of each grid cell to each corner, a
+//   third of each triangle to each vertex). A mesh without area — a chain — takes density in kg per
+//   metre of line, times each node's lumped length (half of each adjacent segment).
+// - node_mass: every node the same mass.
+// - total_mass: shared in proportion to lumped area (or length); equally if all are zero.
+// Springs (material.springs): structural = warp links (stiffness `warp`) and weft links (`weft`);
+// shear = diagonals with (warp + weft)/2; flexion = skip-one links, warp and weft. Rest lengths:
+// `initial` = the distance in the mesh (before any `move`); `zero` = ZeroLengthSpring (never
+// compressed, so `tension_only` changes nothing); a given length L scales every spring's initial
+// length by L / (mean initial length of the structural links), so that structural springs of a
+// uniform mesh get L and diagonals and skip-one springs keep their proportions.
+// Fixed: selections are made on the mesh as generated; each `fixed` entry fixes its `dofs` and adds
+// its `move` to the start of its nodes (a node in several entries gets the sum of their moves). In
+// 2-D (dimension: 2) every node's y is fixed as well.
+// Loads: gravity m·g on every node with mass, forces `total` shared equally among the selected
+// nodes, `each` on every one, `values` one per selected node in id order, or a `ramp` from `from`
+// to `to` (see RampParameters); one linear potential per loaded node, measured from its start.
+// Pressure (loads.pressure) on a closed chain: one PressurePotential per link of the loop, the
+// loop oriented so that its initial x–z area is positive (p > 0 inflates). It is a follower load,
+// not a constant one, so it is not counted in `applied`.
+#include "src/model/model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "costs/constant_force_potential.h"
+#include "costs/pressure_potential.h"
+#include "costs/spring_stretch.h"
+#include "costs/tension_only_spring.h"
+#include "costs/zero_length_spring.h"
+#include "src/model/contact.h"
+#include "src/model/finite_volume.h"
+#include "src/model/mesh.h"
+#include "src/model/selection.h"
+#include "src/model/stretch_limit.h"
+
+namespace drape {
+
+int Model::num_free_dofs() const {
+  int count = 0;
+  for (char f : fixed) count += f ? 0 : 1;
+  return count;
+}
+
+std::map<std::string, int> Model::TermCounts() const {
+  std::map<std::string, int> counts;
+  for (const auto& term : terms) ++counts[term->type()];
+  return counts;
+}
+
+namespace {
+
+const char* const kAxisNames[3] = {"x", "y", "z"};
+
+void RejectUnsupported(const Scene& scene) {
+  const MaterialSpec& material = scene.material;
+  if (material.model != "springs" && material.model != "finite_volume") {
+    throw InputError(material.where, "unknown material model '" + material.model + "'");
+  }
+}
+
+Eigen::Vector3d NodeVector(const std::vector<double>& values, int node) {
+  return Eigen::Vector3d(values[3 * node], values[3 * node + 1], values[3 * node + 2]);
+}
+
+double BoundingDiagonal(const std::vector<double>& positions) {
+  const int n = static_cast<int>(positions.size() / 3);
+  Eigen::Vector3d low = NodeVector(positions, 0), high = low;
+  for (int k = 1; k < n; ++k) {
+    low = low.cwiseMin(NodeVector(positions, k));
+    high = high.cwiseMax(NodeVector(positions, k));
+  }
+  return (high - low).norm();
+}
+
+// Lumped area per node, or lumped length where the mesh has no area (a chain).
+std::vector<double> MassWeights(const Mesh& mesh) {
+  double area = 0.0;
+  for (double a : mesh.area) area += a;
+  if (area > 0.0 || mesh.length.empty()) return mesh.area;
+  return mesh.length;
+}
+
+std::vector<double> NodeMasses(const MaterialSpec& material, const Mesh& mesh) {
+  const int n = static_cast<int>(mesh.nodes.size());
+  const std::vector<double> weights = MassWeights(mesh);
+  std::vector<double> mass(n, material.mass_value);
+  switch (material.mass_kind) {
+    case MaterialSpec::MassKind::kDensity:
+      for (int k = 0; k < n; ++k) mass[k] = material.mass_value * weights[k];
+      break;
+    case MaterialSpec::MassKind::kNodeMass:
+      break;
+    case MaterialSpec::MassKind::kTotalMass: {
+      double sum = 0.0;
+      for (double w : weights) sum += w;
+      for (int k = 0; k < n; ++k) {
+        mass[k] = material.mass_value * (sum > 0.0 ? weights[k] / sum : 1.0 / n);
+      }
+      break;
+    }
+  }
+  return mass;
+}
+
+// Fixes the selected coordinates and moves the selected nodes to their start.
+void ApplyFixed(const Scene& scene, const Mesh& mesh, Model* model) {
+  if (scene.dimension == 2) {
+    for (int k = 0; k < model->num_nodes; ++k) model->fixed[3 * k + 1] = 1;
+  }
+  for (const FixedSpec& spec : scene.fixed) {
+    for (int node : SelectNodes(spec.nodes, mesh)) {
+      for (int c = 0; c < 3; ++c) {
+        if (spec.dofs[c]) model->fixed[3 * node + c] = 1;
+        model->positions[3 * node + c] += spec.move[c];
+      }
+    }
+  }
+}
+
+// In two dimensions nodes move in x–z only: the mesh must lie in one plane y = constant.
+void CheckPlanarFor2d(const Scene& scene, const Mesh& mesh) {
+  if (scene.dimension != 2) return;
+  double low = mesh.nodes[0].y(), high = low;
+  for (const auto& p : mesh.nodes) {
+    low = std::min(low, p.y());
+    high = std::max(high, p.y());
+  }
+  double size = 0.0;
+  for (const auto& p : mesh.nodes) size = std::max(size, (p - mesh.nodes[0]).norm());
+  if (high - low > 1e-12 * size) {
+    throw InputError(scene.mesh.where,
+                     "a 2-D scene (dimension: 2) needs a mesh in one x-z plane (all nodes at the "
+                     "same y): use a chain, a grid with nodes: [n, 1], or plane: xz");
+  }
+}
+
+struct SpringFactory {
+  const SpringsSpec& springs;
+  double rest_scale;  // rest length = rest_scale × initial length (for kInitial and kGiven)
+
+  void Add(const std::string& type, const std::vector<Link>& links, double stiffness,
+           const Mesh& mesh, Model* model) const {
+    if (!(stiffness > 0.0)) return;
+    for (const Link& link : links) {
+      const std::vector<int> nodes{link[0], link[1]};
+      const double rest = rest_scale * (mesh.nodes[link[1]] - mesh.nodes[link[0]]).norm();
+      if (springs.rest_length == SpringsSpec::RestLength::kZero) {
+        model->terms.push_back(MakeTerm(type, nodes, ZeroLengthSpring::Create(stiffness)));
+      } else if (springs.tension_only) {
+        model->terms.push_back(MakeTerm(type, nodes, TensionOnlySpring::Create(stiffness, rest)));
+      } else {
+        model->terms.push_back(MakeTerm(type, nodes, SpringStretch::Create(stiffness, rest)));
+      }
+    }
+  }
+};
+
+// L / (mean initial length of the structural links) for a given rest length L, else 1.
+double RestScale(const SpringsSpec& springs, const Mesh& mesh) {
+  if (springs.rest_length != SpringsSpec::RestLength::kGiven) return 1.0;
+  double sum = 0.0;
+  int count = 0;
+  for (const auto* links : {&mesh.warp, &mesh.weft}) {
+    for (const Link& link : *links) {
+      sum += (mesh.nodes[link[1]] - mesh.nodes[link[0]]).norm();
+      ++count;
+    }
+  }
+  return count > 0 && sum > 0.0 ? springs.rest_length_value / (sum / count) : 1.0;
+}
+
+void AddSprings(const SpringsSpec& springs, const Mesh& mesh, Model* model) {
+  const SpringFactory factory{springs, RestScale(springs, mesh)};
+  if (springs.structural.present) {
+    factory.Add("structural", mesh.warp, springs.structural.warp, mesh, model);
+    factory.Add("structural", mesh.weft, springs.structural.weft, mesh, model);
+  }
+  if (springs.shear.present) {
+    const double stiffness = 0.5 * (springs.shear.warp + springs.shear.weft);
+    factory.Add("shear", mesh.shear, stiffness, mesh, model);
+  }
+  if (springs.flexion.present) {
+    factory.Add("flexion", mesh.flexion_warp, springs.flexion.warp, mesh, model);
+    factory.Add("flexion", mesh.flexion_weft, springs.flexion.weft, mesh, model);
+  }
+}
+
+// A constant force on one node as a linear potential measured from the node's start. The
+// least-squares shift |f| × 100 × size keeps sqrt(2(E + shift)) real over any reasonable motion
+// (src/solvers/solver_ceres_least_squares.cc).
+void AddConstantForce(const std::string& type, int node, const Eigen::Vector3d& force,
+                      Model* model) {
+  if (force.norm() == 0.0) return;
+  const double* reference = model->positions.data() + 3 * node;
+  const double shift = force.norm() * 2.0 * model->size;
+  model->terms.push_back(
+      MakeTerm(type, {node}, ConstantForcePotential::Create(force.data(), reference), shift));
+  for (int c = 0; c < 3; ++c) model->applied[3 * node + c] += force[c];
+}
+
+// The place of each selected node along the selection, from 0 at its first node (lowest id) to 1
+// at its last: the projection of the node's mesh position on the segment between those two,
+// clamped to [0, 1]. A selection of one node, or whose ends coincide, gets 0 everywhere.
+std::vector<double> RampParameters(const std::vector<int>& nodes, const Mesh& mesh) {
+  const Eigen::Vector3d start = mesh.nodes[nodes.front()];
+  const Eigen::Vector3d span = mesh.nodes[nodes.back()] - start;
+  const double length_squared = span.squaredNorm();
+  std::vector<double> parameters;
+  for (int node : nodes) {
+    const double s =
+        length_squared > 0.0 ? (mesh.nodes[node] - start).dot(span) / length_squared : 0.0;
+    parameters.push_back(std::clamp(s, 0.0, 1.0));
+  }
+  return parameters;
+}
+
+// The force on each selected node, in the order of `nodes`.
+std::vector<Eigen::Vector3d> NodeForces(const ForceSpec& spec, const std::vector<int>& nodes,
+                                        const Mesh& mesh) {
+  const size_t n = nodes.size();
+  switch (spec.kind) {
+    case ForceSpec::Kind::kTotal:
+      return std::vector<Eigen::Vector3d>(n, spec.value / static_cast<double>(n));
+    case ForceSpec::Kind::kEach:
+      return std::vector<Eigen::Vector3d>(n, spec.value);
+    case ForceSpec::Kind::kValues:
+      if (spec.values.size() != n) {
+        throw InputError(spec.values_where,
+                         "gives " + std::to_string(spec.values.size()) +
+                             " forces but the selection has " + std::to_string(n) +
+                             " nodes: give one [fx, fy, fz] per selected node, in id order");
+      }
+      return spec.values;
+    case ForceSpec::Kind::kRamp: {
+      std::vector<Eigen::Vector3d> forces;
+      for (double s : RampParameters(nodes, mesh)) {
+        forces.push_back((1.0 - s) * spec.value + s * spec.ramp_to);
+      }
+      return forces;
+    }
+  }
+  return {};
+}
+
+// The x–z centre of the loop's nodes and the loop's links, oriented so that its area is positive.
+std::vector<Link> OrientedLoop(const Mesh& mesh, Eigen::Vector2d* centre) {
+  *centre = Eigen::Vector2d::Zero();
+  for (const Link& link : mesh.loop) {
+    *centre += Eigen::Vector2d(mesh.nodes[link[0]].x(), mesh.nodes[link[0]].z());
+  }
+  *centre /= static_cast<double>(mesh.loop.size());
+  double twice_area = 0.0;
+  for (const Link& link : mesh.loop) {
+    const Eigen::Vector3d a = mesh.nodes[link[0]], b = mesh.nodes[link[1]];
+    twice_area += (a.x() - centre->x()) * (b.z() - centre->y()) -
+                  (b.x() - centre->x()) * (a.z() - centre->y());
+  }
+  std::vector<Link> loop = mesh.loop;
+  if (twice_area < 0.0) {
+    for (Link& link : loop) link = {link[1], link[0]};
+  }
+  return loop;
+}
+
+void AddPressure(const Scene& scene, const Mesh& mesh, Model* model) {
+  if (!scene.loads.pressure) return;
+  const PressureSpec& spec = *scene.loads.pressure;
+  if (mesh.loop.empty()) {
+    throw InputError(spec.where, "pressure needs a closed profile: a chain mesh with closed: true");
+  }
+  if (scene.dimension != 2) {
+    throw InputError(spec.where,
+                     "pressure acts on a closed profile in the x-z plane: set dimension: 2");
+  }
+  if (spec.pressure == 0.0) return;
+  Eigen::Vector2d centre;
+  for (const Link& link : OrientedLoop(mesh, &centre)) {
+    model->terms.push_back(
+        MakeTerm("pressure", {link[0], link[1]},
+                 PressurePotential::Create(spec.pressure, centre.x(), centre.y()),
+                 std::abs(spec.pressure) * model->size * model->size));
+  }
+}
+
+void AddLoads(const Scene& scene, const Mesh& mesh, Model* model) {
+  if (scene.loads.gravity) {
+    for (int k = 0; k < model->num_nodes; ++k) {
+      if (model->mass[k] > 0.0)
+        AddConstantForce("gravity", k, model->mass[k] * *scene.loads.gravity, model);
+    }
+  }
+  for (const ForceSpec& spec : scene.loads.forces) {
+    const std::vector<int> nodes = SelectNodes(spec.nodes, mesh);
+    const std::vector<Eigen::Vector3d> forces = NodeForces(spec, nodes, mesh);
+    for (size_t k = 0; k < nodes.size(); ++k) AddConstantForce("load", nodes[k], forces[k], model);
+  }
+  AddPressure(scene, mesh, model);
+}
+
+// Gravity or loads along a direction in which nothing is fixed (and no obstacle holds the fabric)
+// would translate the whole fabric without end: the energy has no minimum.
+void CheckHasMinimum(const Scene& scene, const Model& model) {
+  if (!scene.obstacles.empty()) return;
+  for (int c = 0; c < 3; ++c) {
+    bool fixed = false;
+    double net = 0.0, magnitude = 0.0;
+    for (int k = 0; k < model.num_nodes; ++k) {
+      fixed = fixed || model.fixed[3 * k + c];
+      net += model.applied[3 * k + c];
+      magnitude += std::abs(model.applied[3 * k + c]);
+    }
+    if (fixed || magnitude == 0.0) continue;
+    const std::string axis = kAxisNames[c];
+    if (std::abs(net) > 1e-12 * magnitude) {
+      throw InputError(scene.loads.where,
+                       "gravity/loads act along " + axis + " but no node is fixed along " + axis +
+                           " and no obstacle holds the fabric: the energy has no minimum (fix "
+                           "some nodes)");
+    }
+    throw InputError(scene.loads.where, "loads act along " + axis + " but no node is fixed along " +
+                                            axis + ": the fabric is free to slide along " + axis +
+                                            " and its equilibrium is not unique (fix some nodes)");
+  }
+}
+
+// A pressure alone pushes on the profile in balance; what holds the profile in place must be
+// fixed along x and z, else it floats freely in the plane.
+void CheckPressureHeld(const Scene& scene, const Model& model) {
+  if (!scene.loads.pressure || scene.loads.pressure->pressure == 0.0) return;
+  for (int c : {0, 2}) {
+    bool fixed = false;
+    for (int k = 0; k < model.num_nodes; ++k) fixed = fixed || model.fixed[3 * k + c];
+    if (!fixed) {
+      throw InputError(scene.loads.pressure->where,
+                       std::string("the pressurised profile is free to slide along ") +
+                           kAxisNames[c] + ": fix some nodes along " + kAxisNames[c]);
+    }
+  }
+}
+
+}  // namespace
+
+Model BuildModel(const Scene& scene) {
+  RejectUnsupported(scene);
+  const Mesh mesh = BuildMesh(scene.mesh);
+  CheckPlanarFor2d(scene, mesh);
+  Model model;
+  model.dimension = scene.dimension;
+  model.num_nodes = static_cast<int>(mesh.nodes.size());
+  model.positions.resize(model.num_dofs());
+  for (int k = 0; k < model.num_nodes; ++k) {
+    for (int c = 0; c < 3; ++c) model.positions[3 * k + c] = mesh.nodes[k][c];
+  }
+  model.fixed.assign(model.num_dofs(), 0);
+  model.applied.assign(model.num_dofs(), 0.0);
+  model.mass = NodeMasses(scene.material, mesh);
+  ApplyFixed(scene, mesh, &model);
+  model.initial = model.positions;
+  model.size = BoundingDiagonal(model.positions);
+  if (!(model.size > 0.0)) {  // every node moved onto one point: fall back to the mesh's size
+    std::vector<double> mesh_positions;
+    for (const auto& p : mesh.nodes)
+      mesh_positions.insert(mesh_positions.end(), {p.x(), p.y(), p.z()});
+    model.size = BoundingDiagonal(mesh_positions);
+  }
+  model.grid_index = mesh.grid_index;
+  model.triangles = mesh.triangles;
+  model.edges = mesh.lines;
+
+  if (scene.material.model == "finite_volume") {
+    AddFiniteVolumeTerms(scene.material.finite_volume, mesh, &model);
+  } else {
+    AddSprings(scene.material.springs, mesh, &model);
+    if (scene.material.springs.stretch_limit) {
+      AddStretchLimitTerms(*scene.material.springs.stretch_limit, &model);
+    }
+  }
+  AddLoads(scene, mesh, &model);
+  if (!scene.obstacles.empty()) AddContactTerms(scene.obstacles, scene.contact, &model);
+  CheckHasMinimum(scene, model);
+  CheckPressureHeld(scene, model);
+  ValidateModel(model);
+  return model;
+}
+
+}  // namespace drape

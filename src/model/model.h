@@ -1,0 +1,54 @@
+// The model: nodes, their rest state, which coordinates are fixed, and the energy terms the scene
+// needs (and no others). Built from a Scene by BuildModel(); validated before any ceres::Problem
+// is made from it (Ceres aborts on misuse).
+#ifndef DRAPE_SRC_MODEL_MODEL_H_
+#define DRAPE_SRC_MODEL_MODEL_H_
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "src/scene/scene.h"
+#include "src/model/term.h"
+
+namespace drape {
+
+struct Model {
+  int dimension = 3;
+  int num_nodes = 0;
+  // Positions, 3 doubles per node. `positions` is the storage the solvers move and Ceres'
+  // parameter blocks point into: it is sized once by BuildModel and never reallocated.
+  std::vector<double> positions;
+  std::vector<double> initial;                 // the start, after `move` of fixed nodes, 3 per node
+  std::vector<double> mass;                    // kg per node (lumped)
+  std::vector<char> fixed;                     // 3 per node: 1 where that coordinate is prescribed
+  std::vector<std::array<int, 2>> grid_index;  // (i, j) of grid nodes, (-1, -1) otherwise
+  std::vector<std::array<int, 3>> triangles;   // surface faces for mesh.vtk / mesh.obj
+  std::vector<std::array<int, 2>> edges;       // line elements (chains) for mesh.vtk / mesh.obj
+  std::vector<double> applied;                 // 3 per node: weight + applied loads, N (constant)
+  std::vector<std::unique_ptr<Term>> terms;
+  double size = 1.0;  // diameter of the initial shape, m (for relative distances)
+  // material.springs.stretch_limit (maximum stretch ratio), 0 when the scene sets none; the
+  // explicit-euler solver enforces it with Provot's constraint (src/model/stretch_limit.h).
+  double stretch_limit = 0.0;
+
+  int num_dofs() const { return 3 * num_nodes; }
+  int num_free_dofs() const;
+  // Number of terms of each type, for summary.json.
+  std::map<std::string, int> TermCounts() const;
+};
+
+// Builds the model of a loaded scene. Throws InputError (located at the offending key) for what
+// only shows at this stage: empty selections, ids out of range, coincident nodes, a mesh with fewer
+// than 2 nodes, an unreadable mesh file, an energy with no minimum.
+Model BuildModel(const Scene& scene);
+
+// Checks the invariants that ceres::Problem would otherwise abort on (node ids in range, no node
+// twice in one term, storage sized). Programmer errors: asserts.
+void ValidateModel(const Model& model);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_MODEL_MODEL_H_

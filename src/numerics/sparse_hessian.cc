@@ -1,0 +1,234 @@
+#include "src/numerics/sparse_hessian.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "src/numerics/library_threads.h"
+
+namespace drape {
+
+namespace {
+
+// The local Hessian of a term made positive semidefinite: each negative eigenvalue is set to zero
+// (kClamp) or to its magnitude (kAbsolute). A matrix that an LDLᵀ factorisation already shows to
+// be semidefinite (to roundoff) is left alone, which spares the eigen-decomposition for most
+// terms. Returns true if it changed.
+template <int N>
+bool ProjectFixed(EigenvalueFilter filter, int n, double* row_major) {
+  using Matrix = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
+  Eigen::Map<Matrix> matrix(row_major, n, n);
+  const double scale = matrix.cwiseAbs().maxCoeff();
+  if (scale == 0.0) return false;
+  const Eigen::LDLT<Matrix> ldlt(matrix);
+  const double tolerance = 1e-12 * scale;  // rounding of a semidefinite matrix's zero eigenvalues
+  if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -tolerance) return false;
+  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(matrix);
+  const auto& values = eigen.eigenvalues();
+  if (values.minCoeff() >= -tolerance) return false;
+  using Vector = Eigen::Matrix<double, N, 1>;
+  const Vector filtered = filter == EigenvalueFilter::kAbsolute ? Vector(values.cwiseAbs())
+                                                                : Vector(values.cwiseMax(0.0));
+  matrix = eigen.eigenvectors() * filtered.asDiagonal() * eigen.eigenvectors().transpose();
+  return true;
+}
+
+// A translation-invariant 2-node term's Hessian is [A −A; −A A] = [1 −1; −1 1] ⊗ A (src/model/term.h
+// builds it so, exactly): its eigenvalues are 0 and 2·eig(A), and projecting A projects the whole.
+bool ProjectSpringLike(EigenvalueFilter filter, double* row_major) {
+  Eigen::Map<Eigen::Matrix<double, 6, 6, Eigen::RowMajor>> matrix(row_major);
+  const Eigen::Matrix3d block = matrix.topLeftCorner<3, 3>();
+  if (matrix.topRightCorner<3, 3>() != -block || matrix.bottomLeftCorner<3, 3>() != -block ||
+      matrix.bottomRightCorner<3, 3>() != block) {
+    return ProjectFixed<6>(filter, 6, row_major);
+  }
+  Eigen::Matrix<double, 3, 3, Eigen::RowMajor> projected = block;
+  if (!ProjectFixed<3>(filter, 3, projected.data())) return false;
+  matrix << projected, -projected, -projected, projected;
+  return true;
+}
+
+bool ProjectToPositiveSemidefinite(EigenvalueFilter filter, int n, double* row_major) {
+  switch (n) {
+    case 3:
+      return ProjectFixed<3>(filter, n, row_major);
+    case 6:
+      return ProjectSpringLike(filter, row_major);
+    case 9:
+      return ProjectFixed<9>(filter, n, row_major);
+    case 12:
+      return ProjectFixed<12>(filter, n, row_major);
+    case 15:  // the finite-volume bending term (5 nodes)
+      return ProjectFixed<15>(filter, n, row_major);
+    default:
+      return ProjectFixed<Eigen::Dynamic>(filter, n, row_major);
+  }
+}
+
+}  // namespace
+
+FreeHessian::FreeHessian(const Model& model, const DofMap& dofs) : model_(model), dofs_(dofs) {
+  BuildPattern();
+  BuildDestinations();
+  values_.assign(rows_.size(), 0.0);
+  projected_.assign(rows_.size(), 0.0);
+}
+
+void FreeHessian::BuildPattern() {
+  const std::vector<int>& to_free = dofs_.global_to_free();
+  std::vector<std::vector<int>> column_rows(size());
+  std::vector<int> free;
+  for (const auto& term : model_.terms) {
+    free.clear();
+    for (int node : term->nodes()) {
+      for (int c = 0; c < 3; ++c) {
+        if (to_free[3 * node + c] >= 0) free.push_back(to_free[3 * node + c]);
+      }
+    }
+    for (int row : free) {
+      for (int column : free) {
+        if (row <= column) column_rows[column].push_back(row);
+      }
+    }
+  }
+  column_starts_.assign(size() + 1, 0);
+  diagonal_.assign(size(), -1);
+  for (int column = 0; column < size(); ++column) {
+    auto& rows = column_rows[column];
+    rows.push_back(column);  // every diagonal entry exists, for the regularisation
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    column_starts_[column + 1] = column_starts_[column] + static_cast<int>(rows.size());
+  }
+  rows_.reserve(column_starts_.back());
+  for (int column = 0; column < size(); ++column) {
+    rows_.insert(rows_.end(), column_rows[column].begin(), column_rows[column].end());
+    std::vector<int>().swap(column_rows[column]);
+    diagonal_[column] = column_starts_[column + 1] - 1;  // rows are sorted, the diagonal is last
+  }
+}
+
+void FreeHessian::BuildDestinations() {
+  const std::vector<int>& to_free = dofs_.global_to_free();
+  term_offsets_.reserve(model_.terms.size() + 1);
+  term_offsets_.push_back(0);
+  for (const auto& term : model_.terms) {
+    const int n = term->num_coordinates();
+    const auto& nodes = term->nodes();
+    for (int r = 0; r < n; ++r) {
+      const int row = to_free[3 * nodes[r / 3] + r % 3];
+      for (int c = 0; c < n; ++c) {
+        const int column = to_free[3 * nodes[c / 3] + c % 3];
+        int destination = -1;
+        if (row >= 0 && column >= 0 && row <= column) {
+          const auto first = rows_.begin() + column_starts_[column];
+          const auto last = rows_.begin() + column_starts_[column + 1];
+          destination = static_cast<int>(std::lower_bound(first, last, row) - rows_.begin());
+        }
+        destinations_.push_back(destination);
+      }
+    }
+    term_offsets_.push_back(static_cast<int>(destinations_.size()));
+  }
+}
+
+bool FreeHessian::Assemble(const double* positions, bool project, Assembly* assembly,
+                           std::vector<double>* gradient) {
+  *assembly = Assembly();
+  gradient->assign(model_.num_dofs(), 0.0);
+  std::fill(values_.begin(), values_.end(), 0.0);
+  if (project) std::fill(projected_.begin(), projected_.end(), 0.0);
+  std::vector<double> local_gradient, local_hessian;
+  for (size_t t = 0; t < model_.terms.size(); ++t) {
+    const Term& term = *model_.terms[t];
+    const int n = term.num_coordinates();
+    local_gradient.resize(n);
+    local_hessian.resize(n * n);
+    double energy = 0.0;
+    if (!term.EnergyHessian(positions, &energy, local_gradient.data(), local_hessian.data())) {
+      return false;
+    }
+    assembly->energy += energy;
+    assembly->energy_magnitude += std::abs(energy);
+    const auto& nodes = term.nodes();
+    for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
+    const int* destination = destinations_.data() + term_offsets_[t];
+    for (int k = 0; k < n * n; ++k) {
+      if (destination[k] >= 0) values_[destination[k]] += local_hessian[k];
+    }
+    if (!project) continue;
+    if (ProjectToPositiveSemidefinite(filter_, n, local_hessian.data())) {
+      ++assembly->projected_terms;
+    }
+    for (int k = 0; k < n * n; ++k) {
+      if (destination[k] >= 0) projected_[destination[k]] += local_hessian[k];
+    }
+  }
+  return std::isfinite(assembly->energy);
+}
+
+void FreeHessian::Multiply(const std::vector<double>& values, const double* x, double* y) const {
+  std::fill(y, y + size(), 0.0);
+  for (int column = 0; column < size(); ++column) {
+    for (int p = column_starts_[column]; p < column_starts_[column + 1]; ++p) {
+      const int row = rows_[p];
+      y[row] += values[p] * x[column];
+      if (row != column) y[column] += values[p] * x[row];
+    }
+  }
+}
+
+SparseCholesky::SparseCholesky(const FreeHessian& hessian) : hessian_(hessian) {
+  assert(hessian.size() > 0);
+  RunLibrariesOnOneThread();
+  cholmod_start(&common_);
+  common_.print = 0;                        // failures are reported by the return value
+  common_.supernodal = CHOLMOD_SUPERNODAL;  // always the supernodal (BLAS-3) factorisation
+  common_.quick_return_if_not_posdef = 1;   // an indefinite matrix fails fast
+  const int n = hessian.size();
+  matrix_ = cholmod_allocate_sparse(n, n, hessian.num_nonzeros(), /*sorted=*/1, /*packed=*/1,
+                                    /*stype=*/1, CHOLMOD_REAL, &common_);
+  std::copy(hessian.column_starts().begin(), hessian.column_starts().end(),
+            static_cast<int*>(matrix_->p));
+  std::copy(hessian.rows().begin(), hessian.rows().end(), static_cast<int*>(matrix_->i));
+  std::fill_n(static_cast<double*>(matrix_->x), hessian.num_nonzeros(), 0.0);
+  factor_ = cholmod_analyze(matrix_, &common_);
+  rhs_ = cholmod_zeros(n, 1, CHOLMOD_REAL, &common_);
+}
+
+SparseCholesky::~SparseCholesky() {
+  cholmod_free_dense(&rhs_, &common_);
+  cholmod_free_factor(&factor_, &common_);
+  cholmod_free_sparse(&matrix_, &common_);
+  cholmod_finish(&common_);
+}
+
+double SparseCholesky::factor_nonzeros() const { return common_.lnz; }
+
+bool SparseCholesky::Factorize(const std::vector<double>& values,
+                               const std::vector<double>* shift) {
+  const auto start = std::chrono::steady_clock::now();
+  double* x = static_cast<double*>(matrix_->x);
+  std::copy(values.begin(), values.end(), x);
+  if (shift) {
+    for (int k = 0; k < hessian_.size(); ++k) x[hessian_.diagonal()[k]] += (*shift)[k];
+  }
+  const int ok = cholmod_factorize(matrix_, factor_, &common_);
+  last_factorization_seconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return ok && common_.status == CHOLMOD_OK && factor_->minor == factor_->n;
+}
+
+void SparseCholesky::Solve(const std::vector<double>& b, std::vector<double>* x) {
+  std::copy(b.begin(), b.end(), static_cast<double*>(rhs_->x));
+  cholmod_dense* solution = cholmod_solve(CHOLMOD_A, factor_, rhs_, &common_);
+  const double* values = static_cast<const double*>(solution->x);
+  x->assign(values, values + hessian_.size());
+  cholmod_free_dense(&solution, &common_);
+}
+
+}  // namespace drape

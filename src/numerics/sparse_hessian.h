@@ -1,0 +1,105 @@
+// The Hessian of a model's energy over its free coordinates, and its Cholesky factorisation.
+//
+// FreeHessian assembles, term by term, the exact second derivatives that Term::EnergyHessian
+// derives from the cost functors (nested Jets), into a sparse pattern built once: the upper
+// triangle in compressed columns, with the destination of every local entry of every term
+// precomputed, so that each assembly only adds numbers. It keeps two sets of values over the
+// same pattern: the true Hessian, and the Hessian whose every term is first projected to
+// positive semidefinite (negative eigenvalues of the small local matrix set to zero, or to their
+// magnitude: EigenvalueFilter).
+//
+// SparseCholesky factorises a matrix of that pattern with CHOLMOD's supernodal Cholesky: the
+// symbolic analysis (fill-reducing ordering, supernodes) once, the numeric factorisation per
+// call. Used by the newton solver and by the stability certificate.
+#ifndef DRAPE_SRC_NUMERICS_SPARSE_HESSIAN_H_
+#define DRAPE_SRC_NUMERICS_SPARSE_HESSIAN_H_
+
+#include <cholmod.h>
+
+#include <vector>
+
+#include "src/model/equilibrium.h"
+#include "src/model/model.h"
+
+namespace drape {
+
+// How a term's negative eigenvalues are made nonnegative: set to zero (the nearest semidefinite
+// matrix), or replaced by their magnitude, which keeps the curvature's size and only flips its
+// sign (a compressed spring then resists sideways motion as much as a stretched one would).
+enum class EigenvalueFilter { kClamp, kAbsolute };
+
+class FreeHessian {
+ public:
+  // Builds the pattern of the model's terms over the free coordinates of `dofs`. Both must
+  // outlive this object.
+  FreeHessian(const Model& model, const DofMap& dofs);
+
+  struct Assembly {
+    double energy = 0.0;            // J
+    double energy_magnitude = 0.0;  // Σ |term energy|, J: the scale of the energy's roundoff
+    int projected_terms = 0;        // terms whose local Hessian had a negative eigenvalue
+  };
+  // Energy, gradient over all 3n coordinates (`gradient`, resized) and the Hessian values at
+  // `positions`. With `project`, also the per-term projected values. False if a term is not
+  // evaluable there or a value is not finite.
+  bool Assemble(const double* positions, bool project, Assembly* assembly,
+                std::vector<double>* gradient);
+
+  void set_eigenvalue_filter(EigenvalueFilter filter) { filter_ = filter; }
+
+  int size() const { return dofs_.num_free(); }
+  int num_nonzeros() const { return static_cast<int>(rows_.size()); }
+  const std::vector<int>& column_starts() const { return column_starts_; }
+  const std::vector<int>& rows() const { return rows_; }
+  // Index of each free coordinate's diagonal entry in the value arrays.
+  const std::vector<int>& diagonal() const { return diagonal_; }
+  const std::vector<double>& values() const { return values_; }
+  const std::vector<double>& projected_values() const { return projected_; }
+
+  // y = A x for the symmetric matrix whose upper triangle is `values` (free coordinates).
+  void Multiply(const std::vector<double>& values, const double* x, double* y) const;
+
+ private:
+  void BuildPattern();
+  void BuildDestinations();
+
+  const Model& model_;
+  const DofMap& dofs_;
+  std::vector<int> column_starts_, rows_, diagonal_;
+  // For term t, destinations_[term_offsets_[t] + r * size + c] is the index in the value arrays of
+  // its local entry (r, c), or -1 (fixed coordinate, or below the diagonal).
+  std::vector<int> term_offsets_, destinations_;
+  std::vector<double> values_, projected_;
+  EigenvalueFilter filter_ = EigenvalueFilter::kClamp;
+};
+
+class SparseCholesky {
+ public:
+  // Symbolic analysis of the pattern of `hessian` (which must outlive this object).
+  explicit SparseCholesky(const FreeHessian& hessian);
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+  // Numeric factorisation of the matrix with upper triangle `values` plus diag(`shift`) (one per
+  // free coordinate; may be null). False if it is not positive definite.
+  bool Factorize(const std::vector<double>& values, const std::vector<double>* shift);
+  // x = A⁻¹ b with the last successful factorisation.
+  void Solve(const std::vector<double>& b, std::vector<double>* x);
+
+  double last_factorization_seconds() const { return last_factorization_seconds_; }
+  double factor_nonzeros() const;
+  double factorization_flops() const { return common_.fl; }  // of the numeric factorisation
+
+ private:
+  const FreeHessian& hessian_;
+  cholmod_common common_;
+  cholmod_sparse* matrix_ = nullptr;
+  cholmod_factor* factor_ = nullptr;
+  cholmod_dense* rhs_ = nullptr;
+  double last_factorization_seconds_ = 0.0;
+};
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_NUMERICS_SPARSE_HESSIAN_H_

@@ -1,0 +1,34 @@
+// Conversions of KES-FB and Peirce measurements; formulas and sources in fabric_parameters.h.
+#include "src/scene/fabric_parameters.h"
+
+#include <cassert>
+
+namespace drape {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kCentimetre = 1e-2;  // m
+}  // namespace
+
+double KesBendingRigidity(double b_gf_cm) { return b_gf_cm * kGramForce * kCentimetre; }
+
+double KesShearRigidity(double g_gf_per_cm_deg) {
+  return g_gf_per_cm_deg * kGramForce / kCentimetre * (180.0 / kPi);
+}
+
+double KesArealDensity(double w_mg_per_cm2) {
+  return w_mg_per_cm2 * 1e-6 / (kCentimetre * kCentimetre);
+}
+
+double KesTensileRigidity(double emt_percent, double lt, double fm_gf_per_cm) {
+  assert(emt_percent > 0.0 && lt > 0.0 && fm_gf_per_cm > 0.0);
+  const double fm = fm_gf_per_cm * kGramForce / kCentimetre;  // N/m
+  return lt * fm / (emt_percent / 100.0);
+}
+
+double PeirceBendingRigidity(double bending_length_cm, double density_kg_per_m2) {
+  const double c = bending_length_cm * kCentimetre;
+  return density_kg_per_m2 * kStandardGravity * c * c * c;
+}
+
+}  // namespace drape

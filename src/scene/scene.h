@@ -1,0 +1,191 @@
+// The scene: every setting of a YAML scene file, typed, in SI units, each with the place in the
+// file it came from so that errors found later (while building the model) are still located.
+// The contract is ../shared/design/scene-format.md; every key is documented in README.md.
+#ifndef DRAPE_SRC_SCENE_SCENE_H_
+#define DRAPE_SRC_SCENE_SCENE_H_
+
+#include <Eigen/Core>
+#include <array>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace drape {
+
+// Where a value stands in a scene file (1-based line and column) and its dotted key path.
+struct Location {
+  std::string file;
+  int line = 0;
+  int column = 0;
+  std::string key;  // e.g. "material.springs.structural"
+};
+
+// A user-input error: the message is "file:line:column: key.path: what is wrong".
+class InputError : public std::runtime_error {
+ public:
+  InputError(const Location& where, const std::string& what);
+  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+};
+
+struct MeshSpec {
+  enum class Kind { kGrid, kCircle, kArc, kChain, kFile };
+  Kind kind = Kind::kGrid;
+  // grid
+  Eigen::Vector2d size{1.0, 1.0};
+  std::array<int, 2> nodes{15, 15};  // node counts along u and v
+  std::vector<double> u, v;          // explicit coordinates (non-uniform), empty if size/nodes
+  std::string plane = "xy";          // "xy" (flat) or "xz" (vertical, v along +z)
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  // circle
+  double radius = 0.15;
+  double spacing = 0.01;
+  // arc
+  int rings = 15;
+  int spokes = 64;
+  // chain
+  double length = 1.0;
+  int chain_nodes = 11;
+  Eigen::Vector3d direction{1.0, 0.0, 0.0};
+  std::vector<Eigen::Vector3d> points;  // explicit chain nodes (replace length/nodes/direction)
+  bool closed = false;                  // chain: a link from the last node back to the first
+  // file
+  std::string path;  // resolved against the scene file's folder
+  Location where;
+};
+
+// A stiffness given for both yarn directions: `structural: 1000` or `{warp: 1000, weft: 800}`.
+struct SpringFamilySpec {
+  bool present = false;
+  double warp = 0.0;  // N/m
+  double weft = 0.0;  // N/m
+  Location where;
+};
+
+struct SpringsSpec {
+  SpringFamilySpec structural, shear, flexion;
+  enum class RestLength { kInitial, kZero, kGiven };
+  RestLength rest_length = RestLength::kInitial;
+  double rest_length_value = 0.0;  // m, for kGiven
+  bool tension_only = false;
+  std::optional<double> stretch_limit;  // maximum stretch ratio, > 1
+  Location where;
+};
+
+struct FiniteVolumeSpec {
+  bool present = false;
+  double E_warp = 0, E_weft = 0, nu_warp = 0, nu_weft = 0, G = 0;  // N/m
+  double D_warp = 0, D_weft = 0, D_12 = 0;                         // N·m
+  Location where;
+};
+
+struct MaterialSpec {
+  std::string model = "springs";  // springs | finite_volume
+  enum class MassKind { kDensity, kNodeMass, kTotalMass };
+  MassKind mass_kind = MassKind::kDensity;
+  double mass_value = 0.0;  // kg/m², kg per node, or kg
+  SpringsSpec springs;
+  FiniteVolumeSpec finite_volume;
+  Location where;
+};
+
+// A set of nodes, as written under `nodes:` in `fixed` and `loads.forces`.
+struct NodeSelector {
+  enum class Kind { kEdge, kCorner, kIds, kIj, kBox, kWithin, kAll };
+  Kind kind = Kind::kAll;
+  std::string name;  // edge: top|bottom|left|right; corner: top-left|top-right|bottom-left|...
+  std::vector<int> ids;
+  std::vector<std::array<int, 2>> ij;
+  Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // box
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();                              // within
+  double radius = 0.0;                                                           // within
+  Location where;
+};
+
+struct FixedSpec {
+  NodeSelector nodes;
+  std::array<bool, 3> dofs{true, true, true};  // x, y, z
+  Eigen::Vector3d move = Eigen::Vector3d::Zero();
+  Location where;
+};
+
+struct ForceSpec {
+  NodeSelector nodes;
+  // kTotal: `value` shared equally; kEach: `value` on every node; kValues: `values[k]` on the k-th
+  // selected node in id order; kRamp: from `value` (first node) to `ramp_to` (last node), linear
+  // in the node's position along the selection.
+  enum class Kind { kTotal, kEach, kValues, kRamp };
+  Kind kind = Kind::kTotal;
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();    // N
+  std::vector<Eigen::Vector3d> values;                // N, kValues
+  Eigen::Vector3d ramp_to = Eigen::Vector3d::Zero();  // N, kRamp
+  Location values_where;                              // the `values` list (kValues)
+  Location where;
+};
+
+// Pressure on a closed 2-D chain: the potential −p × (area enclosed in the x–z plane).
+struct PressureSpec {
+  double pressure = 0.0;  // N/m (force per unit length of the profile, per unit depth)
+  Location where;
+};
+
+struct LoadsSpec {
+  std::optional<Eigen::Vector3d> gravity;  // m/s²
+  std::vector<ForceSpec> forces;
+  std::optional<PressureSpec> pressure;
+  Location where;
+};
+
+struct ObstacleSpec {
+  enum class Kind { kSphere, kDisk, kCylinder, kBox, kPlane, kPin };
+  Kind kind = Kind::kPlane;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // sphere, disk, cylinder; pin position
+  double radius = 0.0;
+  double height = 0.0;                                                           // cylinder
+  Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // box
+  Eigen::Vector3d normal{0.0, 0.0, 1.0};  // plane (point in `center`)
+  double friction = 0.0;
+  Location where;
+};
+
+struct ContactSpec {
+  double thickness = 0.001;  // m
+  Location where;
+};
+
+struct SolverSpec {
+  std::string method = "newton";
+  double tolerance = 1e-8;  // relative equilibrium residual
+  int max_iterations = 1000;
+  double time_limit = 600.0;  // s
+  // Method-specific keys: solver.<method>.<key>: number (validated by the solver registry).
+  std::map<std::string, std::map<std::string, double>> method_options;
+  Location where;
+};
+
+struct OutputSpec {
+  std::string directory;  // resolved: absolute or relative to the current directory
+  std::vector<std::string> write{"summary", "nodes", "history", "vtk", "obj"};
+  Location where;
+};
+
+struct Scene {
+  std::string file;       // the scene file as given
+  std::string directory;  // folder of the scene file
+  std::string name;       // default: the file stem
+  int dimension = 3;
+  MeshSpec mesh;
+  MaterialSpec material;
+  std::vector<FixedSpec> fixed;
+  LoadsSpec loads;
+  std::vector<ObstacleSpec> obstacles;
+  ContactSpec contact;
+  SolverSpec solver;
+  OutputSpec output;
+  Location root;  // the document itself (file, line 1)
+};
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_SCENE_SCENE_H_

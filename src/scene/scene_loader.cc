@@ -1,0 +1,912 @@
+// The scene schema: which keys exist, their types, units, ranges and defaults. Every key of
+// ../shared/design/scene-format.md is read here and documented in README.md (Scene reference).
+#include "src/scene/scene_loader.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "src/scene/fabric_parameters.h"
+#include "src/solvers/solver.h"
+#include "src/scene/yaml_overrides.h"
+#include "src/scene/yaml_reader.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What `output.write` may ask for; the writers decide what each produces. Add new outputs here.
+const std::vector<std::string>& OutputKinds() {
+  static const std::vector<std::string> kinds = {"summary", "nodes",   "history", "vtk",   "obj",
+                                                 "png",     "kinetic", "profile", "shadow"};
+  return kinds;
+}
+
+// The default method. It is accepted even while no solver of that name is registered yet.
+constexpr const char* kDefaultMethod = "newton";
+
+bool Contains(const std::vector<std::string>& list, const std::string& item) {
+  return std::find(list.begin(), list.end(), item) != list.end();
+}
+
+std::string JoinNames(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+// "a/b.yaml" + "x" → "a/x"; absolute paths stay as they are.
+std::string Resolve(const std::string& directory, const std::string& path) {
+  const fs::path given(path);
+  if (given.is_absolute()) return given.lexically_normal().string();
+  return (fs::path(directory) / given).lexically_normal().string();
+}
+
+// ------------------------------------------------------------------------------------ mesh
+
+const std::map<std::string, std::vector<std::string>>& MeshKeysByKind() {
+  static const std::map<std::string, std::vector<std::string>> keys = {
+      {"grid", {"kind", "size", "nodes", "u", "v", "plane", "origin"}},
+      {"circle", {"kind", "radius", "spacing", "origin"}},
+      {"arc", {"kind", "radius", "rings", "spokes", "origin"}},
+      {"chain", {"kind", "length", "nodes", "direction", "origin", "points", "closed"}},
+      {"file", {"kind", "path"}},
+  };
+  return keys;
+}
+
+MeshSpec::Kind MeshKindOf(const std::string& name) {
+  if (name == "circle") return MeshSpec::Kind::kCircle;
+  if (name == "arc") return MeshSpec::Kind::kArc;
+  if (name == "chain") return MeshSpec::Kind::kChain;
+  if (name == "file") return MeshSpec::Kind::kFile;
+  return MeshSpec::Kind::kGrid;
+}
+
+// Explicit grid coordinates: at least one, strictly increasing.
+std::vector<double> ReadCoordinates(const YamlValue& value) {
+  const auto items = ReadList(value);
+  if (!value.get().IsSequence() || items.empty()) {
+    Fail(value, "expected a list of increasing coordinates in m, got " + Describe(value.get()));
+  }
+  std::vector<double> coordinates;
+  for (const auto& item : items) {
+    const double x = ReadNumber(item);
+    if (!coordinates.empty() && !(x > coordinates.back())) {
+      std::ostringstream text;
+      text << "coordinates must increase strictly, got " << x << " after " << coordinates.back();
+      Fail(item, text.str());
+    }
+    coordinates.push_back(x);
+  }
+  return coordinates;
+}
+
+// Explicit coordinates along one grid axis replace that axis' size and node count; if those are
+// given too, they must agree.
+void ApplyCoordinates(const YamlMap& map, const std::string& key, int axis, MeshSpec* spec) {
+  const auto given = map.Find(key);
+  if (!given) return;
+  auto& coordinates = axis == 0 ? spec->u : spec->v;
+  coordinates = ReadCoordinates(*given);
+  const int count = static_cast<int>(coordinates.size());
+  const double span = coordinates.back() - coordinates.front();
+  const std::string index = "[" + std::to_string(axis) + "]";
+  if (map.Has("nodes") && spec->nodes[axis] != count) {
+    Fail(*given, "has " + std::to_string(count) + " coordinates but mesh.nodes" + index + " is " +
+                     std::to_string(spec->nodes[axis]) + "; give one or the other");
+  }
+  if (map.Has("size") && std::abs(spec->size[axis] - span) > 1e-12 * std::max(1.0, span)) {
+    std::ostringstream text;
+    text << "spans " << span << " m but mesh.size" << index << " is " << spec->size[axis]
+         << "; give one or the other";
+    Fail(*given, text.str());
+  }
+  spec->nodes[axis] = count;
+  spec->size[axis] = span;
+}
+
+void ReadGrid(const YamlMap& map, MeshSpec* spec) {
+  if (const auto nodes = map.Find("nodes")) {
+    if (!nodes->get().IsSequence() || nodes->get().size() != 2) {
+      Fail(*nodes, "expected the node counts [nu, nv], got " + Describe(nodes->get()));
+    }
+    const auto items = ReadList(*nodes);
+    for (int k = 0; k < 2; ++k) spec->nodes[k] = ReadIntAtLeast(items[k], 1);
+  }
+  const auto size = map.Find("size");
+  if (size) {
+    const auto numbers = ReadNumbers(*size, 2);
+    spec->size = Eigen::Vector2d(numbers[0], numbers[1]);
+  }
+  ApplyCoordinates(map, "u", 0, spec);
+  ApplyCoordinates(map, "v", 1, spec);
+  if (size) {  // an extent must be positive, unless its axis has a single node
+    const auto items = ReadList(*size);
+    for (int k = 0; k < 2; ++k) {
+      if (spec->nodes[k] > 1) ReadPositive(items[k]);
+      ReadNonNegative(items[k]);
+    }
+  }
+  if (spec->nodes[0] * static_cast<long>(spec->nodes[1]) < 2) {
+    Fail(map.Has("nodes") ? *map.Find("nodes") : map.value(),
+         "a grid needs at least 2 nodes, got " +
+             std::to_string(spec->nodes[0] * static_cast<long>(spec->nodes[1])));
+  }
+  if (const auto plane = map.Find("plane")) spec->plane = ReadChoice(*plane, {"xy", "xz"});
+}
+
+// Explicit chain nodes: a list of [x, y, z], which replaces length, nodes and direction.
+void ReadChainPoints(const YamlMap& map, const YamlValue& points, MeshSpec* spec) {
+  for (const char* key : {"length", "nodes", "direction"}) {
+    if (map.Has(key)) {
+      throw InputError(map.KeyLocation(key), std::string("'") + key +
+                                                 "' does not apply when the chain's points "
+                                                 "are given");
+    }
+  }
+  if (!points.get().IsSequence()) {
+    Fail(points, "expected a list of node positions [x, y, z] in m, got " + Describe(points.get()));
+  }
+  for (const auto& item : ReadList(points)) spec->points.push_back(ReadVector3(item));
+  const size_t minimum = spec->closed ? 3 : 2;
+  if (spec->points.size() < minimum) {
+    Fail(points, std::string(spec->closed ? "a closed chain" : "a chain") + " needs at least " +
+                     std::to_string(minimum) + " points, got " +
+                     std::to_string(spec->points.size()));
+  }
+  spec->chain_nodes = static_cast<int>(spec->points.size());
+}
+
+void ReadChain(const YamlMap& map, MeshSpec* spec) {
+  if (const auto closed = map.Find("closed")) spec->closed = ReadBool(*closed);
+  if (const auto points = map.Find("points")) {
+    ReadChainPoints(map, *points, spec);
+    return;
+  }
+  if (const auto length = map.Find("length")) spec->length = ReadPositive(*length);
+  if (const auto nodes = map.Find("nodes")) {
+    if (!nodes->get().IsScalar()) {
+      Fail(*nodes, "expected the number of nodes of the chain, got " + Describe(nodes->get()));
+    }
+    spec->chain_nodes = ReadIntAtLeast(*nodes, 1);
+    if (spec->chain_nodes < 2) Fail(*nodes, "a chain needs at least 2 nodes, got 1");
+    if (spec->closed && spec->chain_nodes < 3) {
+      Fail(*nodes, "a closed chain needs at least 3 nodes, got 2");
+    }
+  }
+  if (const auto direction = map.Find("direction")) {
+    const Eigen::Vector3d given = ReadVector3(*direction);
+    if (!(given.norm() > 0.0)) Fail(*direction, "must not be the zero vector");
+    spec->direction = given.normalized();
+  }
+}
+
+MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory) {
+  static const std::vector<std::string> all_keys = {
+      "kind",    "size",  "nodes",  "u",      "v",         "plane", "origin", "radius",
+      "spacing", "rings", "spokes", "length", "direction", "path",  "points", "closed"};
+  const YamlMap map(value, all_keys);
+  MeshSpec spec;
+  spec.where = value.where;
+  std::string kind = "grid";
+  std::vector<std::string> kinds;
+  for (const auto& entry : MeshKeysByKind()) kinds.push_back(entry.first);
+  if (const auto given = map.Find("kind")) kind = ReadChoice(*given, kinds);
+  spec.kind = MeshKindOf(kind);
+  const auto& allowed = MeshKeysByKind().at(kind);
+  for (const auto& key : map.Keys()) {
+    if (!Contains(allowed, key)) {
+      throw InputError(map.KeyLocation(key), "'" + key + "' does not apply to a " + kind +
+                                                 " mesh (its keys: " + JoinNames(allowed) + ")");
+    }
+  }
+  switch (spec.kind) {
+    case MeshSpec::Kind::kGrid:
+      ReadGrid(map, &spec);
+      break;
+    case MeshSpec::Kind::kCircle:
+      if (const auto radius = map.Find("radius")) spec.radius = ReadPositive(*radius);
+      if (const auto spacing = map.Find("spacing")) spec.spacing = ReadPositive(*spacing);
+      break;
+    case MeshSpec::Kind::kArc:
+      if (const auto radius = map.Find("radius")) spec.radius = ReadPositive(*radius);
+      if (const auto rings = map.Find("rings")) spec.rings = ReadIntAtLeast(*rings, 1);
+      if (const auto spokes = map.Find("spokes")) spec.spokes = ReadIntAtLeast(*spokes, 1);
+      break;
+    case MeshSpec::Kind::kChain:
+      ReadChain(map, &spec);
+      break;
+    case MeshSpec::Kind::kFile: {
+      const YamlValue path = map.Get("path");
+      const std::string given = ReadString(path);
+      if (given.empty()) Fail(path, "expected the path of an OBJ or PLY file, got nothing");
+      spec.path = Resolve(scene_directory, given);
+      break;
+    }
+  }
+  if (const auto origin = map.Find("origin")) spec.origin = ReadVector3(*origin);
+  return spec;
+}
+
+// -------------------------------------------------------------------------------- material
+
+// `structural: 1000` or `structural: {warp: 1000, weft: 800}`, N/m.
+SpringFamilySpec ReadFamily(const YamlValue& value) {
+  SpringFamilySpec family;
+  family.present = true;
+  family.where = value.where;
+  if (value.get().IsMap()) {
+    const YamlMap map(value, {"warp", "weft"});
+    family.warp = ReadPositive(map.Get("warp"));
+    family.weft = ReadPositive(map.Get("weft"));
+  } else if (value.get().IsScalar()) {
+    family.warp = family.weft = ReadPositive(value);
+  } else {
+    Fail(value,
+         "expected a stiffness in N/m or {warp: ..., weft: ...}, got " + Describe(value.get()));
+  }
+  return family;
+}
+
+void ReadRestLength(const YamlValue& value, SpringsSpec* springs) {
+  const YAML::Node& node = value.get();
+  const std::vector<std::string> words = {"initial", "zero"};
+  if (node.IsScalar() && node.Tag() != "!" && Contains(words, node.Scalar())) {
+    springs->rest_length = node.Scalar() == "zero" ? SpringsSpec::RestLength::kZero
+                                                   : SpringsSpec::RestLength::kInitial;
+    return;
+  }
+  std::string error;
+  if (node.IsScalar() && node.Tag() != "!") {
+    if (const auto length = ParseNumber(node.Scalar(), &error)) {
+      if (!(*length > 0.0)) Fail(value, "a given rest length must be positive (or write zero)");
+      springs->rest_length = SpringsSpec::RestLength::kGiven;
+      springs->rest_length_value = *length;
+      return;
+    }
+    if (const auto nearest = NearestName(node.Scalar(), words)) {
+      Fail(value, "unknown value '" + node.Scalar() + "'; did you mean '" + *nearest + "'?");
+    }
+    if (error.rfind("expected a number", 0) != 0) Fail(value, error);
+  }
+  Fail(value, "expected initial, zero or a length in m, got " + Describe(node));
+}
+
+SpringsSpec ReadSprings(const YamlValue& value) {
+  const YamlMap map(
+      value, {"structural", "shear", "flexion", "rest_length", "tension_only", "stretch_limit"});
+  SpringsSpec springs;
+  springs.where = value.where;
+  if (const auto v = map.Find("structural")) springs.structural = ReadFamily(*v);
+  if (const auto v = map.Find("shear")) springs.shear = ReadFamily(*v);
+  if (const auto v = map.Find("flexion")) springs.flexion = ReadFamily(*v);
+  if (!springs.structural.present && !springs.shear.present && !springs.flexion.present) {
+    Fail(value, "no spring family is given: add structural, shear or flexion (N/m)");
+  }
+  if (const auto v = map.Find("rest_length")) ReadRestLength(*v, &springs);
+  if (const auto v = map.Find("tension_only")) springs.tension_only = ReadBool(*v);
+  if (const auto v = map.Find("stretch_limit")) {
+    const double limit = ReadNumber(*v);
+    if (!(limit > 1.0)) {
+      std::ostringstream text;
+      text << "must be greater than 1 (a maximum stretch ratio), got " << limit;
+      Fail(*v, text.str());
+    }
+    springs.stretch_limit = limit;
+  }
+  return springs;
+}
+
+// One model parameter that may be given in SI under its own key or converted from a measurement
+// (finite_volume.kes.*, finite_volume.bending_length.*): exactly one way must be used.
+struct ParameterWay {
+  std::string key;                 // as the user writes it below material.finite_volume
+  std::optional<YamlValue> value;  // the given value, if any
+  std::function<double(const YamlValue&)> convert;
+};
+
+double ReadParameter(const YamlMap& map, const std::string& key, const std::string& unit,
+                     const std::vector<ParameterWay>& measured) {
+  std::vector<ParameterWay> ways = {{key, map.Find(key), ReadPositive}};
+  ways.insert(ways.end(), measured.begin(), measured.end());
+  const ParameterWay* given = nullptr;
+  for (const auto& way : ways) {
+    if (!way.value) continue;
+    if (given) {
+      Fail(*way.value, "give " + key + " in one way only: '" + given->key + "' is given too");
+    }
+    given = &way;
+  }
+  if (!given) {
+    std::string names;
+    for (size_t k = 1; k < ways.size(); ++k) names += " or " + ways[k].key;
+    Location where = map.value().where;
+    where.key = ChildKey(where.key, key);
+    throw InputError(
+        where, "required key '" + key + "' is missing: give " + key + " (" + unit + ")" + names);
+  }
+  return given->convert(*given->value);
+}
+
+// finite_volume.kes: KES-FB measurements in their own units (src/scene/fabric_parameters.h).
+const std::vector<std::string>& KesKeys() {
+  static const std::vector<std::string> keys = {"B_warp",   "B_weft",  "G",       "W", "EMT_warp",
+                                                "EMT_weft", "LT_warp", "LT_weft", "Fm"};
+  return keys;
+}
+
+// The tensile rigidity of one direction from kes.EMT_<direction> (and LT_<direction>, Fm).
+std::optional<YamlValue> CheckedEmt(const YamlMap& kes, const std::string& direction) {
+  const auto emt = kes.Find("EMT_" + direction);
+  const auto lt = kes.Find("LT_" + direction);
+  if (lt && !emt) Fail(*lt, "LT_" + direction + " needs EMT_" + direction + " (%) as well");
+  return emt;
+}
+
+double KesTensile(const YamlMap& kes, const std::string& direction, const YamlValue& emt) {
+  const auto lt = kes.Find("LT_" + direction);
+  const auto fm = kes.Find("Fm");
+  return KesTensileRigidity(ReadPositive(emt), lt ? ReadPositive(*lt) : 1.0,
+                            fm ? ReadPositive(*fm) : kKesStandardMaximumLoad);
+}
+
+// The areal density that Peirce's bending length needs: material.density or kes.W.
+struct ArealDensity {
+  std::optional<double> value;  // kg/m²
+  std::string missing;          // why there is none
+};
+
+FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& density) {
+  const YamlMap map(value, {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft",
+                            "D_12", "kes", "bending_length"});
+  FiniteVolumeSpec fv;
+  fv.present = true;
+  fv.where = value.where;
+  std::optional<YamlMap> kes, peirce;
+  if (const auto v = map.Find("kes")) kes.emplace(*v, KesKeys());
+  if (const auto v = map.Find("bending_length")) {
+    if (v->get().IsScalar()) {
+      Fail(*v, "give the bending length per direction: {warp: cm, weft: cm}");
+    }
+    peirce.emplace(*v, std::vector<std::string>{"warp", "weft"});
+  }
+  auto find = [](const std::optional<YamlMap>& block, const std::string& key) {
+    return block ? block->Find(key) : std::nullopt;
+  };
+  const auto kes_rigidity = [](const YamlValue& v) { return KesBendingRigidity(ReadPositive(v)); };
+  const auto peirce_rigidity = [&density](const YamlValue& v) {
+    const double length = ReadPositive(v);
+    if (!density.value) Fail(v, "a bending length needs the areal density: " + density.missing);
+    return PeirceBendingRigidity(length, *density.value);
+  };
+  const auto kes_way = [&](const std::string& direction) {
+    return ParameterWay{
+        "kes.EMT_" + direction, kes ? CheckedEmt(*kes, direction) : std::nullopt,
+        [&kes, direction](const YamlValue& v) { return KesTensile(*kes, direction, v); }};
+  };
+  fv.E_warp = ReadParameter(map, "E_warp", "N/m", {kes_way("warp")});
+  fv.E_weft = ReadParameter(map, "E_weft", "N/m", {kes_way("weft")});
+  fv.G = ReadParameter(map, "G", "N/m", {{"kes.G", find(kes, "G"), [](const YamlValue& v) {
+                                            return KesShearRigidity(ReadPositive(v));
+                                          }}});
+  fv.D_warp = ReadParameter(map, "D_warp", "N·m",
+                            {{"kes.B_warp", find(kes, "B_warp"), kes_rigidity},
+                             {"bending_length.warp", find(peirce, "warp"), peirce_rigidity}});
+  fv.D_weft = ReadParameter(map, "D_weft", "N·m",
+                            {{"kes.B_weft", find(kes, "B_weft"), kes_rigidity},
+                             {"bending_length.weft", find(peirce, "weft"), peirce_rigidity}});
+  if (const auto fm = find(kes, "Fm"); fm && !kes->Has("EMT_warp") && !kes->Has("EMT_weft")) {
+    Fail(*fm, "Fm (gf/cm) applies only with EMT_warp or EMT_weft");
+  }
+  if (const auto v = map.Find("nu_warp")) fv.nu_warp = ReadNumber(*v);
+  if (const auto v = map.Find("nu_weft")) fv.nu_weft = ReadNumber(*v);
+  if (!(fv.nu_warp * fv.nu_weft < 1.0)) {
+    Fail(map.Has("nu_weft") ? *map.Find("nu_weft") : *map.Find("nu_warp"),
+         "nu_warp * nu_weft must be less than 1 (else the membrane energy is not positive)");
+  }
+  if (const auto v = map.Find("D_12")) {
+    fv.D_12 = ReadNumber(*v);
+    if (!(fv.D_12 * fv.D_12 < fv.D_warp * fv.D_weft)) {
+      Fail(*v, "D_12² must be less than D_warp * D_weft (else the bending energy is not positive)");
+    }
+  }
+  return fv;
+}
+
+void ReadMass(const YamlMap& map, MaterialSpec* material) {
+  static const std::vector<std::pair<std::string, MaterialSpec::MassKind>> kinds = {
+      {"density", MaterialSpec::MassKind::kDensity},
+      {"node_mass", MaterialSpec::MassKind::kNodeMass},
+      {"total_mass", MaterialSpec::MassKind::kTotalMass}};
+  std::string first;
+  for (const auto& [key, kind] : kinds) {
+    const auto given = map.Find(key);
+    if (!given) continue;
+    if (!first.empty()) {
+      throw InputError(map.KeyLocation(key),
+                       "give only one of density, node_mass and "
+                       "total_mass ('" +
+                           first + "' is given too)");
+    }
+    first = key;
+    material->mass_kind = kind;
+    material->mass_value = ReadPositive(*given);
+  }
+  if (first.empty()) {
+    Fail(map.value(),
+         "the mass is missing: give density (kg/m², per metre for a chain), "
+         "node_mass (kg per node) or total_mass (kg)");
+  }
+}
+
+// The mass of a finite-volume material: material.density / node_mass / total_mass, or the KES
+// weight finite_volume.kes.W (mg/cm²) instead, never both. Returns the areal density that a
+// bending length is converted with.
+ArealDensity ReadFiniteVolumeMass(const YamlMap& map, MaterialSpec* material) {
+  std::optional<YamlValue> weight;
+  if (const auto fv = map.Find("finite_volume"); fv && fv->get().IsMap()) {
+    if (const auto kes = YamlMap(*fv).Find("kes"); kes && kes->get().IsMap()) {
+      weight = YamlMap(*kes).Find("W");
+    }
+  }
+  if (!weight) {
+    ReadMass(map, material);
+    if (material->mass_kind == MaterialSpec::MassKind::kDensity) return {material->mass_value, ""};
+    return {std::nullopt, "give material.density (kg/m²) or finite_volume.kes.W (mg/cm²)"};
+  }
+  for (const char* key : {"density", "node_mass", "total_mass"}) {
+    if (map.Has(key)) {
+      throw InputError(map.KeyLocation(key), std::string("give the mass in one way only: '") + key +
+                                                 "' and finite_volume.kes.W are both given");
+    }
+  }
+  material->mass_kind = MaterialSpec::MassKind::kDensity;
+  material->mass_value = KesArealDensity(ReadPositive(*weight));
+  return {material->mass_value, ""};
+}
+
+MaterialSpec ReadMaterial(const YamlValue& value) {
+  const YamlMap map(value,
+                    {"model", "density", "node_mass", "total_mass", "springs", "finite_volume"});
+  MaterialSpec material;
+  material.where = value.where;
+  if (const auto model = map.Find("model")) {
+    material.model = ReadChoice(*model, {"springs", "finite_volume"});
+  }
+  const bool springs = material.model == "springs";
+  const std::string own = springs ? "springs" : "finite_volume";
+  const std::string other = springs ? "finite_volume" : "springs";
+  if (springs) ReadMass(map, &material);
+  if (map.Has(other)) {
+    throw InputError(map.KeyLocation(other), "'" + other +
+                                                 "' applies only when material.model "
+                                                 "is " +
+                                                 other + " (here it is " + own + ")");
+  }
+  if (springs) {
+    material.springs = ReadSprings(map.Get("springs"));
+  } else {
+    const ArealDensity density = ReadFiniteVolumeMass(map, &material);
+    material.finite_volume = ReadFiniteVolume(map.Get("finite_volume"), density);
+  }
+  return material;
+}
+
+// ------------------------------------------------------------------------- node selections
+
+std::array<int, 2> ReadIj(const YamlValue& value) {
+  if (!value.get().IsSequence() || value.get().size() != 2) {
+    Fail(value, "expected a grid index [i, j], got " + Describe(value.get()));
+  }
+  const auto items = ReadList(value);
+  return {ReadIntAtLeast(items[0], 0), ReadIntAtLeast(items[1], 0)};
+}
+
+void ReadSelectorKind(const std::string& kind, const YamlValue& value, NodeSelector* selector) {
+  if (kind == "edge") {
+    selector->kind = NodeSelector::Kind::kEdge;
+    selector->name = ReadChoice(value, {"top", "bottom", "left", "right"});
+  } else if (kind == "corner") {
+    selector->kind = NodeSelector::Kind::kCorner;
+    selector->name = ReadChoice(value, {"top-left", "top-right", "bottom-left", "bottom-right"});
+  } else if (kind == "ids") {
+    selector->kind = NodeSelector::Kind::kIds;
+    if (!value.get().IsSequence())
+      Fail(value, "expected a list of node ids, got " + Describe(value.get()));
+    for (const auto& item : ReadList(value)) selector->ids.push_back(ReadIntAtLeast(item, 0));
+  } else if (kind == "ij") {
+    selector->kind = NodeSelector::Kind::kIj;
+    if (!value.get().IsSequence())
+      Fail(value, "expected a list of [i, j] pairs, got " + Describe(value.get()));
+    for (const auto& item : ReadList(value)) selector->ij.push_back(ReadIj(item));
+  } else if (kind == "box") {
+    selector->kind = NodeSelector::Kind::kBox;
+    const YamlMap box(value, {"min", "max"});
+    selector->min = ReadVector3(box.Get("min"));
+    selector->max = ReadVector3(box.Get("max"));
+    if ((selector->min.array() > selector->max.array()).any()) {
+      Fail(box.Get("max"), "max must be at least min in every coordinate");
+    }
+  } else if (kind == "within") {
+    selector->kind = NodeSelector::Kind::kWithin;
+    const YamlMap within(value, {"center", "radius"});
+    selector->center = ReadVector3(within.Get("center"));
+    selector->radius = ReadPositive(within.Get("radius"));
+  } else {
+    selector->kind = NodeSelector::Kind::kAll;
+    if (!ReadBool(value)) Fail(value, "'all: false' selects nothing; write all: true");
+  }
+}
+
+NodeSelector ReadSelector(const YamlValue& value) {
+  static const std::vector<std::string> kinds = {"edge", "corner", "ids", "ij",
+                                                 "box",  "within", "all"};
+  if (!value.get().IsMap()) {
+    Fail(value, "expected a node selection such as {edge: top} or {ids: [0, 3]}, got " +
+                    Describe(value.get()));
+  }
+  const YamlMap map(value, kinds);
+  const auto keys = map.Keys();
+  if (keys.empty()) Fail(value, "no selection given: use one of " + JoinNames(kinds));
+  if (keys.size() > 1) {
+    throw InputError(map.KeyLocation(keys[1]),
+                     "select nodes in one way only ('" + keys[0] + "' is given too)");
+  }
+  NodeSelector selector;
+  const YamlValue kind_value = map.Get(keys[0]);
+  selector.where = kind_value.where;
+  ReadSelectorKind(keys[0], kind_value, &selector);
+  return selector;
+}
+
+// --------------------------------------------------------------------------- fixed, loads
+
+std::array<bool, 3> ReadDofs(const YamlValue& value) {
+  if (!value.get().IsSequence()) {
+    Fail(value, "expected a list of directions such as [x, z], got " + Describe(value.get()));
+  }
+  const auto items = ReadList(value);
+  if (items.empty()) Fail(value, "fixes nothing: list at least one of x, y, z");
+  std::array<bool, 3> dofs{false, false, false};
+  const std::vector<std::string> names = {"x", "y", "z"};
+  for (const auto& item : items) {
+    const std::string name = ReadChoice(item, names);
+    const size_t axis = std::find(names.begin(), names.end(), name) - names.begin();
+    if (dofs[axis]) Fail(item, "'" + name + "' is listed twice");
+    dofs[axis] = true;
+  }
+  return dofs;
+}
+
+std::vector<FixedSpec> ReadFixed(const YamlValue& value) {
+  if (!value.get().IsSequence() && !value.get().IsNull()) {
+    Fail(value, "expected a list of fixed selections (- nodes: ...), got " + Describe(value.get()));
+  }
+  std::vector<FixedSpec> fixed;
+  for (const auto& item : ReadList(value)) {
+    const YamlMap map(item, {"nodes", "dofs", "move"});
+    FixedSpec spec;
+    spec.where = item.where;
+    spec.nodes = ReadSelector(map.Get("nodes"));
+    if (const auto dofs = map.Find("dofs")) spec.dofs = ReadDofs(*dofs);
+    if (const auto move = map.Find("move")) spec.move = ReadVector3(*move);
+    fixed.push_back(spec);
+  }
+  return fixed;
+}
+
+// `values: [[fx, fy, fz], ...]`: one force per selected node (their count is checked against the
+// selection when the model is built).
+void ReadForceValues(const YamlValue& value, ForceSpec* force) {
+  if (!value.get().IsSequence() || value.get().size() == 0) {
+    Fail(value, "expected a list of forces [fx, fy, fz] in N, one per selected node, got " +
+                    Describe(value.get()));
+  }
+  force->kind = ForceSpec::Kind::kValues;
+  force->values_where = value.where;
+  for (const auto& item : ReadList(value)) force->values.push_back(ReadVector3(item));
+}
+
+// `ramp: {from: [fx, fy, fz], to: [fx, fy, fz]}`: N per node, linear along the selection.
+void ReadForceRamp(const YamlValue& value, ForceSpec* force) {
+  const YamlMap ramp(value, {"from", "to"});
+  force->kind = ForceSpec::Kind::kRamp;
+  force->value = ReadVector3(ramp.Get("from"));
+  force->ramp_to = ReadVector3(ramp.Get("to"));
+}
+
+ForceSpec ReadForce(const YamlValue& item) {
+  const YamlMap map(item, {"nodes", "total", "each", "values", "ramp"});
+  ForceSpec force;
+  force.where = item.where;
+  force.nodes = ReadSelector(map.Get("nodes"));
+  std::vector<std::string> given;
+  for (const auto& key : map.Keys()) {
+    if (key != "nodes") given.push_back(key);
+  }
+  if (given.size() > 1) {
+    throw InputError(map.KeyLocation(given[1]),
+                     "give the force in one way only (total, each, values or ramp), not both: '" +
+                         given[0] + "' is given too");
+  }
+  if (const auto values = map.Find("values")) {
+    ReadForceValues(*values, &force);
+  } else if (const auto ramp = map.Find("ramp")) {
+    ReadForceRamp(*ramp, &force);
+  } else if (const auto total = map.Find("total")) {
+    force.kind = ForceSpec::Kind::kTotal;
+    force.value = ReadVector3(*total);
+  } else if (const auto each = map.Find("each")) {
+    force.kind = ForceSpec::Kind::kEach;
+    force.value = ReadVector3(*each);
+  } else {
+    Location where = item.where;
+    where.key = ChildKey(item.where.key, "total");
+    throw InputError(where,
+                     "the force is missing: give total: [fx, fy, fz] (N, shared), "
+                     "each: [fx, fy, fz] (N per node), values: [[fx, fy, fz], ...] (one per "
+                     "node) or ramp: {from: [...], to: [...]} (N per node)");
+  }
+  return force;
+}
+
+LoadsSpec ReadLoads(const YamlValue& value) {
+  const YamlMap map(value, {"gravity", "forces", "pressure"});
+  LoadsSpec loads;
+  loads.where = value.where;
+  if (const auto gravity = map.Find("gravity")) loads.gravity = ReadVector3(*gravity);
+  if (const auto forces = map.Find("forces")) {
+    if (!forces->get().IsSequence() && !forces->get().IsNull()) {
+      Fail(*forces, "expected a list of forces (- nodes: ...), got " + Describe(forces->get()));
+    }
+    for (const auto& item : ReadList(*forces)) loads.forces.push_back(ReadForce(item));
+  }
+  if (const auto pressure = map.Find("pressure")) {
+    PressureSpec spec;
+    spec.where = pressure->where;
+    spec.pressure = ReadNumber(*pressure);
+    loads.pressure = spec;
+  }
+  return loads;
+}
+
+// ------------------------------------------------------------------------------ obstacles
+
+struct ObstacleKind {
+  ObstacleSpec::Kind kind;
+  std::vector<std::string> keys;  // besides friction
+};
+
+const std::map<std::string, ObstacleKind>& ObstacleKinds() {
+  static const std::map<std::string, ObstacleKind> kinds = {
+      {"sphere", {ObstacleSpec::Kind::kSphere, {"center", "radius"}}},
+      {"disk", {ObstacleSpec::Kind::kDisk, {"center", "radius"}}},
+      {"cylinder", {ObstacleSpec::Kind::kCylinder, {"center", "radius", "height"}}},
+      {"box", {ObstacleSpec::Kind::kBox, {"min", "max"}}},
+      {"plane", {ObstacleSpec::Kind::kPlane, {"point", "normal"}}},
+      {"pin", {ObstacleSpec::Kind::kPin, {"position"}}},
+  };
+  return kinds;
+}
+
+ObstacleSpec ReadObstacleShape(const std::string& name, const YamlValue& value) {
+  const ObstacleKind& kind = ObstacleKinds().at(name);
+  std::vector<std::string> keys = kind.keys;
+  keys.push_back("friction");
+  const YamlMap map(value, keys);
+  ObstacleSpec obstacle;
+  obstacle.kind = kind.kind;
+  obstacle.where = value.where;
+  if (Contains(kind.keys, "center")) obstacle.center = ReadVector3(map.Get("center"));
+  if (Contains(kind.keys, "radius")) obstacle.radius = ReadPositive(map.Get("radius"));
+  if (Contains(kind.keys, "height")) obstacle.height = ReadPositive(map.Get("height"));
+  if (Contains(kind.keys, "position")) obstacle.center = ReadVector3(map.Get("position"));
+  if (Contains(kind.keys, "point")) obstacle.center = ReadVector3(map.Get("point"));
+  if (Contains(kind.keys, "normal")) {
+    const YamlValue normal = map.Get("normal");
+    obstacle.normal = ReadVector3(normal);
+    if (!(obstacle.normal.norm() > 0.0)) Fail(normal, "must not be the zero vector");
+    obstacle.normal.normalize();
+  }
+  if (Contains(kind.keys, "min")) {
+    obstacle.min = ReadVector3(map.Get("min"));
+    obstacle.max = ReadVector3(map.Get("max"));
+    if (!(obstacle.min.array() < obstacle.max.array()).all()) {
+      Fail(map.Get("max"), "max must exceed min in every coordinate");
+    }
+  }
+  if (const auto friction = map.Find("friction")) obstacle.friction = ReadNonNegative(*friction);
+  return obstacle;
+}
+
+std::vector<ObstacleSpec> ReadObstacles(const YamlValue& value) {
+  if (!value.get().IsSequence() && !value.get().IsNull()) {
+    Fail(value, "expected a list of obstacles (- sphere: {...}), got " + Describe(value.get()));
+  }
+  std::vector<std::string> names;
+  for (const auto& entry : ObstacleKinds()) names.push_back(entry.first);
+  std::vector<ObstacleSpec> obstacles;
+  for (const auto& item : ReadList(value)) {
+    const YamlMap map(item, names);
+    const auto keys = map.Keys();
+    if (keys.empty()) Fail(item, "expected one obstacle: " + JoinNames(names));
+    if (keys.size() > 1) {
+      throw InputError(map.KeyLocation(keys[1]),
+                       "one obstacle per list item ('" + keys[0] + "' is given too)");
+    }
+    obstacles.push_back(ReadObstacleShape(keys[0], map.Get(keys[0])));
+  }
+  return obstacles;
+}
+
+ContactSpec ReadContact(const YamlValue& value) {
+  const YamlMap map(value, {"thickness"});
+  ContactSpec contact;
+  contact.where = value.where;
+  if (const auto thickness = map.Find("thickness")) {
+    contact.thickness = ReadNonNegative(*thickness);
+  }
+  return contact;
+}
+
+// ---------------------------------------------------------------------- solver and output
+
+std::vector<std::string> MethodNames() {
+  std::vector<std::string> names;
+  for (const auto& info : AllSolvers()) names.push_back(info.name);
+  if (!Contains(names, kDefaultMethod)) names.push_back(kDefaultMethod);
+  return names;
+}
+
+std::map<std::string, double> ReadMethodOptions(const std::string& method, const YamlValue& value) {
+  const SolverInfo* info = FindSolver(method);
+  // A method named but not registered yet (the default) takes any numeric option.
+  const YamlMap map = info ? YamlMap(value, info->option_keys) : YamlMap(value);
+  std::map<std::string, double> options;
+  for (const auto& key : map.Keys()) options[key] = ReadNumber(map.Get(key));
+  return options;
+}
+
+SolverSpec ReadSolver(const YamlValue& value) {
+  const auto methods = MethodNames();
+  std::vector<std::string> keys = {"method", "tolerance", "max_iterations", "time_limit"};
+  keys.insert(keys.end(), methods.begin(), methods.end());
+  const YamlMap map(value, keys);
+  SolverSpec solver;
+  solver.where = value.where;
+  if (const auto method = map.Find("method")) {
+    solver.method = ReadString(*method);
+    if (!FindSolver(solver.method) && solver.method != kDefaultMethod) {
+      const auto nearest = NearestName(solver.method, methods);
+      Fail(*method, "unknown method '" + solver.method + "'" +
+                        (nearest ? "; did you mean '" + *nearest + "'?" : "") +
+                        " (methods: " + JoinNames(methods) + ")");
+    }
+  }
+  if (const auto v = map.Find("tolerance")) solver.tolerance = ReadPositive(*v);
+  if (const auto v = map.Find("max_iterations")) solver.max_iterations = ReadIntAtLeast(*v, 1);
+  if (const auto v = map.Find("time_limit")) solver.time_limit = ReadPositive(*v);
+  for (const auto& method : methods) {
+    if (const auto v = map.Find(method))
+      solver.method_options[method] = ReadMethodOptions(method, *v);
+  }
+  return solver;
+}
+
+OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
+  const YamlMap map(value, {"directory", "write"});
+  OutputSpec output;
+  output.where = value.where;
+  output.directory = Resolve(scene.directory, "out/" + scene.name);
+  if (const auto directory = map.Find("directory")) {
+    const std::string given = ReadString(*directory);
+    if (given.empty()) Fail(*directory, "expected a folder, got nothing");
+    output.directory = Resolve(scene.directory, given);
+  }
+  if (const auto write = map.Find("write")) {
+    if (!write->get().IsSequence()) {
+      Fail(*write, "expected a list such as [summary, nodes], got " + Describe(write->get()));
+    }
+    output.write.clear();
+    for (const auto& item : ReadList(*write)) {
+      const std::string kind = ReadChoice(item, OutputKinds());
+      if (Contains(output.write, kind)) Fail(item, "'" + kind + "' is listed twice");
+      output.write.push_back(kind);
+    }
+  }
+  return output;
+}
+
+// -------------------------------------------------------------------------------- the scene
+
+std::string ReadName(const YamlValue& value) {
+  const std::string name = ReadString(value);
+  if (name.empty() || name == "." || name == ".." ||
+      name.find_first_of("/\\") != std::string::npos) {
+    Fail(value, "expected a plain name (no '/'), got " + Describe(value.get()));
+  }
+  return name;
+}
+
+// A top-level section, or an empty one located at the top of the file when it is left out.
+YamlValue OptionalSection(const YamlMap& top, const std::string& key) {
+  if (auto given = top.Find(key)) return *given;
+  YamlValue absent = top.value();
+  absent.node.reset(YAML::Node());
+  absent.where.key = key;
+  return absent;
+}
+
+void ReadScene(const YamlValue& root, Scene* scene) {
+  const YamlMap top(root, {"name", "dimension", "mesh", "material", "fixed", "loads", "obstacles",
+                           "contact", "solver", "output"});
+  if (const auto name = top.Find("name")) scene->name = ReadName(*name);
+  if (const auto dimension = top.Find("dimension")) {
+    scene->dimension = ReadInt(*dimension);
+    if (scene->dimension != 2 && scene->dimension != 3) {
+      Fail(*dimension, "must be 2 or 3, got " + std::to_string(scene->dimension));
+    }
+  }
+  scene->mesh = ReadMesh(top.Get("mesh"), scene->directory);
+  scene->material = ReadMaterial(top.Get("material"));
+  if (const auto v = top.Find("fixed")) scene->fixed = ReadFixed(*v);
+  if (const auto v = top.Find("loads")) scene->loads = ReadLoads(*v);
+  if (const auto v = top.Find("obstacles")) scene->obstacles = ReadObstacles(*v);
+  scene->contact = ReadContact(OptionalSection(top, "contact"));
+  scene->solver = ReadSolver(OptionalSection(top, "solver"));
+  scene->output = ReadOutput(OptionalSection(top, "output"), *scene);
+  if (!top.Has("loads")) scene->loads.where = OptionalSection(top, "loads").where;
+}
+
+YAML::Node ReadDocument(const std::string& path) {
+  std::error_code error;
+  if (fs::is_directory(path, error)) {
+    throw InputError(path + ": cannot read the scene file: it is a folder");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read the scene file: " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": cannot read the scene file: read error");
+  try {
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text.str());
+    if (documents.size() > 1) {
+      const YAML::Mark mark = documents[1].Mark();
+      throw InputError(Location{path, mark.line + 1, mark.column + 1, ""},
+                       "a scene file holds one YAML document; this is a second one");
+    }
+    return documents.empty() ? YAML::Node() : documents[0];
+  } catch (const YAML::Exception& exception) {  // a ParserException, with its mark
+    const YAML::Mark mark = exception.mark;
+    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
+                     "YAML syntax error: " + exception.msg);
+  }
+}
+
+}  // namespace
+
+Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  Scene scene;
+  scene.file = path;
+  scene.directory = fs::path(path).parent_path().string();
+  if (scene.directory.empty()) scene.directory = ".";
+  scene.name = fs::path(path).stem().string();
+  scene.root = Location{path, 1, 1, ""};
+  YAML::Node document = ReadDocument(path);
+  YamlOrigins origins(path);
+  ApplyOverrides(document, overrides, &origins);
+  ReadScene(YamlRoot(document, origins), &scene);
+  return scene;
+}
+
+}  // namespace drape

@@ -1,0 +1,20 @@
+// Reading a scene file: YAML → Scene, with every key checked and every error located
+// ("file:line:column: key.path: what is wrong"). Nothing is solved or written here.
+#ifndef DRAPE_SRC_SCENE_SCENE_LOADER_H_
+#define DRAPE_SRC_SCENE_SCENE_LOADER_H_
+
+#include <string>
+#include <vector>
+
+#include "src/scene/scene.h"
+
+namespace drape {
+
+// Loads and validates `path`. `overrides` are "key.path=value" strings (`--set`), applied to the
+// document before validation; a value is parsed as YAML (`--set mesh.nodes=[30,30]`).
+// Throws InputError on any bad input.
+Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_SCENE_SCENE_LOADER_H_

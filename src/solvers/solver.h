@@ -1,0 +1,92 @@
+// The solver interface: every method takes a Model and Options and returns a Summary. Methods are
+// listed in one registry (solver_registry.cc); `drape solvers` prints it.
+#ifndef DRAPE_SRC_SOLVERS_SOLVER_H_
+#define DRAPE_SRC_SOLVERS_SOLVER_H_
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/model/model.h"
+
+namespace drape {
+
+struct IterationRecord {
+  int iteration = 0;
+  double time_s = 0.0;             // since the solve started
+  double energy = 0.0;             // J
+  double relative_residual = 0.0;  // ‖free residual forces‖ / reference force
+};
+
+struct SolverOptions {
+  double tolerance = 1e-8;  // relative residual to reach
+  int max_iterations = 1000;
+  double time_limit = 600.0;                     // s
+  std::map<std::string, double> method_options;  // solver.<method>.<key>
+  // Called after every iteration, with model.positions at the current iterate. Returning false
+  // stops the solve (termination "stopped by caller").
+  std::function<bool(const IterationRecord&)> on_iteration;
+};
+
+struct SolverSummary {
+  std::string solver;
+  bool converged = false;
+  std::string termination;  // why it stopped, in words
+  int iterations = 0;
+  double wall_time_s = 0.0;
+  std::vector<IterationRecord> history;
+  // Extra per-method figures worth reporting (e.g. "factorizations"), written to summary.json.
+  std::map<std::string, double> statistics;
+  // A per-step series beyond the history (the dynamic scheme's kinetic energy, written to
+  // kinetic.csv): column names, then one row per step.
+  std::vector<std::string> trace_columns;
+  std::vector<std::vector<double>> trace;
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  // Moves model.positions towards equilibrium; leaves there the last (best) iterate.
+  virtual SolverSummary Solve(Model& model, const SolverOptions& options) const = 0;
+};
+
+struct SolverInfo {
+  std::string name;
+  std::string description;               // one line, for `drape solvers`
+  std::vector<std::string> option_keys;  // accepted keys under solver.<name>
+  std::function<std::unique_ptr<Solver>()> make;
+};
+
+const std::vector<SolverInfo>& AllSolvers();
+const SolverInfo* FindSolver(const std::string& name);
+
+// Shared stopping rule and history: every solver calls Record() once per iteration (iteration 0
+// is the start) and stops when it returns true. It stops on the relative residual, the iteration
+// and time limits, an interrupt (Ctrl-C), or the caller's callback, and says which in the summary.
+class IterationMonitor {
+ public:
+  IterationMonitor(const Model& model, const SolverOptions& options, SolverSummary* summary);
+  bool Record(int iteration, double energy, double relative_residual);
+  double ElapsedSeconds() const;
+  // For a method that stops for its own reason (a line search failing, a non-finite step).
+  void Stop(const std::string& termination);
+
+ private:
+  const Model& model_;
+  const SolverOptions& options_;
+  SolverSummary* summary_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+// Set by the SIGINT handler that the command installs; solvers stop at the next iteration.
+bool InterruptRequested();
+void RequestInterrupt();
+void InstallInterruptHandler();
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_SOLVERS_SOLVER_H_
