@@ -20,6 +20,8 @@
 #include <thread>
 
 #include "src/numerics/library_threads.h"
+#include "src/output/atomic_file.h"
+#include "src/output/json.h"
 
 namespace drape {
 
@@ -42,22 +44,6 @@ std::string Format(const char* format, double value) {
   return text;
 }
 std::string Number(double value) { return std::isfinite(value) ? Format("%.3g", value) : "—"; }
-std::string Raw(double value) { return Format("%.17g", value); }
-
-void WriteAtomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
-  const fs::path temporary =
-      path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw std::runtime_error("cannot write " + temporary.string());
-    write(file);
-    file.flush();
-    if (!file) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
-}
 
 // Letters, digits, '-' and '_' only: safe in file names and gnuplot word lists.
 std::string Slug(const std::string& name) {
@@ -119,19 +105,20 @@ void WriteRunsCsv(const std::vector<SceneComparison>& comparisons, std::ostream&
   for (const SceneComparison& comparison : comparisons) {
     for (const RunRecord& run : comparison.runs) {
       std::string times;
-      for (double t : run.times_s) times += (times.empty() ? "" : ";") + Raw(t);
+      for (double t : run.times_s) times += (times.empty() ? "" : ";") + FormatNumber(t);
       out << CsvField(run.scene) << ',' << run.solver << ',' << RunStatusName(run.status) << ','
-          << CsvField(run.reason) << ',' << run.iterations << ',' << Raw(run.time_s) << ',' << times
-          << ',' << Raw(run.callback_time_s) << ',' << Raw(run.relative_residual) << ','
-          << Raw(run.max_node_force) << ',' << Raw(run.energy) << ',' << Raw(run.energy_gap) << ','
-          << Raw(run.error.max_m) << ',' << Raw(run.error.rms_m) << ','
-          << Raw(run.error.max_m / run.size) << ',' << Raw(RelativeError(run)) << ','
-          << Raw(run.drape_coefficient_gap) << ','
+          << CsvField(run.reason) << ',' << run.iterations << ',' << FormatNumber(run.time_s) << ','
+          << times << ',' << FormatNumber(run.callback_time_s) << ','
+          << FormatNumber(run.relative_residual) << ',' << FormatNumber(run.max_node_force) << ','
+          << FormatNumber(run.energy) << ',' << FormatNumber(run.energy_gap) << ','
+          << FormatNumber(run.error.max_m) << ',' << FormatNumber(run.error.rms_m) << ','
+          << FormatNumber(run.error.max_m / run.size) << ',' << FormatNumber(RelativeError(run))
+          << ',' << FormatNumber(run.drape_coefficient_gap) << ','
           << (run.stability_computed ? (run.stable ? "yes" : "no") : "unknown") << ','
-          << Raw(run.peak_memory_mb);
+          << FormatNumber(run.peak_memory_mb);
       for (double level : AccuracyLevels()) {
         const double t = HasPositions(run) ? TimeToReach(run, level) : -1.0;
-        out << ',' << (t == kTimeUnknown ? "nan" : t < 0 ? "" : Raw(t));
+        out << ',' << (t == kTimeUnknown ? "nan" : t < 0 ? "" : FormatNumber(t));
       }
       out << '\n';
     }
@@ -145,9 +132,10 @@ void WriteCurvesCsv(const std::vector<SceneComparison>& comparisons, std::ostrea
     for (const RunRecord& run : comparison.runs) {
       for (const CurvePoint& point : run.curve) {
         out << CsvField(run.scene) << ',' << run.solver << ',' << point.iteration << ','
-            << Raw(point.time_s) << ',' << Raw(point.relative_residual) << ','
-            << Raw(point.energy_gap) << ',' << Raw(point.error.max_m) << ','
-            << Raw(point.error.rms_m) << ',' << Raw(point.error.rms_m / run.size) << '\n';
+            << FormatNumber(point.time_s) << ',' << FormatNumber(point.relative_residual) << ','
+            << FormatNumber(point.energy_gap) << ',' << FormatNumber(point.error.max_m) << ','
+            << FormatNumber(point.error.rms_m) << ',' << FormatNumber(point.error.rms_m / run.size)
+            << '\n';
       }
     }
   }
@@ -158,12 +146,13 @@ void WriteReferencesCsv(const std::vector<SceneComparison>& comparisons, std::os
          "relative_residual,max_node_force_N,stable,energy_tolerance_J,size_m\n";
   for (const SceneComparison& c : comparisons) {
     const SceneReference& r = c.reference;
-    out << CsvField(c.name) << ',' << CsvField(c.file) << ',' << r.method << ',' << Raw(r.tolerance)
-        << ',' << (r.converged ? "yes" : "no") << ',' << CsvField(r.termination) << ','
-        << r.iterations << ',' << Raw(r.time_s) << ',' << Raw(r.energy) << ','
-        << Raw(r.relative_residual) << ',' << Raw(r.max_node_force) << ','
+    out << CsvField(c.name) << ',' << CsvField(c.file) << ',' << r.method << ','
+        << FormatNumber(r.tolerance) << ',' << (r.converged ? "yes" : "no") << ','
+        << CsvField(r.termination) << ',' << r.iterations << ',' << FormatNumber(r.time_s) << ','
+        << FormatNumber(r.energy) << ',' << FormatNumber(r.relative_residual) << ','
+        << FormatNumber(r.max_node_force) << ','
         << (r.stability_computed ? (r.stable ? "yes" : "no") : "unknown") << ','
-        << Raw(r.energy_tolerance) << ',' << Raw(c.size) << '\n';
+        << FormatNumber(r.energy_tolerance) << ',' << FormatNumber(c.size) << '\n';
   }
 }
 
@@ -249,8 +238,9 @@ std::string CurvesPlot(const SceneComparison& comparison, Plotter& plotter) {
         plotter.Data(Slug(comparison.name) + "__" + run.solver + ".dat", [&](std::ostream& out) {
           out << "# time_s rms_distance_rel relative_residual\n";
           for (const CurvePoint& p : run.curve) {
-            out << Raw(Floor(p.time_s, 1e-6)) << ' ' << Raw(Floor(p.error.rms_m / run.size, 1e-17))
-                << ' ' << Raw(Floor(p.relative_residual, 1e-17)) << '\n';
+            out << FormatNumber(Floor(p.time_s, 1e-6)) << ' '
+                << FormatNumber(Floor(p.error.rms_m / run.size, 1e-17)) << ' '
+                << FormatNumber(Floor(p.relative_residual, 1e-17)) << '\n';
           }
         });
     files += (files.empty() ? "" : " ") + file;
@@ -278,8 +268,8 @@ std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, Plotter&
       for (const SceneComparison& c : comparisons) {
         for (const RunRecord& run : c.runs) {
           if (run.solver != solver || !HasPositions(run)) continue;
-          out << Raw(Floor(run.time_s, 1e-6)) << ' ' << Raw(Floor(RelativeError(run), 1e-17)) << ' '
-              << Slug(c.name) << '\n';
+          out << FormatNumber(Floor(run.time_s, 1e-6)) << ' '
+              << FormatNumber(Floor(RelativeError(run), 1e-17)) << ' ' << Slug(c.name) << '\n';
         }
       }
     });
@@ -302,9 +292,10 @@ std::string DrapePlot(const SceneComparison& comparison, const std::vector<doubl
           for (int c = 0; c < 3; ++c) {
             distance += std::pow(positions[3 * node + c] - reference[3 * node + c], 2);
           }
-          out << Raw(positions[3 * node]) << ' ' << Raw(positions[3 * node + 1]) << ' '
-              << Raw(positions[3 * node + 2]) << ' '
-              << Raw(colour_by_distance ? std::sqrt(distance) : positions[3 * node + 2]) << '\n';
+          out << FormatNumber(positions[3 * node]) << ' ' << FormatNumber(positions[3 * node + 1])
+              << ' ' << FormatNumber(positions[3 * node + 2]) << ' '
+              << FormatNumber(colour_by_distance ? std::sqrt(distance) : positions[3 * node + 2])
+              << '\n';
         }
       });
   return plotter.Draw("compare_drape.gp", Slug(comparison.name) + "_" + name + ".png",

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "src/model/model.h"
+#include "src/output/json.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
 
@@ -351,18 +352,12 @@ std::vector<FitMeasurement> ReadMeasurements(const YamlValue& value, const std::
   return measurements;
 }
 
-std::string FormatValue(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 // Checks a specimen's scene with every parameter at its initial value, and each measurement
 // against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
 void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
   std::vector<std::string> overrides;
   for (const auto& parameter : spec.parameters) {
-    overrides.push_back(parameter.key + "=" + FormatValue(parameter.initial));
+    overrides.push_back(parameter.key + "=" + FormatNumber(parameter.initial));
   }
   Scene scene;
   try {

@@ -7,20 +7,15 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/model/equilibrium.h"
+#include "src/numerics/sparse_hessian.h"
+#include "src/output/json.h"
 #include "src/scene/scene_loader.h"
 #include "src/solvers/solver.h"
-#include "src/numerics/sparse_hessian.h"
 
 namespace drape {
 namespace {
 
 constexpr double kParameterStep = 1e-4;  // in u, for ∂g/∂u
-
-std::string FormatValue(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
 
 std::string BlockLabel(const FitMeasurement& measurement) {
   switch (measurement.kind) {
@@ -123,7 +118,7 @@ Scene FitProblem::SceneAt(const FitEquilibrium& equilibrium,
                           const std::vector<double>& theta) const {
   std::vector<std::string> overrides;
   for (size_t j = 0; j < theta.size(); ++j) {
-    overrides.push_back(spec_.parameters[j].key + "=" + FormatValue(theta[j]));
+    overrides.push_back(spec_.parameters[j].key + "=" + FormatNumber(theta[j]));
   }
   Scene scene = LoadScene(spec_.specimens[equilibrium.specimen].scene_file, overrides);
   if (equilibrium.strip_of < 0) return scene;

@@ -13,51 +13,16 @@
 #include <sstream>
 
 #include "src/fit/fit_measurements.h"
+#include "src/output/atomic_file.h"
+#include "src/output/json.h"
 
 namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
 
-void WriteFile(const fs::path& directory, const std::string& name,
-               const std::function<void(const fs::path&)>& write) {
-  const fs::path temporary = directory / ("." + name + ".tmp" + std::to_string(::getpid()));
-  write(temporary);
-  std::error_code error;
-  fs::rename(temporary, directory / name, error);
-  if (error) {
-    fs::remove(temporary, error);
-    throw std::runtime_error("cannot write " + (directory / name).string());
-  }
-}
-
-void WriteText(const fs::path& directory, const std::string& name,
-               const std::function<void(std::ostream&)>& write) {
-  WriteFile(directory, name, [&](const fs::path& path) {
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (!file)
-      throw std::runtime_error("cannot write " + path.string() + ": " + std::strerror(errno));
-    write(file);
-    file.flush();
-    if (!file) throw std::runtime_error("cannot write " + path.string());
-  });
-}
-
-std::string Number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char text[40];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
-
-std::string Quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
+// fit.json's numbers carry 10 significant digits.
+std::string Number(double value) { return JsonNumber(value, 10); }
 
 const FitMeasurement& MeasurementOf(const FitProblem& problem, const ResidualBlock& block) {
   return problem.spec().specimens[block.specimen].measurements[block.measurement];
@@ -82,21 +47,21 @@ bool IsScalar(const FitMeasurement& measurement) {
 void WriteJson(const FitProblem& problem, const FitResult& result, std::ostream& out) {
   const auto& parameters = problem.spec().parameters;
   const int p = static_cast<int>(parameters.size());
-  out << "{\n  \"fit_file\": " << Quoted(problem.spec().file) << ",\n";
-  out << "  \"method\": " << Quoted(problem.spec().method) << ",\n";
+  out << "{\n  \"fit_file\": " << JsonString(problem.spec().file) << ",\n";
+  out << "  \"method\": " << JsonString(problem.spec().method) << ",\n";
   out << "  \"converged\": " << (result.converged ? "true" : "false") << ",\n";
-  out << "  \"termination\": " << Quoted(result.termination) << ",\n";
+  out << "  \"termination\": " << JsonString(result.termination) << ",\n";
   out << "  \"objective\": " << Number(result.objective) << ",\n";
   out << "  \"residual_variance\": " << Number(result.residual_variance) << ",\n";
   out << "  \"evaluations\": " << result.evaluations << ",\n";
   out << "  \"jacobian_evaluations\": " << result.jacobian_evaluations << ",\n";
-  out << "  \"jacobian\": " << Quoted(result.jacobian_implicit ? "implicit" : "finite differences")
-      << ",\n";
+  out << "  \"jacobian\": "
+      << JsonString(result.jacobian_implicit ? "implicit" : "finite differences") << ",\n";
   out << "  \"wall_time_s\": " << Number(result.wall_time_s) << ",\n";
   auto by_key = [&](const std::string& name, const std::function<std::string(int)>& value) {
-    out << "  " << Quoted(name) << ": {";
+    out << "  " << JsonString(name) << ": {";
     for (int j = 0; j < p; ++j) {
-      out << (j ? ", " : "") << Quoted(parameters[j].key) << ": " << value(j);
+      out << (j ? ", " : "") << JsonString(parameters[j].key) << ": " << value(j);
     }
     out << "},\n";
   };
@@ -118,19 +83,20 @@ void WriteJson(const FitProblem& problem, const FitResult& result, std::ostream&
   }
   out << "],\n  \"identifiability\": [";
   const auto& statements = result.identifiability.statements;
-  for (size_t k = 0; k < statements.size(); ++k) out << (k ? ", " : "") << Quoted(statements[k]);
+  for (size_t k = 0; k < statements.size(); ++k)
+    out << (k ? ", " : "") << JsonString(statements[k]);
   out << "],\n  \"measurements\": [";
   const auto& blocks = problem.blocks();
   for (size_t b = 0; b < blocks.size(); ++b) {
     const FitMeasurement& measurement = MeasurementOf(problem, blocks[b]);
-    out << (b ? ",\n    " : "\n    ") << "{\"label\": " << Quoted(blocks[b].label);
+    out << (b ? ",\n    " : "\n    ") << "{\"label\": " << JsonString(blocks[b].label);
     if (IsScalar(measurement)) {
       out << ", \"measured\": " << Number(measurement.value)
           << ", \"model\": " << Number(result.final_evaluation.model_values[b]);
     } else {
       out << ", \"rms_difference\": " << Number(result.final_evaluation.model_values[b]);
     }
-    out << ", \"unit\": " << Quoted(UnitOf(measurement)) << "}";
+    out << ", \"unit\": " << JsonString(UnitOf(measurement)) << "}";
   }
   out << "\n  ]\n}\n";
 }
@@ -151,7 +117,7 @@ void WriteHistory(const FitProblem& problem, const FitResult& result, std::ostre
 void WriteSensitivity(const std::vector<Sensitivity>& table, std::ostream& out) {
   out << "measurement,parameter,unit,d_measurement_d_parameter,d_measurement_d_ln_parameter\n";
   for (const auto& row : table) {
-    out << Quoted(row.measurement) << "," << row.parameter << "," << row.unit << ","
+    out << JsonString(row.measurement) << "," << row.parameter << "," << row.unit << ","
         << Number(row.per_parameter) << "," << Number(row.per_log_parameter) << "\n";
   }
 }
@@ -308,12 +274,14 @@ void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
   const fs::path folder(directory);
   fs::create_directories(folder);
   const std::vector<Sensitivity> table = SensitivityTable(problem, result);
-  WriteText(folder, "fit.json", [&](std::ostream& out) { WriteJson(problem, result, out); });
-  WriteText(folder, "history.csv", [&](std::ostream& out) { WriteHistory(problem, result, out); });
-  WriteText(folder, "sensitivity.csv", [&](std::ostream& out) { WriteSensitivity(table, out); });
-  WriteText(folder, "report.md",
-            [&](std::ostream& out) { WriteReport(problem, result, table, out); });
-  WriteFile(folder, "fit.png", [&](const fs::path& path) { WritePng(problem, path); });
+  WriteAtomically(folder / "fit.json", [&](std::ostream& out) { WriteJson(problem, result, out); });
+  WriteAtomically(folder / "history.csv",
+                  [&](std::ostream& out) { WriteHistory(problem, result, out); });
+  WriteAtomically(folder / "sensitivity.csv",
+                  [&](std::ostream& out) { WriteSensitivity(table, out); });
+  WriteAtomically(folder / "report.md",
+                  [&](std::ostream& out) { WriteReport(problem, result, table, out); });
+  WriteFileAtomically(folder / "fit.png", [&](const fs::path& path) { WritePng(problem, path); });
 }
 
 }  // namespace drape

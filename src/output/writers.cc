@@ -1,6 +1,4 @@
-// Result files. Each is written to a hidden temporary name in the output folder, flushed, and then
-// renamed over its final name (rename is atomic within one file system), so a reader never sees a
-// half-written file, even if the run is killed while writing.
+// Result files, each written atomically (src/output/atomic_file.h).
 #include "src/output/writers.h"
 
 #include <unistd.h>
@@ -18,8 +16,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "src/model/contact.h"
 #include "src/analysis/drape_analysis.h"
+#include "src/model/contact.h"
+#include "src/output/atomic_file.h"
+#include "src/output/json.h"
 #include "src/output/render.h"
 
 namespace drape {
@@ -27,50 +27,6 @@ namespace drape {
 namespace fs = std::filesystem;
 
 namespace {
-
-// A number with every digit needed to read it back exactly (%.17g).
-std::string Number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
-// JSON has no NaN or infinity: those are written as null.
-std::string JsonNumber(double value) { return std::isfinite(value) ? Number(value) : "null"; }
-
-std::string JsonString(const std::string& text) {
-  std::string quoted = "\"";
-  for (unsigned char c : text) {
-    switch (c) {
-      case '"':
-        quoted += "\\\"";
-        break;
-      case '\\':
-        quoted += "\\\\";
-        break;
-      case '\n':
-        quoted += "\\n";
-        break;
-      case '\r':
-        quoted += "\\r";
-        break;
-      case '\t':
-        quoted += "\\t";
-        break;
-      default:
-        if (c < 0x20) {
-          char escaped[8];
-          std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-          quoted += escaped;
-        } else {
-          quoted += static_cast<char>(c);
-        }
-    }
-  }
-  return quoted + "\"";
-}
-
-std::string JsonBool(bool value) { return value ? "true" : "false"; }
 
 // `"key": value` members of one JSON object, joined with the indentation of `depth`.
 std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth) {
@@ -89,33 +45,6 @@ std::string JsonMap(const Map& map, int depth, Format format) {
   std::vector<std::pair<std::string, std::string>> members;
   for (const auto& [key, value] : map) members.emplace_back(key, format(value));
   return JsonObject(members, depth);
-}
-
-// Writes directory/name through a temporary file in the same directory, then renames it.
-void WriteAtomically(const fs::path& directory, const std::string& name,
-                     const std::function<void(std::ostream&)>& write) {
-  const fs::path final_path = directory / name;
-  const fs::path temporary = directory / ("." + name + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) {
-      throw std::runtime_error("cannot write " + temporary.string() + ": " + std::strerror(errno));
-    }
-    write(file);
-    file.flush();
-    if (!file) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw std::runtime_error("cannot write " + temporary.string() + ": " + std::strerror(errno));
-    }
-  }
-  std::error_code error;
-  fs::rename(temporary, final_path, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error("cannot write " + final_path.string() + ": " + error.message());
-  }
 }
 
 std::string FixedLetters(const Model& model, int node) {
@@ -207,7 +136,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
       {"nodes", std::to_string(model.num_nodes)},
       {"free_dofs", std::to_string(model.num_free_dofs())},
       {"terms", JsonMap(model.TermCounts(), 1, [](int count) { return std::to_string(count); })},
-      {"energy", JsonMap(energy, 1, JsonNumber)},
+      {"energy", JsonMap(energy, 1, [](double v) { return JsonNumber(v); })},
       {"residual", JsonObject({{"max_node_force", JsonNumber(certificate.max_node_force)},
                                {"relative", JsonNumber(certificate.relative_residual)}},
                               1)},
@@ -220,7 +149,8 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   if (drape) AddDrapeMembers(*drape, &members);
   AddContactMembers(scene, model, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
-  members.emplace_back("statistics", JsonMap(summary.statistics, 1, JsonNumber));
+  members.emplace_back("statistics",
+                       JsonMap(summary.statistics, 1, [](double v) { return JsonNumber(v); }));
   out << JsonObject(members, 0) << "\n";
 }
 
@@ -230,9 +160,9 @@ void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) 
     const auto ij = node < static_cast<int>(model.grid_index.size()) ? model.grid_index[node]
                                                                      : std::array<int, 2>{-1, -1};
     out << node << ',' << ij[0] << ',' << ij[1];
-    for (int c = 0; c < 3; ++c) out << ',' << Number(model.positions[3 * node + c]);
+    for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(model.positions[3 * node + c]);
     out << ',' << FixedLetters(model, node);
-    for (int c = 0; c < 3; ++c) out << ',' << Number(NodeForce(result, 3 * node + c));
+    for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(NodeForce(result, 3 * node + c));
     out << '\n';
   }
 }
@@ -240,8 +170,8 @@ void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) 
 void WriteHistory(const SolverSummary& summary, std::ostream& out) {
   out << "iteration,time_s,energy,residual\n";
   for (const IterationRecord& record : summary.history) {
-    out << record.iteration << ',' << Number(record.time_s) << ',' << Number(record.energy) << ','
-        << Number(record.relative_residual) << '\n';
+    out << record.iteration << ',' << FormatNumber(record.time_s) << ','
+        << FormatNumber(record.energy) << ',' << FormatNumber(record.relative_residual) << '\n';
   }
 }
 
@@ -252,7 +182,7 @@ void WriteTrace(const SolverSummary& summary, std::ostream& out) {
   }
   out << '\n';
   for (const auto& row : summary.trace) {
-    for (size_t k = 0; k < row.size(); ++k) out << (k ? "," : "") << Number(row[k]);
+    for (size_t k = 0; k < row.size(); ++k) out << (k ? "," : "") << FormatNumber(row[k]);
     out << '\n';
   }
 }
@@ -261,8 +191,8 @@ void WriteVectors(const std::string& name, const std::function<double(int)>& val
                   std::ostream& out) {
   out << "VECTORS " << name << " double\n";
   for (int node = 0; node < count; ++node) {
-    out << Number(value(3 * node)) << ' ' << Number(value(3 * node + 1)) << ' '
-        << Number(value(3 * node + 2)) << '\n';
+    out << FormatNumber(value(3 * node)) << ' ' << FormatNumber(value(3 * node + 1)) << ' '
+        << FormatNumber(value(3 * node + 2)) << '\n';
   }
 }
 
@@ -274,8 +204,9 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
   out << "# vtk DataFile Version 3.0\n" << title.substr(0, 250) << "\nASCII\nDATASET POLYDATA\n";
   out << "POINTS " << model.num_nodes << " double\n";
   for (int node = 0; node < model.num_nodes; ++node) {
-    out << Number(model.positions[3 * node]) << ' ' << Number(model.positions[3 * node + 1]) << ' '
-        << Number(model.positions[3 * node + 2]) << '\n';
+    out << FormatNumber(model.positions[3 * node]) << ' '
+        << FormatNumber(model.positions[3 * node + 1]) << ' '
+        << FormatNumber(model.positions[3 * node + 2]) << '\n';
   }
   if (!model.triangles.empty()) {
     out << "POLYGONS " << model.triangles.size() << ' ' << 4 * model.triangles.size() << '\n';
@@ -303,8 +234,9 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
 void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
   out << "# drape: " << scene.name << "\n";
   for (int node = 0; node < model.num_nodes; ++node) {
-    out << "v " << Number(model.positions[3 * node]) << ' ' << Number(model.positions[3 * node + 1])
-        << ' ' << Number(model.positions[3 * node + 2]) << '\n';
+    out << "v " << FormatNumber(model.positions[3 * node]) << ' '
+        << FormatNumber(model.positions[3 * node + 1]) << ' '
+        << FormatNumber(model.positions[3 * node + 2]) << '\n';
   }
   for (const auto& t : model.triangles) {
     out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
@@ -319,9 +251,10 @@ void WriteProfile(const DrapeAnalysis& analysis, std::ostream& out) {
   out << "theta_deg,radius_m,flat_radius_m,overhang_fraction,smoothed_overhang_fraction\n";
   const auto& profile = analysis.profile;
   for (size_t k = 0; k < profile.radius.size(); ++k) {
-    out << Number(360.0 * k / profile.radius.size()) << ',' << Number(profile.radius[k]) << ','
-        << Number(analysis.flat_profile.radius[k]) << ',' << Number(analysis.overhang[k]) << ','
-        << Number(analysis.folds.smoothed[k]) << '\n';
+    out << FormatNumber(360.0 * k / profile.radius.size()) << ',' << FormatNumber(profile.radius[k])
+        << ',' << FormatNumber(analysis.flat_profile.radius[k]) << ','
+        << FormatNumber(analysis.overhang[k]) << ',' << FormatNumber(analysis.folds.smoothed[k])
+        << '\n';
   }
 }
 
@@ -349,41 +282,41 @@ void WriteOutputs(const Scene& scene, const Model& model, const RunResult& resul
   std::optional<DrapeAnalysis> drape;
   if (HasDrapeCoefficient(scene, model)) drape = AnalyseDrape(scene, model);
   if (Requested(scene, "summary")) {
-    WriteAtomically(folder, "summary.json",
+    WriteAtomically(folder / "summary.json",
                     [&](std::ostream& out) { WriteSummary(scene, model, result, drape, out); });
   }
   if (Requested(scene, "nodes")) {
-    WriteAtomically(folder, "nodes.csv",
+    WriteAtomically(folder / "nodes.csv",
                     [&](std::ostream& out) { WriteNodes(model, result, out); });
   }
   if (Requested(scene, "history")) {
-    WriteAtomically(folder, "history.csv",
+    WriteAtomically(folder / "history.csv",
                     [&](std::ostream& out) { WriteHistory(result.summary, out); });
   }
   // The per-step trace of the methods that record one goes with the history.
   if ((Requested(scene, "history") || Requested(scene, "kinetic")) &&
       !result.summary.trace_columns.empty()) {
-    WriteAtomically(folder, "kinetic.csv",
+    WriteAtomically(folder / "kinetic.csv",
                     [&](std::ostream& out) { WriteTrace(result.summary, out); });
   }
   if (Requested(scene, "vtk")) {
-    WriteAtomically(folder, "mesh.vtk",
+    WriteAtomically(folder / "mesh.vtk",
                     [&](std::ostream& out) { WriteVtk(scene, model, result, out); });
   }
   if (Requested(scene, "obj")) {
-    WriteAtomically(folder, "mesh.obj", [&](std::ostream& out) { WriteObj(scene, model, out); });
+    WriteAtomically(folder / "mesh.obj", [&](std::ostream& out) { WriteObj(scene, model, out); });
   }
   if (drape && Requested(scene, "profile")) {
-    WriteAtomically(folder, "profile.csv", [&](std::ostream& out) { WriteProfile(*drape, out); });
+    WriteAtomically(folder / "profile.csv", [&](std::ostream& out) { WriteProfile(*drape, out); });
   }
   if (Requested(scene, "png") && model.num_nodes > 0) {
     DrapeViewOptions view;
     if (drape) view.caption = DrapeCaption(*drape);
-    WriteAtomically(folder, "drape.png",
+    WriteAtomically(folder / "drape.png",
                     [&](std::ostream& out) { DrawDrapeView(scene, model, out, view); });
   }
   if (drape && (Requested(scene, "png") || Requested(scene, "shadow"))) {
-    WriteAtomically(folder, "shadow.png",
+    WriteAtomically(folder / "shadow.png",
                     [&](std::ostream& out) { DrawShadowView(scene, model, *drape, out); });
   }
 }
