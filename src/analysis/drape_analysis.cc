@@ -110,6 +110,11 @@ Shadow ProjectedArea(const std::vector<double>& positions,
   return shadow;
 }
 
+double CusickCoefficient(double shadow_area, double flat_area, double disc_radius) {
+  const double disc = kPi * disc_radius * disc_radius;
+  return flat_area > disc ? (shadow_area - disc) / (flat_area - disc) : 1.0;
+}
+
 DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius,
                                          const ShadowOptions& options) {
   DrapeCoefficient dc;
@@ -117,12 +122,7 @@ DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius,
   dc.flat_area = ProjectedArea(model.initial, model.triangles, options).area;
   dc.ratio = dc.flat_area > 0.0 ? dc.shadow.area / dc.flat_area : 0.0;
   dc.cusick = std::numeric_limits<double>::quiet_NaN();
-  if (disc_radius > 0.0) {
-    const double disc = kPi * disc_radius * disc_radius;
-    // A specimen no larger than the disc (A_specimen ≤ A_disc) cannot hang: DC = 1, the stiff
-    // limit (no 0/0 when the areas are equal).
-    dc.cusick = dc.flat_area > disc ? (dc.shadow.area - disc) / (dc.flat_area - disc) : 1.0;
-  }
+  if (disc_radius > 0.0) dc.cusick = CusickCoefficient(dc.shadow.area, dc.flat_area, disc_radius);
   return dc;
 }
 

@@ -41,6 +41,11 @@ struct DrapeCoefficient {
   double cusick = 0;
 };
 
+// Cusick's drape coefficient (A_shadow − A_disc) / (A_specimen − A_disc), A_disc = π r², from the
+// shadow and flat (specimen) areas, m², and the support disc radius r > 0, m. A specimen no larger
+// than the disc (A_specimen ≤ A_disc) cannot hang: 1, the stiff limit (no 0/0).
+double CusickCoefficient(double shadow_area, double flat_area, double disc_radius);
+
 // The radius of the scene's disk obstacle (the drape tester's support), 0 if it has none.
 double DiscRadius(const Scene& scene);
 

@@ -9,7 +9,6 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kStripWidth = 0.025;  // m, ASTM D1388's 25 mm strip
 
 Eigen::Vector3d Node(const double* positions, int id) {
@@ -34,8 +33,7 @@ double DrapeCoefficientAt(const Model& model, const double* positions, double di
   const double shadow = ProjectedArea(draped, model.triangles, FitShadowOptions()).area;
   if (flat <= 0.0) flat = FlatShadowArea(model);
   if (disc_radius <= 0.0) return shadow / flat;
-  const double disc = kPi * disc_radius * disc_radius;
-  return (shadow - disc) / (flat - disc);
+  return CusickCoefficient(shadow, flat, disc_radius);
 }
 
 // Each measured point against the model: by node id, the 3 coordinate differences; as a cloud, the
@@ -66,7 +64,8 @@ std::vector<double> PositionResiduals(const FitMeasurement& measurement, const M
   return residuals;
 }
 
-// Reactions R = ∂E/∂x at the fixed coordinates (src/model/equilibrium.cc), against the measured forces.
+// Reactions R = ∂E/∂x at the fixed coordinates (src/model/equilibrium.cc), against the measured
+// forces.
 std::vector<double> ReactionResiduals(const FitMeasurement& measurement, const Model& model,
                                       const double* positions) {
   double energy = 0.0;
