@@ -48,14 +48,10 @@ void LumpTriangleAreas(Mesh* mesh) {
   }
 }
 
-double BoundingDiagonal(const std::vector<Eigen::Vector3d>& nodes) {
-  if (nodes.empty()) return 0.0;
-  Eigen::Vector3d low = nodes[0], high = nodes[0];
-  for (const auto& p : nodes) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  return (high - low).norm();
+// The nodes as the columns of a 3 × n matrix (Eigen::Vector3d is three packed doubles).
+Eigen::Map<const Eigen::Matrix3Xd> AsColumns(const std::vector<Eigen::Vector3d>& nodes) {
+  static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "Vector3d is not packed");
+  return {nodes.empty() ? nullptr : nodes[0].data(), 3, static_cast<Eigen::Index>(nodes.size())};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -534,7 +530,7 @@ Mesh BuildFromFile(const MeshSpec& spec) {
 // Sorted along the axis of largest extent, only nodes close along that axis are compared.
 void CheckNoCoincidentNodes(const Mesh& mesh, const Location& where) {
   const auto& p = mesh.nodes;
-  const double tolerance = 1e-12 * BoundingDiagonal(p);
+  const double tolerance = 1e-12 * BoundingDiagonal(AsColumns(p));
   Eigen::Vector3d low = p[0], high = p[0];
   for (const auto& q : p) {
     low = low.cwiseMin(q);
@@ -558,6 +554,11 @@ void CheckNoCoincidentNodes(const Mesh& mesh, const Location& where) {
 }
 
 }  // namespace
+
+double BoundingDiagonal(const Eigen::Ref<const Eigen::Matrix3Xd>& points) {
+  if (points.cols() == 0) return 0.0;
+  return (points.rowwise().maxCoeff() - points.rowwise().minCoeff()).norm();
+}
 
 Mesh BuildMesh(const MeshSpec& spec) {
   Mesh mesh;

@@ -32,6 +32,10 @@ struct Mesh {
 // unreadable or malformed mesh file, or coincident nodes.
 Mesh BuildMesh(const MeshSpec& spec);
 
+// The diagonal of the axis-aligned box around `points` (3 × n, one node per column), m; 0 for no
+// points. Flat xyz storage (Model::positions) maps onto it with Eigen::Map<const Matrix3Xd>.
+double BoundingDiagonal(const Eigen::Ref<const Eigen::Matrix3Xd>& points);
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_MODEL_MESH_H_

@@ -62,20 +62,6 @@ void RejectUnsupported(const Scene& scene) {
   }
 }
 
-Eigen::Vector3d NodeVector(const std::vector<double>& values, int node) {
-  return Eigen::Vector3d(values[3 * node], values[3 * node + 1], values[3 * node + 2]);
-}
-
-double BoundingDiagonal(const std::vector<double>& positions) {
-  const int n = static_cast<int>(positions.size() / 3);
-  Eigen::Vector3d low = NodeVector(positions, 0), high = low;
-  for (int k = 1; k < n; ++k) {
-    low = low.cwiseMin(NodeVector(positions, k));
-    high = high.cwiseMax(NodeVector(positions, k));
-  }
-  return (high - low).norm();
-}
-
 // Lumped area per node, or lumped length where the mesh has no area (a chain).
 std::vector<double> MassWeights(const Mesh& mesh) {
   double area = 0.0;
@@ -360,11 +346,11 @@ Model BuildModel(const Scene& scene) {
   model.mass = NodeMasses(scene.material, mesh);
   ApplyFixed(scene, mesh, &model);
   model.initial = model.positions;
-  model.size = BoundingDiagonal(model.positions);
+  model.size = BoundingDiagonal(
+      Eigen::Map<const Eigen::Matrix3Xd>(model.positions.data(), 3, model.num_nodes));
   if (!(model.size > 0.0)) {  // every node moved onto one point: fall back to the mesh's size
-    std::vector<double> mesh_positions;
-    for (const auto& p : mesh.nodes)
-      mesh_positions.insert(mesh_positions.end(), {p.x(), p.y(), p.z()});
+    Eigen::Matrix3Xd mesh_positions(3, mesh.nodes.size());
+    for (size_t k = 0; k < mesh.nodes.size(); ++k) mesh_positions.col(k) = mesh.nodes[k];
     model.size = BoundingDiagonal(mesh_positions);
   }
   model.grid_index = mesh.grid_index;

@@ -41,9 +41,10 @@
 #include <vector>
 
 #include "src/model/equilibrium.h"
-#include "src/solvers/solvers.h"
+#include "src/model/mesh.h"
 #include "src/numerics/sparse_hessian.h"
 #include "src/numerics/stability.h"
+#include "src/solvers/solvers.h"
 
 namespace drape {
 
@@ -136,13 +137,8 @@ double StiffnessScale(const FreeHessian& hessian) {
 
 // The diagonal of the bounding box of the model's nodes, m (1 if they coincide).
 double BoundingBoxDiagonal(const Model& model) {
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
-  for (size_t k = 0; k + 2 < model.positions.size(); k += 3) {
-    const Eigen::Vector3d p(model.positions[k], model.positions[k + 1], model.positions[k + 2]);
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  const double diagonal = (high - low).norm();
+  const double diagonal = BoundingDiagonal(
+      Eigen::Map<const Eigen::Matrix3Xd>(model.positions.data(), 3, model.num_nodes));
   return diagonal > 0.0 && std::isfinite(diagonal) ? diagonal : 1.0;
 }
 
