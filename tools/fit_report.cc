@@ -21,11 +21,12 @@
 
 #include "src/fit/fit_file.h"
 #include "src/fit/fit_measurements.h"
+#include "src/fit/fit_methods.h"
 #include "src/fit/fit_problem.h"
 #include "src/fit/fit_solver.h"
 #include "src/model/model.h"
-#include "src/solvers/run.h"
 #include "src/scene/scene_loader.h"
+#include "src/solvers/run.h"
 
 namespace drape {
 namespace {

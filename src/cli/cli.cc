@@ -10,19 +10,20 @@
 #include <set>
 #include <stdexcept>
 
+#include "src/cli/progress.h"
 #include "src/compare/compare.h"
 #include "src/fit/fit_file.h"
+#include "src/fit/fit_methods.h"
 #include "src/fit/fit_problem.h"
 #include "src/fit/fit_solver.h"
 #include "src/fit/fit_writer.h"
-#include "src/numerics/library_threads.h"
 #include "src/model/model.h"
-#include "src/cli/progress.h"
-#include "src/solvers/run.h"
+#include "src/numerics/library_threads.h"
+#include "src/output/writers.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
+#include "src/solvers/run.h"
 #include "src/solvers/solver.h"
-#include "src/output/writers.h"
 
 namespace drape {
 
@@ -49,8 +50,9 @@ constexpr char kHelp[] =
     "  compare  SCENE.yaml... [--solvers all|a,b] [--out DIR] [--repeat N] [--time-limit S]\n"
     "           [--set k=v] [--no-plots]: solver comparison report (speed against error)\n"
     "  fit      FIT.yaml [--out DIR] [--method NAME]: fit scene parameters (stiffnesses) to\n"
-    "           measurements; writes fit.json, history.csv, sensitivity.csv, fit.png, report.md\n"
-    "           (methods: bobyqa, nelder-mead, sbplx, cobyla, implicit-lbfgs, implicit-lm)\n"
+    "           measurements; writes fit.json, history.csv, sensitivity.csv, fit.png, report.md\n";
+
+constexpr char kExitStatus[] =
     "\n"
     "exit status: 0 converged; 1 ran but did not reach the tolerance (results written,\n"
     "converged: false); 2 bad input or usage (nothing written).\n";
@@ -204,11 +206,9 @@ int Check(const Arguments& arguments, std::ostream& out) {
 int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
   FitSpec spec = LoadFitFile(arguments.scene);
   if (arguments.method) {
-    const auto& methods = FitMethods();
-    if (std::find(methods.begin(), methods.end(), *arguments.method) == methods.end()) {
-      throw UsageError(
-          "unknown fit method '" + *arguments.method +
-          "' (known: bobyqa, nelder-mead, sbplx, cobyla, implicit-lbfgs, implicit-lm)");
+    if (!FindFitMethod(*arguments.method)) {
+      throw UsageError("unknown fit method '" + *arguments.method + "' (known: " + FitMethodList() +
+                       ")");
     }
     spec.method = *arguments.method;
   }
@@ -263,7 +263,9 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (args.empty()) throw UsageError("no command given");
   const std::string& command = args[0];
   if (command == "help" || command == "--help" || command == "-h") {
-    out << kUsage << "\n" << kHelp;
+    out << kUsage << "\n"
+        << kHelp << "           (methods: " << FitMethodList() << ")\n"
+        << kExitStatus;
     return kExitConverged;
   }
   if (command == "solvers") {

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "src/fit/fit_methods.h"
 #include "src/model/model.h"
 #include "src/output/json.h"
 #include "src/scene/scene_loader.h"
@@ -445,12 +446,6 @@ void ReadTop(const YamlValue& root, FitSpec* spec) {
 }
 
 }  // namespace
-
-const std::vector<std::string>& FitMethods() {
-  static const std::vector<std::string> methods = {"bobyqa", "nelder-mead",    "sbplx",
-                                                   "cobyla", "implicit-lbfgs", "implicit-lm"};
-  return methods;
-}
 
 PositionData ReadPositionFile(const std::string& path, const Location& where) {
   const std::string extension = fs::path(path).extension().string();

@@ -71,17 +71,14 @@ struct FitSpec {
   std::string name;  // its stem
   std::vector<FitParameter> parameters;
   std::vector<FitSpecimen> specimens;  // [0] is the main scene
-  // bobyqa | nelder-mead | sbplx | cobyla | implicit-lbfgs | implicit-lm
-  std::string method = "bobyqa";
-  int max_evaluations = 200;  // outer objective evaluations
-  double tolerance = 1e-8;    // relative change of the (log-)parameters that stops the outer loop
+  std::string method = "bobyqa";       // a name in FitMethodTable() (src/fit/fit_methods.h)
+  int max_evaluations = 200;           // outer objective evaluations
+  double tolerance = 1e-8;  // relative change of the (log-)parameters that stops the outer loop
   // Resolved against the fit file's folder (as a scene's output.directory); default out/<name>.
   std::string output_directory;
   Location method_where;
   Location root;
 };
-
-const std::vector<std::string>& FitMethods();
 
 // Loads and checks `path` and the files it names (scenes are loaded once with every parameter at
 // its initial value, which checks the keys). Throws InputError on any bad input.

@@ -10,6 +10,7 @@
 #include <nlopt.hpp>
 #include <sstream>
 
+#include "src/fit/fit_methods.h"
 #include "src/solvers/solver.h"
 
 namespace drape {
@@ -90,14 +91,6 @@ double NloptObjective(unsigned n, const double* x, double* gradient, void* data)
   return Penalised(evaluation);
 }
 
-nlopt::algorithm AlgorithmOf(const std::string& method) {
-  if (method == "nelder-mead") return nlopt::LN_NELDERMEAD;
-  if (method == "sbplx") return nlopt::LN_SBPLX;
-  if (method == "cobyla") return nlopt::LN_COBYLA;
-  if (method == "implicit-lbfgs") return nlopt::LD_LBFGS;
-  return nlopt::LN_BOBYQA;
-}
-
 std::string NloptOutcome(nlopt::result result, bool* converged) {
   *converged = result == nlopt::SUCCESS || result == nlopt::FTOL_REACHED ||
                result == nlopt::XTOL_REACHED || result == nlopt::STOPVAL_REACHED;
@@ -120,8 +113,9 @@ std::string NloptOutcome(nlopt::result result, bool* converged) {
 void RunNlopt(FitProblem& problem, Recorder* recorder, FitResult* result) {
   const FitSpec& spec = problem.spec();
   const int p = problem.num_parameters();
-  NloptContext context{recorder, spec.method == "implicit-lbfgs"};
-  nlopt::opt opt(AlgorithmOf(spec.method), static_cast<unsigned>(p));
+  const FitMethod& method = *FindFitMethod(spec.method);  // the loader checked the name
+  NloptContext context{recorder, method.implicit};
+  nlopt::opt opt(method.algorithm, static_cast<unsigned>(p));
   const std::vector<double> lower = problem.LowerUnknowns(), upper = problem.UpperUnknowns();
   opt.set_lower_bounds(lower);
   opt.set_upper_bounds(upper);
@@ -214,7 +208,7 @@ void RunCeres(FitProblem& problem, Recorder* recorder, FitResult* result) {
 FitResult RunFit(FitProblem& problem, const FitOptions& options) {
   FitResult result;
   Recorder recorder(problem, options, &result);
-  if (problem.spec().method == "implicit-lm") {
+  if (FindFitMethod(problem.spec().method)->engine == FitMethod::Engine::kCeresLevenbergMarquardt) {
     RunCeres(problem, &recorder, &result);
   } else {
     RunNlopt(problem, &recorder, &result);
