@@ -34,30 +34,6 @@ std::string DirectoryOf(const std::string& path) {
   return directory.empty() ? "." : directory;
 }
 
-YAML::Node ReadFitDocument(const std::string& path) {
-  std::error_code error;
-  if (fs::is_directory(path, error)) {
-    throw InputError(path + ": cannot read the fit file: it is a folder");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read the fit file: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text.str());
-    if (documents.size() > 1) {
-      const YAML::Mark mark = documents[1].Mark();
-      throw InputError(Location{path, mark.line + 1, mark.column + 1, ""},
-                       "a fit file holds one YAML document; this is a second one");
-    }
-    return documents.empty() ? YAML::Node() : documents[0];
-  } catch (const YAML::Exception& exception) {
-    const YAML::Mark mark = exception.mark;
-    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
-                     "YAML syntax error: " + exception.msg);
-  }
-}
-
 // ------------------------------------------------------------------------------- data files
 
 // The numbers of one comma- or blank-separated row; the column of each field for messages.
@@ -488,7 +464,7 @@ FitSpec LoadFitFile(const std::string& path) {
   spec.file = path;
   spec.name = fs::path(path).stem().string();
   spec.root = Location{path, 1, 1, ""};
-  const YAML::Node document = ReadFitDocument(path);
+  const YAML::Node document = ReadYamlDocument(path, "fit file");
   YamlOrigins origins(path);
   ReadTop(YamlRoot(document, origins), &spec);
   for (const auto& specimen : spec.specimens) CheckSpecimen(spec, specimen);

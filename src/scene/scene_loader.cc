@@ -15,9 +15,9 @@
 #include <sstream>
 
 #include "src/scene/fabric_parameters.h"
-#include "src/solvers/solver.h"
 #include "src/scene/yaml_overrides.h"
 #include "src/scene/yaml_reader.h"
+#include "src/solvers/solver.h"
 
 namespace drape {
 namespace {
@@ -868,30 +868,7 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   if (!top.Has("loads")) scene->loads.where = OptionalSection(top, "loads").where;
 }
 
-YAML::Node ReadDocument(const std::string& path) {
-  std::error_code error;
-  if (fs::is_directory(path, error)) {
-    throw InputError(path + ": cannot read the scene file: it is a folder");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read the scene file: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read the scene file: read error");
-  try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text.str());
-    if (documents.size() > 1) {
-      const YAML::Mark mark = documents[1].Mark();
-      throw InputError(Location{path, mark.line + 1, mark.column + 1, ""},
-                       "a scene file holds one YAML document; this is a second one");
-    }
-    return documents.empty() ? YAML::Node() : documents[0];
-  } catch (const YAML::Exception& exception) {  // a ParserException, with its mark
-    const YAML::Mark mark = exception.mark;
-    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
-                     "YAML syntax error: " + exception.msg);
-  }
-}
+YAML::Node ReadDocument(const std::string& path) { return ReadYamlDocument(path, "scene file"); }
 
 }  // namespace
 

@@ -6,6 +6,9 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -362,6 +365,31 @@ std::vector<double> ReadNumbers(const YamlValue& value, int size) {
 Eigen::Vector3d ReadVector3(const YamlValue& value) {
   const auto numbers = ReadNumbers(value, 3);
   return {numbers[0], numbers[1], numbers[2]};
+}
+
+YAML::Node ReadYamlDocument(const std::string& path, const std::string& what) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw InputError(path + ": cannot read the " + what + ": it is a folder");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read the " + what + ": " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": cannot read the " + what + ": read error");
+  try {
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text.str());
+    if (documents.size() > 1) {
+      const YAML::Mark mark = documents[1].Mark();
+      throw InputError(Location{path, mark.line + 1, mark.column + 1, ""},
+                       "a " + what + " holds one YAML document; this is a second one");
+    }
+    return documents.empty() ? YAML::Node() : documents[0];
+  } catch (const YAML::Exception& exception) {  // a ParserException, with its mark
+    const YAML::Mark mark = exception.mark;
+    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
+                     "YAML syntax error: " + exception.msg);
+  }
 }
 
 }  // namespace drape

@@ -58,6 +58,11 @@ struct YamlValue {
 };
 
 // The root of a document.
+// The one YAML document of the file at `path` (`what` names it in messages: "scene file"). Throws
+// InputError for a folder, an unreadable file, a YAML syntax error (at its line and column) or a
+// second document.
+YAML::Node ReadYamlDocument(const std::string& path, const std::string& what);
+
 YamlValue YamlRoot(const YAML::Node& root, const YamlOrigins& origins);
 
 // Throws InputError at `value`.
