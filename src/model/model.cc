@@ -175,9 +175,10 @@ void AddSprings(const SpringsSpec& springs, const Mesh& mesh, Model* model) {
   }
 }
 
-// A constant force on one node as a linear potential measured from the node's start. The
-// least-squares shift |f| × 100 × size keeps sqrt(2(E + shift)) real over any reasonable motion
-// (src/solvers/solver_ceres_least_squares.cc).
+// A constant force on one node as a linear potential measured from the node's start,
+// E = −f·(x − x₀) ≥ −|f| |x − x₀|. The least-squares shift |f| × 2 × size keeps sqrt(2(E + shift))
+// real while the node stays within twice the fabric's size of its start; a step beyond that is
+// not evaluable and Ceres rejects it (src/model/term.h, src/solvers/solver_ceres_least_squares.cc).
 void AddConstantForce(const std::string& type, int node, const Eigen::Vector3d& force,
                       Model* model) {
   if (force.norm() == 0.0) return;
