@@ -1,4 +1,4 @@
-// Autodiff-safe helpers shared by the cost functors (architecture.md, fact 5).
+// Autodiff-safe helpers shared by the cost functors (docs/architecture.md, fact 5).
 #ifndef DRAPE_COSTS_SAFE_MATH_H_
 #define DRAPE_COSTS_SAFE_MATH_H_
 

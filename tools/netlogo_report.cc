@@ -121,7 +121,7 @@ vertical projection; the dashed circle is the flat disc. Without the limit:
   springs, and the springs (which resist compression as much as tension) hold folds open. Its DC
   therefore depends on the ratio of spring stiffness to weight, which the paper gives only in
   NetLogo's units: ours cannot be compared with their 2.01 % in absolute terms, only in ranking.
-  Two solvers reach different folds of nearly the same energy (architecture.md, fact 8), hence
+  Two solvers reach different folds of nearly the same energy (docs/architecture.md, fact 8), hence
   the two DCs.
 - **None of these models can give the real fabric's 13 %**: without bending stiffness nothing
   holds a fabric out from a single pin. A `flexion` spring family (skip-one springs) or the

@@ -1,7 +1,7 @@
 // ceres-lbfgs: L-BFGS with a Wolfe line search (ceres::GradientProblemSolver) on the exact total
 // energy over the free coordinates. The gradient is assembled term by term from small Jets
 // (AutoDiffFirstOrderFunction would need the whole size at compile time). Stops on the relative
-// equilibrium residual, not on Ceres' cost-relative tolerances (architecture.md, fact 3).
+// equilibrium residual, not on Ceres' cost-relative tolerances (docs/architecture.md, fact 3).
 //
 // Precision: a line search comparing energies stalls around a relative residual of 1e-7, where
 // energy changes fall below the roundoff of the total energy. When Ceres stops for that reason,
