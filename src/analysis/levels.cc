@@ -51,8 +51,7 @@ double MapIndex(double i, const Axis& fine, const Axis& coarse) {
 }
 
 [[noreturn]] void Refuse(const Scene& scene, const std::string& what) {
-  throw InputError(scene.solver.levels_where,
-                   "solver.levels: " + std::to_string(scene.solver.levels) + " " + what);
+  throw InputError(scene.solver.levels_where, std::to_string(scene.solver.levels) + " " + what);
 }
 
 void CheckScalable(const Scene& scene) {
@@ -138,13 +137,21 @@ void MapSelector(const Scene& scene, const Mesh& fine, const Mesh& coarse, const
   std::set<int> ids;
   std::set<std::array<int, 2>> coarse_ij;
   for (const auto& [i, j] : ij) {
-    const long ci = std::lround(MapIndex(i, fa.u, ca.u)), cj = std::lround(MapIndex(j, fa.v, ca.v));
-    const int id = coarse_ids.At(ci, cj);
-    if (id < 0)
+    const double u = MapIndex(i, fa.u, ca.u), v = MapIndex(j, fa.v, ca.v);
+    int found = 0;
+    for (double ci : {std::floor(u), std::ceil(u)}) {
+      for (double cj : {std::floor(v), std::ceil(v)}) {
+        const int id = coarse_ids.At(static_cast<long>(ci), static_cast<long>(cj));
+        if (id < 0) continue;
+        ids.insert(id);
+        coarse_ij.insert({static_cast<int>(ci), static_cast<int>(cj)});
+        ++found;
+      }
+    }
+    if (found == 0) {
       Refuse(scene, "cannot map the selected node (" + std::to_string(i) + ", " +
                         std::to_string(j) + ") onto a coarser lattice");
-    ids.insert(id);
-    coarse_ij.insert({static_cast<int>(ci), static_cast<int>(cj)});
+    }
   }
   selector->ids.assign(ids.begin(), ids.end());
   selector->ij.assign(coarse_ij.begin(), coarse_ij.end());

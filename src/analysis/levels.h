@@ -8,8 +8,9 @@
 // rigidity k whatever its spacing) except flexion: a skip-one spring of a sheet bent to curvature
 // κ shortens by κ²h³/3, so its energy per unit area, k_f κ⁴ h⁴/18, stays the same when k_f scales
 // as h⁻⁴. Node selectors by position (edge, corner, box, within, all) select the same places;
-// `ids` and `ij` are mapped through the lattice index (i → round(i h/H)). What cannot be scaled is
-// refused at solver.levels: meshes other than a uniform grid or a circle, per-node forces and
+// `ids` and `ij` are mapped through the lattice index: fine index i lands at i h/H on the coarse
+// lattice and the coarse nodes on either side are selected (a clamp on the first two nodes stays
+// the first two; a node between coarse nodes selects both). What cannot be scaled is refused at solver.levels: meshes other than a uniform grid or a circle, per-node forces and
 // masses given per node.
 #ifndef DRAPE_SRC_ANALYSIS_LEVELS_H_
 #define DRAPE_SRC_ANALYSIS_LEVELS_H_
