@@ -256,11 +256,12 @@ std::string Joined(const std::vector<int>& values) {
 void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* report) {
   std::vector<double> spacing, energy, dc;
   std::vector<int> folds;
-  bool all_converged = true, all_dc = true;
+  bool all_converged = true, all_dc = true, any_under_disk = false;
   for (const LevelRecord& level : levels) {
     spacing.push_back(level.spacing);
     energy.push_back(level.energy);
     all_converged = all_converged && level.converged;
+    any_under_disk = any_under_disk || level.nodes_under_disk > 0;
     all_dc = all_dc && level.drape_coefficient.has_value();
     if (level.drape_coefficient) dc.push_back(*level.drape_coefficient);
     if (level.folds) folds.push_back(*level.folds);
@@ -281,6 +282,8 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
       e.reason = "needs 3 levels (solver.levels: 3 or more)";
     } else if (!all_converged) {
       e.reason = "a level did not converge";
+    } else if (any_under_disk) {
+      e.reason = "the fabric passes through the support disk on a level (nodes_under_disk)";
     } else if (folds_differ) {
       e.reason = "the fold count differs between the finest levels (" + Joined(last_folds) +
                  "): different fold patterns, not one converging answer";
@@ -302,12 +305,30 @@ void KeepOnDiscs(const Scene& scene, Model* model) {
       double* x = model->positions.data() + 3 * k;
       const double* start = model->initial.data() + 3 * k;
       const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
-      if (start[2] > disc.center.z() && rho <= disc.radius && x[2] < top &&
-          !model->fixed[3 * k + 2]) {
+      if (start[2] > disc.center.z() && rho <= disc.radius - scene.contact.thickness &&
+          x[2] < top && !model->fixed[3 * k + 2]) {
         x[2] = top;
       }
     }
   }
+}
+
+int NodesUnderDisks(const Scene& scene, const Model& model) {
+  int count = 0;
+  for (int k = 0; k < model.num_nodes; ++k) {
+    const double* x = model.positions.data() + 3 * k;
+    const double* start = model.initial.data() + 3 * k;
+    for (const ObstacleSpec& disc : scene.obstacles) {
+      if (disc.kind != ObstacleSpec::Kind::kDisk) continue;
+      const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
+      if (start[2] > disc.center.z() && rho <= disc.radius - scene.contact.thickness &&
+          x[2] < disc.center.z()) {
+        ++count;
+        break;
+      }
+    }
+  }
+  return count;
 }
 
 }  // namespace
@@ -399,14 +420,23 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     if (k > 0) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
     result = RunSolve(scenes[k], current, method, on_iteration);
     LevelRecord record;
+    if (k > 0 && NodesUnderDisks(scenes[k], current) > 0) {
+      // The interpolated start led the fabric through a support disk: solve from the flat start.
+      record.restarted_flat = true;
+      record.iterations = result.summary.iterations;
+      record.wall_time_s = result.summary.wall_time_s;
+      current.positions = current.initial;
+      result = RunSolve(scenes[k], current, method, on_iteration);
+    }
     const LatticeAxes axes = AxesOf(scenes[k].mesh);
     record.spacing = axes.u.h > 0.0 ? axes.u.h : axes.v.h;
     record.nodes = current.num_nodes;
-    record.iterations = result.summary.iterations;
-    record.wall_time_s = result.summary.wall_time_s;
+    record.iterations += result.summary.iterations;
+    record.wall_time_s += result.summary.wall_time_s;
     record.energy = result.certificate.energy;
     record.converged = result.converged;
     record.stable = result.stability.computed && result.stability.stable;
+    record.nodes_under_disk = NodesUnderDisks(scenes[k], current);
     if (HasDrapeCoefficient(scenes[k], current)) {
       const DrapeAnalysis drape = AnalyseDrape(scenes[k], current);
       if (drape.disc_radius > 0.0) record.drape_coefficient = drape.coefficient.cusick;

@@ -10,8 +10,9 @@
 // as h⁻⁴. Node selectors by position (edge, corner, box, within, all) select the same places;
 // `ids` and `ij` are mapped through the lattice index: fine index i lands at i h/H on the coarse
 // lattice and the coarse nodes on either side are selected (a clamp on the first two nodes stays
-// the first two; a node between coarse nodes selects both). What cannot be scaled is refused at solver.levels: meshes other than a uniform grid or a circle, per-node forces and
-// masses given per node.
+// the first two; a node between coarse nodes selects both). What cannot be scaled is refused at
+// solver.levels: meshes other than a uniform grid or a circle, per-node forces and masses given per
+// node.
 #ifndef DRAPE_SRC_ANALYSIS_LEVELS_H_
 #define DRAPE_SRC_ANALYSIS_LEVELS_H_
 
@@ -36,6 +37,14 @@ struct LevelRecord {
   bool stable = false;
   std::optional<double> drape_coefficient;  // where the scene has one
   std::optional<int> folds;
+  // Nodes that started above a support disk and end inside its rim (radius − clearance) below
+  // its mid-plane, where its contact pushes them down: the fabric has passed through the disk (its
+  // contact acts on nodes only, and a coarse lattice can step over the ring between a clamp and the
+  // rim).
+  int nodes_under_disk = 0;
+  // The interpolated start led through a disk, so the level was solved again from the flat
+  // start (iterations and time count both solves).
+  bool restarted_flat = false;
 };
 
 // q(h) = q₀ + C h^p fitted through the three finest levels.

@@ -202,7 +202,9 @@ void AddLevelsMembers(const LevelsReport& report,
         {"stable", JsonBool(level.stable)},
         {"drape_coefficient",
          level.drape_coefficient ? JsonNumber(*level.drape_coefficient) : "null"},
-        {"folds", level.folds ? std::to_string(*level.folds) : "null"}};
+        {"folds", level.folds ? std::to_string(*level.folds) : "null"},
+        {"nodes_under_disk", std::to_string(level.nodes_under_disk)},
+        {"restarted_flat", JsonBool(level.restarted_flat)}};
     levels += (k ? ", " : "") + JsonObject(fields, 2);
   }
   members->emplace_back("levels", levels + "]");
