@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "src/analysis/levels.h"
 #include "src/cli/progress.h"
 #include "src/compare/compare.h"
 #include "src/fit/fit_file.h"
@@ -160,6 +161,22 @@ std::string ResultLine(const RunResult& result, const std::string& directory) {
   return std::string(text) + " (" + summary.termination + "); results in " + directory;
 }
 
+// The stdout summary of a `solver.levels` run: the extrapolated drape coefficient (else energy)
+// with its error estimate and observed order, or why there is none.
+std::string LevelsLine(const LevelsReport& report) {
+  const Extrapolation& e = report.extrapolations.front();
+  char text[200];
+  if (e.available) {
+    std::snprintf(
+        text, sizeof text, "; %zu levels: extrapolated %s %.6g ± %.2g (observed order %.2f)",
+        report.levels.size(), e.quantity.c_str(), e.value, e.error_estimate, e.observed_order);
+    return text;
+  }
+  std::snprintf(text, sizeof text, "; %zu levels: no extrapolated %s (", report.levels.size(),
+                e.quantity.c_str());
+  return text + e.reason + ")";
+}
+
 int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
           const CommandOptions& options) {
   if (arguments.solver && !FindSolver(*arguments.solver)) {
@@ -178,17 +195,21 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     on_iteration = [&progress](const IterationRecord& record) { return progress.Update(record); };
   }
   EnableInterrupt();
-  const RunResult result = RunSolve(scene, model, scene.solver.method, on_iteration);
+  LevelsReport levels;
+  const bool multilevel = scene.solver.levels > 1;
+  const RunResult result = multilevel
+                               ? RunLevels(scene, model, scene.solver.method, on_iteration, &levels)
+                               : RunSolve(scene, model, scene.solver.method, on_iteration);
   progress.Clear();
 
   const std::string directory = OutputDirectory(scene);
   try {
-    WriteOutputs(scene, model, result, directory);
+    WriteOutputs(scene, model, result, directory, multilevel ? &levels : nullptr);
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;
   }
-  out << ResultLine(result, directory) << std::endl;
+  out << ResultLine(result, directory) << (multilevel ? LevelsLine(levels) : "") << std::endl;
   return result.converged ? kExitConverged : kExitNotConverged;
 }
 

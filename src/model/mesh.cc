@@ -9,7 +9,10 @@
 //   evenly spaced along `direction`, or the explicit `points` (offset by `origin`); a closed chain
 //   also links the last node to the first, and `loop` lists its links in order.
 // - circle: lattice points (i s, j s) of spacing s, with the origin a lattice point, inside the
-//   disc; full lattice cells give 2 triangles, cells with 3 corners inside the disc one.
+//   disc; full lattice cells give 2 triangles, cells with 3 corners inside the disc one. The
+//   lumped areas are the disc cut into the lattice's cells (boundary control volumes take the
+//   part of the disc beyond the lattice's staircase outline): they add up to πR², so the
+//   specimen's mass is πR²ρ at every spacing (the triangles still cover the staircase polygon).
 // - arc: node 0 is the centre, then ring r = 1..rings, spoke k: id 1 + (r-1)*spokes + k.
 // - file: OBJ or ASCII PLY; node ids are the vertex order, from 0 (OBJ counts from 1).
 #include "src/model/mesh.h"
@@ -205,14 +208,44 @@ Mesh BuildChain(const MeshSpec& spec) {
 // ---------------------------------------------------------------------------------------------
 // circle
 
-// Area lumping and triangles of one lattice cell with corners a (i, j), b (i+1, j),
-// c (i+1, j+1), d (i, j+1), ids -1 where outside the disc.
-void AddCircleCell(int a, int b, int c, int d, double cell_area, Mesh* mesh) {
+// Area of the disc x² + y² ≤ r² inside the rectangle [x0, x1] × [y0, y1]: the integral over x of
+// the chord length within [y0, y1], by composite Simpson's rule on pieces split where the
+// integrand has a kink (x = ±r, and where the circle crosses y = y0 or y = y1). Over a whole
+// circle mesh the error is ~1e-7 of the disc's area (the square-root ends at x = ±r).
+double DiscAreaInRectangle(double r, double x0, double x1, double y0, double y1) {
+  auto chord = [&](double x) {
+    const double s = x * x < r * r ? std::sqrt(r * r - x * x) : 0.0;
+    return std::max(0.0, std::min(y1, s) - std::max(y0, -s));
+  };
+  std::vector<double> cuts{x0, x1};
+  for (double y : {y0, y1}) {
+    if (std::abs(y) < r) {
+      const double x = std::sqrt(r * r - y * y);
+      cuts.push_back(x), cuts.push_back(-x);
+    }
+  }
+  cuts.push_back(r), cuts.push_back(-r);
+  std::sort(cuts.begin(), cuts.end());
+  double area = 0.0;
+  constexpr int kIntervals = 64;  // per piece, even
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double a = std::max(cuts[k], x0), b = std::min(cuts[k + 1], x1);
+    if (!(b > a)) continue;
+    const double step = (b - a) / kIntervals;
+    double sum = chord(a) + chord(b);
+    for (int n = 1; n < kIntervals; ++n) sum += (n % 2 ? 4.0 : 2.0) * chord(a + n * step);
+    area += sum * step / 3.0;
+  }
+  return area;
+}
+
+// Triangles of one lattice cell with corners a (i, j), b (i+1, j), c (i+1, j+1), d (i, j+1), ids
+// -1 where outside the disc: 2 for a full cell, 1 for a cell with 3 corners inside.
+void AddCircleCellTriangles(int a, int b, int c, int d, Mesh* mesh) {
   const int present = (a >= 0) + (b >= 0) + (c >= 0) + (d >= 0);
   if (present == 4) {
     mesh->triangles.push_back({a, b, c});
     mesh->triangles.push_back({a, c, d});
-    for (int v : {a, b, c, d}) mesh->area[v] += 0.25 * cell_area;
   } else if (present == 3) {
     std::array<int, 3> triangle{};
     int k = 0;
@@ -220,7 +253,38 @@ void AddCircleCell(int a, int b, int c, int d, double cell_area, Mesh* mesh) {
       if (v >= 0) triangle[k++] = v;
     }
     mesh->triangles.push_back(triangle);
-    for (int v : triangle) mesh->area[v] += cell_area / 6.0;  // a third of half the cell
+  }
+}
+
+// Lumped areas of one lattice cell [x0, x0 + s] × [y0, y0 + s] (disc-centred coordinates) with
+// corner ids (a, b, c, d as above): the part of the cell inside the disc, cut into its four
+// quarters; each corner inside the disc takes its own quarter, and the quarters of the corners
+// outside are shared equally by those inside. A cell that meets the disc has a corner inside
+// (its corner nearest the centre is its point nearest the centre, the origin being a lattice
+// point), so the areas add up to the disc's area πR².
+void AddCircleCellArea(const std::array<int, 4>& corners, double x0, double y0, double s,
+                       double radius, Mesh* mesh) {
+  const int present = std::count_if(corners.begin(), corners.end(), [](int v) { return v >= 0; });
+  if (present == 0) return;
+  if (present == 4) {
+    for (int v : corners) mesh->area[v] += 0.25 * s * s;
+    return;
+  }
+  const double h = 0.5 * s;
+  const std::array<std::array<double, 2>, 4> quarter{
+      {{x0, y0}, {x0 + h, y0}, {x0 + h, y0 + h}, {x0, y0 + h}}};
+  double orphaned = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const double area = DiscAreaInRectangle(radius, quarter[k][0], quarter[k][0] + h, quarter[k][1],
+                                            quarter[k][1] + h);
+    if (corners[k] >= 0) {
+      mesh->area[corners[k]] += area;
+    } else {
+      orphaned += area;
+    }
+  }
+  for (int v : corners) {
+    if (v >= 0) mesh->area[v] += orphaned / present;
   }
 }
 
@@ -248,7 +312,6 @@ Mesh BuildCircle(const MeshSpec& spec) {
     }
   }
   mesh.area.assign(mesh.nodes.size(), 0.0);
-  const double cell_area = spec.spacing * spec.spacing;
   for (int j = 0; j < side; ++j) {
     for (int i = 0; i < side; ++i) {
       const int a = at(i, j);
@@ -259,7 +322,15 @@ Mesh BuildCircle(const MeshSpec& spec) {
       if (a >= 0 && at(i + 1, j + 1) >= 0) mesh.shear.push_back({a, at(i + 1, j + 1)});
       if (at(i + 1, j) >= 0 && at(i, j + 1) >= 0)
         mesh.shear.push_back({at(i + 1, j), at(i, j + 1)});
-      AddCircleCell(a, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), cell_area, &mesh);
+      AddCircleCellTriangles(a, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), &mesh);
+    }
+  }
+  // Cells from one step outside the lattice's first row and column: the disc reaches past it.
+  for (int j = -1; j < side; ++j) {
+    for (int i = -1; i < side; ++i) {
+      AddCircleCellArea({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)},
+                        (i - m) * spec.spacing, (j - m) * spec.spacing, spec.spacing, spec.radius,
+                        &mesh);
     }
   }
   return mesh;

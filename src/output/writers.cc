@@ -114,8 +114,48 @@ void AddContactMembers(const Scene& scene, const Model& model,
                  1));
 }
 
+// summary.json's `levels` (one object per level, coarsest first) and `extrapolation` (per
+// quantity: value, error_estimate, observed_order, or available: false with the reason).
+void AddLevelsMembers(const LevelsReport& report,
+                      std::vector<std::pair<std::string, std::string>>* members) {
+  std::string levels = "[";
+  for (size_t k = 0; k < report.levels.size(); ++k) {
+    const LevelRecord& level = report.levels[k];
+    std::vector<std::pair<std::string, std::string>> fields = {
+        {"spacing_m", JsonNumber(level.spacing)},
+        {"nodes", std::to_string(level.nodes)},
+        {"iterations", std::to_string(level.iterations)},
+        {"wall_time_s", JsonNumber(level.wall_time_s)},
+        {"energy", JsonNumber(level.energy)},
+        {"converged", JsonBool(level.converged)},
+        {"stable", JsonBool(level.stable)},
+        {"drape_coefficient",
+         level.drape_coefficient ? JsonNumber(*level.drape_coefficient) : "null"},
+        {"folds", level.folds ? std::to_string(*level.folds) : "null"},
+        {"nodes_under_disk", std::to_string(level.nodes_under_disk)},
+        {"restarted_flat", JsonBool(level.restarted_flat)}};
+    levels += (k ? ", " : "") + JsonObject(fields, 2);
+  }
+  members->emplace_back("levels", levels + "]");
+  std::vector<std::pair<std::string, std::string>> extrapolation;
+  for (const Extrapolation& e : report.extrapolations) {
+    std::vector<std::pair<std::string, std::string>> fields = {
+        {"available", JsonBool(e.available)}};
+    if (e.available) {
+      fields.emplace_back("value", JsonNumber(e.value));
+      fields.emplace_back("error_estimate", JsonNumber(e.error_estimate));
+      fields.emplace_back("observed_order", JsonNumber(e.observed_order));
+    } else {
+      fields.emplace_back("reason", JsonString(e.reason));
+    }
+    extrapolation.emplace_back(e.quantity, JsonObject(fields, 2));
+  }
+  members->emplace_back("extrapolation", JsonObject(extrapolation, 1));
+}
+
 void WriteSummary(const Scene& scene, const Model& model, const RunResult& result,
-                  const std::optional<DrapeAnalysis>& drape, std::ostream& out) {
+                  const std::optional<DrapeAnalysis>& drape, const LevelsReport* levels,
+                  std::ostream& out) {
   const Certificate& certificate = result.certificate;
   const SolverSummary& summary = result.summary;
   std::vector<std::pair<std::string, double>> energy{{"total", certificate.energy}};
@@ -151,6 +191,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics",
                        JsonMap(summary.statistics, 1, [](double v) { return JsonNumber(v); }));
+  if (levels) AddLevelsMembers(*levels, &members);
   out << JsonObject(members, 0) << "\n";
 }
 
@@ -276,14 +317,15 @@ bool Requested(const Scene& scene, const std::string& what) {
 }  // namespace
 
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
-                  const std::string& directory) {
+                  const std::string& directory, const LevelsReport* levels) {
   const fs::path folder(directory);
   fs::create_directories(folder);
   std::optional<DrapeAnalysis> drape;
   if (HasDrapeCoefficient(scene, model)) drape = AnalyseDrape(scene, model);
   if (Requested(scene, "summary")) {
-    WriteAtomically(folder / "summary.json",
-                    [&](std::ostream& out) { WriteSummary(scene, model, result, drape, out); });
+    WriteAtomically(folder / "summary.json", [&](std::ostream& out) {
+      WriteSummary(scene, model, result, drape, levels, out);
+    });
   }
   if (Requested(scene, "nodes")) {
     WriteAtomically(folder / "nodes.csv",

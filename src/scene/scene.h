@@ -160,6 +160,10 @@ struct SolverSpec {
   double tolerance = 1e-8;  // relative equilibrium residual
   int max_iterations = 1000;
   double time_limit = 600.0;  // s
+  // Nested lattices to solve on (grid and circle meshes): 1 = the scene's mesh only; N > 1 solves
+  // on spacings 2^(N-1) h, ..., 2h, h, each started from the previous one, and extrapolates.
+  int levels = 1;
+  Location levels_where;
   // Method-specific keys: solver.<method>.<key>: number (validated by the solver registry).
   std::map<std::string, std::map<std::string, double>> method_options;
   Location where;

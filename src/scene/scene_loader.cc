@@ -780,7 +780,7 @@ std::map<std::string, double> ReadMethodOptions(const std::string& method, const
 
 SolverSpec ReadSolver(const YamlValue& value) {
   const auto methods = MethodNames();
-  std::vector<std::string> keys = {"method", "tolerance", "max_iterations", "time_limit"};
+  std::vector<std::string> keys = {"method", "tolerance", "max_iterations", "time_limit", "levels"};
   keys.insert(keys.end(), methods.begin(), methods.end());
   const YamlMap map(value, keys);
   SolverSpec solver;
@@ -797,6 +797,11 @@ SolverSpec ReadSolver(const YamlValue& value) {
   if (const auto v = map.Find("tolerance")) solver.tolerance = ReadPositive(*v);
   if (const auto v = map.Find("max_iterations")) solver.max_iterations = ReadIntAtLeast(*v, 1);
   if (const auto v = map.Find("time_limit")) solver.time_limit = ReadPositive(*v);
+  if (const auto v = map.Find("levels")) {
+    solver.levels = ReadIntAtLeast(*v, 1);
+    solver.levels_where = v->where;
+    if (solver.levels > 8) Fail(*v, "at most 8 levels (each halves the spacing)");
+  }
   for (const auto& method : methods) {
     if (const auto v = map.Find(method))
       solver.method_options[method] = ReadMethodOptions(method, *v);

@@ -1,0 +1,452 @@
+#include "src/analysis/levels.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "src/analysis/drape_analysis.h"
+#include "src/model/mesh.h"
+
+namespace drape {
+
+namespace {
+
+// One axis of a lattice: node index i stands at coordinate (i − offset) h, i in [0, count).
+struct Axis {
+  double h = 0.0;  // 0 for a single node
+  double offset = 0.0;
+  int count = 1;
+};
+
+struct LatticeAxes {
+  Axis u, v;
+};
+
+int CircleHalfWidth(const MeshSpec& mesh) {
+  return static_cast<int>(std::floor(mesh.radius / mesh.spacing * (1.0 + 1e-9)));
+}
+
+LatticeAxes AxesOf(const MeshSpec& mesh) {
+  LatticeAxes axes;
+  if (mesh.kind == MeshSpec::Kind::kCircle) {
+    const int m = CircleHalfWidth(mesh);
+    axes.u = axes.v = Axis{mesh.spacing, static_cast<double>(m), 2 * m + 1};
+    return axes;
+  }
+  auto axis = [](double size, int nodes) {
+    return Axis{nodes > 1 ? size / (nodes - 1) : 0.0, 0.0, nodes};
+  };
+  axes.u = axis(mesh.size.x(), mesh.nodes[0]);
+  axes.v = axis(mesh.size.y(), mesh.nodes[1]);
+  return axes;
+}
+
+// The coarse lattice coordinate of fine index i.
+double MapIndex(double i, const Axis& fine, const Axis& coarse) {
+  if (coarse.count == 1 || fine.h == 0.0) return 0.0;
+  return (i - fine.offset) * fine.h / coarse.h + coarse.offset;
+}
+
+[[noreturn]] void Refuse(const Scene& scene, const std::string& what) {
+  throw InputError(scene.solver.levels_where, std::to_string(scene.solver.levels) + " " + what);
+}
+
+void CheckScalable(const Scene& scene) {
+  const MeshSpec& mesh = scene.mesh;
+  if (mesh.kind != MeshSpec::Kind::kGrid && mesh.kind != MeshSpec::Kind::kCircle) {
+    Refuse(scene, "needs a grid or circle mesh (nested lattices)");
+  }
+  if (mesh.kind == MeshSpec::Kind::kGrid && (!mesh.u.empty() || !mesh.v.empty())) {
+    Refuse(scene, "needs a uniform grid (mesh.size and mesh.nodes, not explicit u/v)");
+  }
+  if (scene.material.mass_kind == MaterialSpec::MassKind::kNodeMass) {
+    Refuse(scene, "needs the mass as density or total_mass (a mass per node changes with h)");
+  }
+  for (const ForceSpec& force : scene.loads.forces) {
+    if (force.kind != ForceSpec::Kind::kTotal) {
+      Refuse(scene, "needs forces given as `total` (a force per node changes with h)");
+    }
+  }
+}
+
+// The coarse mesh spec for `factor`; refused if a lattice would have fewer than 3 nodes across.
+MeshSpec CoarsenedMesh(const Scene& scene, int factor) {
+  MeshSpec mesh = scene.mesh;
+  if (mesh.kind == MeshSpec::Kind::kCircle) {
+    mesh.spacing *= factor;
+    if (CircleHalfWidth(mesh) < 1) {
+      Refuse(scene, "is too many for this circle: the coarsest spacing " +
+                        std::to_string(mesh.spacing) + " m leaves fewer than 3 nodes across");
+    }
+    return mesh;
+  }
+  for (int k = 0; k < 2; ++k) {
+    const int n = scene.mesh.nodes[k];
+    if (n == 1) continue;
+    const int coarse = static_cast<int>(std::lround(static_cast<double>(n - 1) / factor)) + 1;
+    if (coarse < 3) {
+      Refuse(scene, "is too many for mesh.nodes " + std::to_string(n) +
+                        ": the coarsest lattice would have fewer than 3 nodes across");
+    }
+    mesh.nodes[k] = coarse;
+  }
+  return mesh;
+}
+
+// Node ids of `mesh` by lattice index (-1 where none).
+class LatticeIds {
+ public:
+  explicit LatticeIds(const Mesh& mesh) {
+    for (const auto& ij : mesh.grid_index) {
+      nu_ = std::max(nu_, ij[0] + 1);
+      nv_ = std::max(nv_, ij[1] + 1);
+    }
+    ids_.assign(static_cast<size_t>(nu_) * nv_, -1);
+    for (size_t k = 0; k < mesh.grid_index.size(); ++k) {
+      const auto& ij = mesh.grid_index[k];
+      if (ij[0] >= 0 && ij[1] >= 0) ids_[ij[1] * nu_ + ij[0]] = static_cast<int>(k);
+    }
+  }
+  int At(long i, long j) const {
+    return (i < 0 || j < 0 || i >= nu_ || j >= nv_) ? -1 : ids_[j * nu_ + i];
+  }
+
+ private:
+  int nu_ = 0, nv_ = 0;
+  std::vector<int> ids_;
+};
+
+// Maps `ids` / `ij` selectors of the fine scene onto the coarse lattice.
+void MapSelector(const Scene& scene, const Mesh& fine, const Mesh& coarse, const LatticeAxes& fa,
+                 const LatticeAxes& ca, NodeSelector* selector) {
+  if (selector->kind != NodeSelector::Kind::kIds && selector->kind != NodeSelector::Kind::kIj) {
+    return;
+  }
+  std::vector<std::array<int, 2>> ij = selector->ij;
+  if (selector->kind == NodeSelector::Kind::kIds) {
+    ij.clear();
+    for (int id : selector->ids) {
+      if (id < 0 || id >= static_cast<int>(fine.grid_index.size())) return;  // located later
+      ij.push_back(fine.grid_index[id]);
+    }
+  }
+  const LatticeIds coarse_ids(coarse);
+  std::set<int> ids;
+  std::set<std::array<int, 2>> coarse_ij;
+  for (const auto& [i, j] : ij) {
+    const double u = MapIndex(i, fa.u, ca.u), v = MapIndex(j, fa.v, ca.v);
+    int found = 0;
+    for (double ci : {std::floor(u), std::ceil(u)}) {
+      for (double cj : {std::floor(v), std::ceil(v)}) {
+        const int id = coarse_ids.At(static_cast<long>(ci), static_cast<long>(cj));
+        if (id < 0) continue;
+        ids.insert(id);
+        coarse_ij.insert({static_cast<int>(ci), static_cast<int>(cj)});
+        ++found;
+      }
+    }
+    if (found == 0) {
+      Refuse(scene, "cannot map the selected node (" + std::to_string(i) + ", " +
+                        std::to_string(j) + ") onto a coarser lattice");
+    }
+  }
+  selector->ids.assign(ids.begin(), ids.end());
+  selector->ij.assign(coarse_ij.begin(), coarse_ij.end());
+}
+
+// Bilinear interpolation over a lattice of positions with a margin, filled beyond the outline.
+class FilledLattice {
+ public:
+  static constexpr int kMargin = 3;
+
+  FilledLattice(const Model& model, const Axis& u, const Axis& v)
+      : nu_(u.count + 2 * kMargin), nv_(v.count + 2 * kMargin) {
+    values_.assign(static_cast<size_t>(nu_) * nv_, Eigen::Vector3d::Zero());
+    present_.assign(values_.size(), 0);
+    for (int k = 0; k < model.num_nodes; ++k) {
+      const auto& ij = model.grid_index[k];
+      const int cell = Cell(ij[0] + kMargin, ij[1] + kMargin);
+      values_[cell] = Eigen::Vector3d(model.positions.data() + 3 * k);
+      present_[cell] = 1;
+    }
+    for (int pass = 0; pass < 2 * kMargin; ++pass) Fill();
+  }
+
+  // Position at lattice coordinate (x, y); false where the lattice has nothing there.
+  bool Interpolate(double x, double y, Eigen::Vector3d* position) const {
+    x += kMargin, y += kMargin;
+    const int i = std::clamp(static_cast<int>(std::floor(x)), 0, nu_ - 2);
+    const int j = std::clamp(static_cast<int>(std::floor(y)), 0, nv_ - 2);
+    const double fx = std::clamp(x - i, 0.0, 1.0), fy = std::clamp(y - j, 0.0, 1.0);
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    double weight = 0.0;
+    for (int dj = 0; dj < 2; ++dj) {
+      for (int di = 0; di < 2; ++di) {
+        const double w = (di ? fx : 1.0 - fx) * (dj ? fy : 1.0 - fy);
+        const int cell = Cell(i + di, j + dj);
+        if (w > 0.0 && present_[cell]) sum += w * values_[cell], weight += w;
+      }
+    }
+    if (!(weight > 1e-12)) return false;
+    *position = sum / weight;
+    return true;
+  }
+
+ private:
+  int Cell(int i, int j) const { return j * nu_ + i; }
+  bool Present(int i, int j) const {
+    return i >= 0 && j >= 0 && i < nu_ && j < nv_ && present_[Cell(i, j)];
+  }
+
+  // One ring outward: each missing cell next to present ones takes the mean of the linear
+  // extrapolations along the lattice lines that reach it (or of its neighbours' values).
+  void Fill() {
+    std::vector<Eigen::Vector3d> values = values_;
+    std::vector<char> present = present_;
+    for (int j = 0; j < nv_; ++j) {
+      for (int i = 0; i < nu_; ++i) {
+        if (present_[Cell(i, j)]) continue;
+        Eigen::Vector3d linear = Eigen::Vector3d::Zero(), nearest = Eigen::Vector3d::Zero();
+        int linear_count = 0, nearest_count = 0;
+        for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          if (!Present(i + di, j + dj)) continue;
+          const Eigen::Vector3d& one = values_[Cell(i + di, j + dj)];
+          nearest += one, ++nearest_count;
+          if (Present(i + 2 * di, j + 2 * dj)) {
+            linear += 2.0 * one - values_[Cell(i + 2 * di, j + 2 * dj)], ++linear_count;
+          }
+        }
+        if (nearest_count == 0) continue;
+        values[Cell(i, j)] = linear_count ? linear / linear_count : nearest / nearest_count;
+        present[Cell(i, j)] = 1;
+      }
+    }
+    values_.swap(values);
+    present_.swap(present);
+  }
+
+  int nu_, nv_;
+  std::vector<Eigen::Vector3d> values_;
+  std::vector<char> present_;
+};
+
+// The root of (h1^p − h2^p)/(h2^p − h3^p) = ratio in p ∈ [0.1, 8], or NaN.
+double ObservedOrder(double h1, double h2, double h3, double ratio) {
+  auto f = [&](double p) {
+    return (std::pow(h1, p) - std::pow(h2, p)) / (std::pow(h2, p) - std::pow(h3, p)) - ratio;
+  };
+  double low = 0.1, high = 8.0;
+  if (f(low) > 0.0 || f(high) < 0.0) return NAN;
+  for (int k = 0; k < 200; ++k) {
+    const double mid = 0.5 * (low + high);
+    (f(mid) < 0.0 ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+std::string Joined(const std::vector<int>& values) {
+  std::string text;
+  for (int v : values) text += (text.empty() ? "" : ", ") + std::to_string(v);
+  return text;
+}
+
+void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* report) {
+  std::vector<double> spacing, energy, dc;
+  std::vector<int> folds;
+  bool all_converged = true, all_dc = true, any_under_disk = false;
+  for (const LevelRecord& level : levels) {
+    spacing.push_back(level.spacing);
+    energy.push_back(level.energy);
+    all_converged = all_converged && level.converged;
+    any_under_disk = any_under_disk || level.nodes_under_disk > 0;
+    all_dc = all_dc && level.drape_coefficient.has_value();
+    if (level.drape_coefficient) dc.push_back(*level.drape_coefficient);
+    if (level.folds) folds.push_back(*level.folds);
+  }
+  std::vector<std::pair<std::string, std::vector<double>>> quantities;
+  if (all_dc) quantities.emplace_back("drape_coefficient", dc);
+  quantities.emplace_back("energy", energy);
+  const int n = static_cast<int>(levels.size());
+  const std::vector<int> last_folds(folds.size() >= 3 ? folds.end() - 3 : folds.begin(),
+                                    folds.end());
+  const bool folds_differ =
+      last_folds.size() >= 2 && std::any_of(last_folds.begin(), last_folds.end(),
+                                            [&](int count) { return count != last_folds.front(); });
+  for (const auto& [name, values] : quantities) {
+    Extrapolation e;
+    e.quantity = name;
+    if (n < 3) {
+      e.reason = "needs 3 levels (solver.levels: 3 or more)";
+    } else if (!all_converged) {
+      e.reason = "a level did not converge";
+    } else if (any_under_disk) {
+      e.reason = "the fabric passes through the support disk on a level (nodes_under_disk)";
+    } else if (folds_differ) {
+      e.reason = "the fold count differs between the finest levels (" + Joined(last_folds) +
+                 "): different fold patterns, not one converging answer";
+    } else {
+      e = Extrapolate(name, spacing, values);
+    }
+    report->extrapolations.push_back(e);
+  }
+}
+
+// A coarse lattice can step over a support disc (no coarse node between the clamp and the rim),
+// and the disc's contact acts from both sides: an interpolated node that lands under a disc it
+// started above would stay there. Such nodes are put back on the disc's top (its clearance).
+void KeepOnDiscs(const Scene& scene, Model* model) {
+  for (const ObstacleSpec& disc : scene.obstacles) {
+    if (disc.kind != ObstacleSpec::Kind::kDisk) continue;
+    const double top = disc.center.z() + scene.contact.thickness;
+    for (int k = 0; k < model->num_nodes; ++k) {
+      double* x = model->positions.data() + 3 * k;
+      const double* start = model->initial.data() + 3 * k;
+      const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
+      if (start[2] > disc.center.z() && rho <= disc.radius - scene.contact.thickness &&
+          x[2] < top && !model->fixed[3 * k + 2]) {
+        x[2] = top;
+      }
+    }
+  }
+}
+
+int NodesUnderDisks(const Scene& scene, const Model& model) {
+  int count = 0;
+  for (int k = 0; k < model.num_nodes; ++k) {
+    const double* x = model.positions.data() + 3 * k;
+    const double* start = model.initial.data() + 3 * k;
+    for (const ObstacleSpec& disc : scene.obstacles) {
+      if (disc.kind != ObstacleSpec::Kind::kDisk) continue;
+      const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
+      if (start[2] > disc.center.z() && rho <= disc.radius - scene.contact.thickness &&
+          x[2] < disc.center.z()) {
+        ++count;
+        break;
+      }
+    }
+  }
+  return count;
+}
+
+}  // namespace
+
+Scene CoarsenedScene(const Scene& scene, int factor) {
+  if (factor == 1) return scene;
+  CheckScalable(scene);
+  Scene coarse = scene;
+  coarse.mesh = CoarsenedMesh(scene, factor);
+  const LatticeAxes fine_axes = AxesOf(scene.mesh), coarse_axes = AxesOf(coarse.mesh);
+  const double ratio =
+      coarse_axes.u.h > 0.0 ? coarse_axes.u.h / fine_axes.u.h : coarse_axes.v.h / fine_axes.v.h;
+  SpringsSpec& springs = coarse.material.springs;
+  springs.flexion.warp *= std::pow(ratio, -4.0);
+  springs.flexion.weft *= std::pow(ratio, -4.0);
+  if (springs.rest_length == SpringsSpec::RestLength::kGiven) springs.rest_length_value *= ratio;
+  const Mesh fine_mesh = BuildMesh(scene.mesh), coarse_mesh = BuildMesh(coarse.mesh);
+  for (FixedSpec& fixed : coarse.fixed) {
+    MapSelector(scene, fine_mesh, coarse_mesh, fine_axes, coarse_axes, &fixed.nodes);
+  }
+  for (ForceSpec& force : coarse.loads.forces) {
+    MapSelector(scene, fine_mesh, coarse_mesh, fine_axes, coarse_axes, &force.nodes);
+  }
+  return coarse;
+}
+
+void ProlongPositions(const Scene& coarse_scene, const Model& coarse, const Scene& fine_scene,
+                      Model* fine) {
+  const LatticeAxes ca = AxesOf(coarse_scene.mesh), fa = AxesOf(fine_scene.mesh);
+  const FilledLattice lattice(coarse, ca.u, ca.v);
+  for (int k = 0; k < fine->num_nodes; ++k) {
+    const auto& ij = fine->grid_index[k];
+    Eigen::Vector3d position;
+    if (!lattice.Interpolate(MapIndex(ij[0], fa.u, ca.u), MapIndex(ij[1], fa.v, ca.v), &position)) {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c) {
+      if (!fine->fixed[3 * k + c]) fine->positions[3 * k + c] = position[c];
+    }
+  }
+  KeepOnDiscs(fine_scene, fine);
+}
+
+Extrapolation Extrapolate(const std::string& quantity, const std::vector<double>& spacing,
+                          const std::vector<double>& values) {
+  Extrapolation e;
+  e.quantity = quantity;
+  const int n = static_cast<int>(values.size());
+  if (n < 3 || spacing.size() != values.size()) {
+    e.reason = "needs 3 levels";
+    return e;
+  }
+  const double h1 = spacing[n - 3], h2 = spacing[n - 2], h3 = spacing[n - 1];
+  const double q1 = values[n - 3], q2 = values[n - 2], q3 = values[n - 1];
+  const double d1 = q1 - q2, d2 = q2 - q3;
+  if (d2 == 0.0 || d1 * d2 <= 0.0) {
+    e.reason = "not in the asymptotic range: the change between levels does not shrink steadily";
+    return e;
+  }
+  const double order = ObservedOrder(h1, h2, h3, d1 / d2);
+  if (!std::isfinite(order)) {
+    e.reason = "not in the asymptotic range: observed order outside [0.1, 8]";
+    return e;
+  }
+  const double c = d2 / (std::pow(h2, order) - std::pow(h3, order));
+  e.available = true;
+  e.observed_order = order;
+  e.value = q3 - c * std::pow(h3, order);
+  e.error_estimate = std::abs(q3 - e.value);
+  return e;
+}
+
+RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
+                    const std::function<bool(const IterationRecord&)>& on_iteration,
+                    LevelsReport* report) {
+  const int count = std::max(1, scene.solver.levels);
+  std::vector<Scene> scenes;  // coarsest first; every level checked before any solve
+  for (int level = count - 1; level >= 0; --level)
+    scenes.push_back(CoarsenedScene(scene, 1 << level));
+  report->levels.clear();
+  report->extrapolations.clear();
+  Model previous;
+  RunResult result;
+  for (int k = 0; k < count; ++k) {
+    const bool finest = k + 1 == count;
+    Model coarse;
+    if (!finest) coarse = BuildModel(scenes[k]);
+    Model& current = finest ? model : coarse;
+    if (k > 0) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
+    result = RunSolve(scenes[k], current, method, on_iteration);
+    LevelRecord record;
+    if (k > 0 && NodesUnderDisks(scenes[k], current) > 0) {
+      // The interpolated start led the fabric through a support disk: solve from the flat start.
+      record.restarted_flat = true;
+      record.iterations = result.summary.iterations;
+      record.wall_time_s = result.summary.wall_time_s;
+      current.positions = current.initial;
+      result = RunSolve(scenes[k], current, method, on_iteration);
+    }
+    const LatticeAxes axes = AxesOf(scenes[k].mesh);
+    record.spacing = axes.u.h > 0.0 ? axes.u.h : axes.v.h;
+    record.nodes = current.num_nodes;
+    record.iterations += result.summary.iterations;
+    record.wall_time_s += result.summary.wall_time_s;
+    record.energy = result.certificate.energy;
+    record.converged = result.converged;
+    record.stable = result.stability.computed && result.stability.stable;
+    record.nodes_under_disk = NodesUnderDisks(scenes[k], current);
+    if (HasDrapeCoefficient(scenes[k], current)) {
+      const DrapeAnalysis drape = AnalyseDrape(scenes[k], current);
+      if (drape.disc_radius > 0.0) record.drape_coefficient = drape.coefficient.cusick;
+      record.folds = drape.folds.count;
+    }
+    report->levels.push_back(record);
+    if (!finest) previous = std::move(coarse);
+  }
+  AddExtrapolations(report->levels, report);
+  return result;
+}
+
+}  // namespace drape

@@ -1,0 +1,86 @@
+// Nested lattices (`solver.levels: N`): the scene solved on N lattices of spacing 2^(N-1) h, ...,
+// 2h, h (h the scene's own spacing), coarse to fine, each solve started from the previous level's
+// answer interpolated onto the finer lattice (grid sequencing), then the drape coefficient and
+// the energy extrapolated to h → 0 (Richardson) from the three finest levels.
+//
+// Coarser scenes keep the fabric per unit area: finite-volume rigidities and areal densities are
+// per unit area already; spring stiffnesses stay (a square lattice of springs k has membrane
+// rigidity k whatever its spacing) except flexion: a skip-one spring of a sheet bent to curvature
+// κ shortens by κ²h³/3, so its energy per unit area, k_f κ⁴ h⁴/18, stays the same when k_f scales
+// as h⁻⁴. Node selectors by position (edge, corner, box, within, all) select the same places;
+// `ids` and `ij` are mapped through the lattice index: fine index i lands at i h/H on the coarse
+// lattice and the coarse nodes on either side are selected (a clamp on the first two nodes stays
+// the first two; a node between coarse nodes selects both). What cannot be scaled is refused at
+// solver.levels: meshes other than a uniform grid or a circle, per-node forces and masses given per
+// node.
+#ifndef DRAPE_SRC_ANALYSIS_LEVELS_H_
+#define DRAPE_SRC_ANALYSIS_LEVELS_H_
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/model/model.h"
+#include "src/scene/scene.h"
+#include "src/solvers/run.h"
+
+namespace drape {
+
+struct LevelRecord {
+  double spacing = 0.0;  // m, lattice step along the warp
+  int nodes = 0;
+  int iterations = 0;
+  double wall_time_s = 0.0;
+  double energy = 0.0;  // J, total at the level's answer
+  bool converged = false;
+  bool stable = false;
+  std::optional<double> drape_coefficient;  // where the scene has one
+  std::optional<int> folds;
+  // Nodes that started above a support disk and end inside its rim (radius − clearance) below
+  // its mid-plane, where its contact pushes them down: the fabric has passed through the disk (its
+  // contact acts on nodes only, and a coarse lattice can step over the ring between a clamp and the
+  // rim).
+  int nodes_under_disk = 0;
+  // The interpolated start led through a disk, so the level was solved again from the flat
+  // start (iterations and time count both solves).
+  bool restarted_flat = false;
+};
+
+// q(h) = q₀ + C h^p fitted through the three finest levels.
+struct Extrapolation {
+  std::string quantity;  // "drape_coefficient" or "energy"
+  bool available = false;
+  std::string reason;           // why not, when not available
+  double value = 0.0;           // q₀
+  double error_estimate = 0.0;  // |q(h) − q₀| of the finest level
+  double observed_order = 0.0;  // p
+};
+
+struct LevelsReport {
+  std::vector<LevelRecord> levels;  // coarsest first; the last is the scene's own mesh
+  std::vector<Extrapolation> extrapolations;
+};
+
+// The scene for lattice spacing `factor` × the scene's own (factor a power of 2). Throws
+// InputError at solver.levels if the scene cannot be coarsened that far.
+Scene CoarsenedScene(const Scene& scene, int factor);
+
+// Fills `fine.positions` (free coordinates only) by bilinear interpolation of `coarse`'s positions
+// over the lattice of `coarse_scene`, extrapolated linearly beyond its outline.
+void ProlongPositions(const Scene& coarse_scene, const Model& coarse, const Scene& fine_scene,
+                      Model* fine);
+
+// Richardson extrapolation through (h, q) pairs, coarsest first (uses the last three).
+Extrapolation Extrapolate(const std::string& quantity, const std::vector<double>& spacing,
+                          const std::vector<double>& values);
+
+// Solves scene.solver.levels levels; the finest is `model` (built from `scene`), whose RunResult
+// is returned. `report` gets the per-level figures and the extrapolations.
+RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
+                    const std::function<bool(const IterationRecord&)>& on_iteration,
+                    LevelsReport* report);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_ANALYSIS_LEVELS_H_

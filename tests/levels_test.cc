@@ -1,0 +1,147 @@
+// solver.levels: coarsened scenes, interpolation between lattices, Richardson extrapolation, and
+// a refinement study whose limit and order are known (the tip-loaded finite-volume cantilever).
+#include "src/analysis/levels.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "tests/test_scenes.h"
+
+namespace drape {
+namespace {
+
+// q(h) = q₀ + C h^p sampled exactly: the extrapolation returns q₀ and p, for halving spacings and
+// for the uneven ratios of a grid whose node count is not 2^k + 1.
+TEST(Levels, ExtrapolationRecoversAKnownLimitAndOrder) {
+  for (double order : {1.0, 2.0, 3.5}) {
+    for (const std::vector<double>& h :
+         {std::vector<double>{0.4, 0.2, 0.1}, std::vector<double>{0.083, 0.04, 0.0101}}) {
+      std::vector<double> q;
+      for (double x : h) q.push_back(0.7 - 0.3 * std::pow(x, order));
+      const Extrapolation e = Extrapolate("drape_coefficient", h, q);
+      ASSERT_TRUE(e.available) << e.reason;
+      EXPECT_NEAR(e.observed_order, order, 1e-9);
+      EXPECT_NEAR(e.value, 0.7, 1e-12);
+      EXPECT_NEAR(e.error_estimate, 0.3 * std::pow(h.back(), order), 1e-12);
+    }
+  }
+}
+
+TEST(Levels, ExtrapolationRefusesWhatIsNotConverging) {
+  const std::vector<double> h{0.4, 0.2, 0.1};
+  EXPECT_FALSE(Extrapolate("energy", h, {1.0, 2.0, 1.5}).available);  // the change flips sign
+  EXPECT_FALSE(Extrapolate("energy", h, {1.0, 1.1, 1.3}).available);  // grows: order < 0.1
+  EXPECT_FALSE(Extrapolate("energy", {0.2, 0.1}, {1.0, 1.1}).available);
+  EXPECT_NE(Extrapolate("energy", {0.2, 0.1}, {1.0, 1.1}).reason, "");
+}
+
+// A coarser scene: the same strip on a lattice of twice the spacing, its clamp (ids [0, 1]) still
+// the first two nodes; a circle's spacing doubles; a spring sheet's flexion stiffness falls 16×.
+TEST(Levels, CoarsenedScenesKeepTheSpecimen) {
+  const Scene strip = testing::LoadConfig("configs/fv/cantilever_tip.yaml");
+  const Scene coarse = CoarsenedScene(strip, 4);
+  EXPECT_EQ(coarse.mesh.nodes[0], 21);
+  EXPECT_EQ(coarse.mesh.nodes[1], 1);
+  EXPECT_EQ(coarse.fixed[0].nodes.ids, (std::vector<int>{0, 1}));
+  const Scene disc =
+      CoarsenedScene(testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml"), 2);
+  EXPECT_DOUBLE_EQ(disc.mesh.spacing, 0.02);
+  const Scene sheet = testing::LoadConfig("configs/hard/two_corner_sheet.yaml");
+  const Scene coarse_sheet = CoarsenedScene(sheet, 2);
+  EXPECT_EQ(coarse_sheet.mesh.nodes[0], 16);  // 30 nodes: 29 steps → 14.5 → 15
+  EXPECT_NEAR(coarse_sheet.material.springs.flexion.warp,
+              sheet.material.springs.flexion.warp * std::pow(15.0 / 29.0, 4), 1e-12);
+}
+
+// Interpolating a solved coarse lattice onto the fine one reproduces an affine deformation
+// exactly (bilinear interpolation), also beyond the coarse circle's outline (linear
+// extrapolation), and leaves fixed coordinates alone.
+TEST(Levels, ProlongationIsExactForAnAffineMap) {
+  const Scene fine_scene = testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml",
+                                               {"mesh.spacing=0.02", "obstacles=[]"});
+  const Scene coarse_scene = CoarsenedScene(fine_scene, 2);
+  Model coarse = BuildModel(coarse_scene);
+  Model fine = BuildModel(fine_scene);
+  auto affine = [](const double* x, double* y) {
+    y[0] = 1.1 * x[0] + 0.2 * x[1] + 0.01;
+    y[1] = -0.1 * x[0] + 0.9 * x[1];
+    y[2] = 0.3 * x[0] - 0.4 * x[1] + x[2];
+  };
+  for (int k = 0; k < coarse.num_nodes; ++k) {
+    affine(coarse.initial.data() + 3 * k, coarse.positions.data() + 3 * k);
+  }
+  ProlongPositions(coarse_scene, coarse, fine_scene, &fine);
+  int free_nodes = 0;
+  for (int k = 0; k < fine.num_nodes; ++k) {
+    double expected[3];
+    affine(fine.initial.data() + 3 * k, expected);
+    for (int c = 0; c < 3; ++c) {
+      const double want = fine.fixed[3 * k + c] ? fine.initial[3 * k + c] : expected[c];
+      EXPECT_NEAR(fine.positions[3 * k + c], want, 1e-12) << k << " " << c;
+    }
+    free_nodes += !fine.fixed[3 * k];
+  }
+  EXPECT_GT(free_nodes, 100);
+}
+
+// The refinement study on a case with a known answer. A weightless strip, clamped, with a small
+// tip load P (deflection 7 % of its length: linear theory holds to ~1e-3): its equilibrium
+// energy is −P² ℓ³/(6 EI) with ℓ the free length. The discrete clamp sits at h/2
+// (tests/cantilever_test.cc), so ℓ = L − h/2 and the energy's error is first order in h:
+// E(h) = −P² L³/(6 EI) (1 − 3h/(2L) + O(h²)). Three levels (41, 21, 11 nodes) must give an
+// observed order near 1 and an extrapolated energy near −P² L³/(6 EI), closer than the finest
+// level's own; each level starts from the previous one and all converge to stable minima.
+TEST(Levels, CantileverRefinementHasTheKnownOrderAndLimit) {
+  Scene scene = testing::LoadConfig("configs/fv/cantilever_tip.yaml",
+                                    {"mesh.nodes=[41, 1]", "solver.levels=3"});
+  const double load = 1.6e-5;  // N
+  scene.loads.forces.at(0).value = Eigen::Vector3d(0.0, 0.0, -load);
+  const double length = scene.mesh.size.x();
+  const double ei = scene.material.finite_volume.D_warp * scene.mesh.size.y();
+  const double exact = -load * load * std::pow(length, 3) / (6.0 * ei);
+  Model model = BuildModel(scene);
+  LevelsReport report;
+  const RunResult result = RunLevels(scene, model, "newton", {}, &report);
+  ASSERT_TRUE(result.converged) << result.summary.termination;
+  ASSERT_EQ(report.levels.size(), 3u);
+  EXPECT_EQ(report.levels[0].nodes, 11);
+  EXPECT_EQ(report.levels[2].nodes, 41);
+  for (const LevelRecord& level : report.levels) {
+    EXPECT_TRUE(level.converged && level.stable);
+    EXPECT_FALSE(level.drape_coefficient.has_value());
+    std::printf("h %.5f m: %d iterations, energy %.6e J (exact limit %.6e)\n", level.spacing,
+                level.iterations, level.energy, exact);
+  }
+  ASSERT_EQ(report.extrapolations.size(), 1u);  // no drape coefficient here: the energy
+  const Extrapolation& e = report.extrapolations[0];
+  ASSERT_TRUE(e.available) << e.reason;
+  std::printf("extrapolated %.6e ± %.2e, order %.3f\n", e.value, e.error_estimate,
+              e.observed_order);
+  EXPECT_NEAR(e.observed_order, 1.0, 0.2);
+  const double finest_error = std::abs(report.levels[2].energy - exact);
+  EXPECT_LT(std::abs(e.value - exact), 0.2 * finest_error);
+  EXPECT_NEAR(e.error_estimate, finest_error, 0.3 * finest_error);
+}
+
+// Levels need a lattice to coarsen: located errors at solver.levels otherwise.
+TEST(Levels, UnscalableScenesAreRefusedAtTheKey) {
+  const Scene strip = testing::LoadConfig("configs/fv/cantilever_tip.yaml",
+                                          {"mesh.nodes=[11, 1]", "solver.levels=4"});
+  try {
+    CoarsenedScene(strip, 8);
+    FAIL() << "coarsened 11 nodes 8 times";
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find(":2:15: solver.levels: 4 is too many for mesh.nodes 11"), std::string::npos)
+        << what;
+  }
+  Scene chain = testing::LoadConfig("configs/hard/compressed_chain.yaml", {"solver.levels=2"});
+  EXPECT_THROW(CoarsenedScene(chain, 2), InputError);
+}
+
+}  // namespace
+}  // namespace drape
