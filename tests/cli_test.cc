@@ -215,6 +215,40 @@ TEST_F(CliTest, SolveConvergesAndWritesEveryRequestedFile) {
   EXPECT_EQ(std::count(outcome.out.begin(), outcome.out.end(), '\n'), 1) << outcome.out;
 }
 
+// solver.levels: one summary entry per level (coarsest first), the extrapolation, and the
+// stdout line ending with it (the tip-loaded cantilever: 11, 21 and 41 nodes).
+TEST_F(CliTest, LevelsReportEachLevelAndTheExtrapolation) {
+  const std::string scene = std::string(DRAPE_SOURCE_DIR) + "/configs/fv/cantilever_tip.yaml";
+  const Outcome outcome = Drape({"solve", scene, "--out", out_.string(), "--set",
+                                 "mesh.nodes=[41, 1]", "--set", "solver.levels=3"});
+  ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
+  const YAML::Node summary = Summary(out_);
+  ASSERT_EQ(summary["levels"].size(), 3u);
+  EXPECT_EQ(summary["levels"][0]["nodes"].as<int>(), 11);
+  EXPECT_EQ(summary["levels"][2]["nodes"].as<int>(), 41);
+  EXPECT_EQ(summary["nodes"].as<int>(), 41);
+  for (const auto& level : summary["levels"]) {
+    EXPECT_TRUE(level["converged"].as<bool>());
+    EXPECT_GT(level["iterations"].as<int>(), 0);
+    EXPECT_TRUE(level["drape_coefficient"].IsNull());
+  }
+  const YAML::Node energy = summary["extrapolation"]["energy"];
+  ASSERT_TRUE(energy["available"].as<bool>()) << energy["reason"].as<std::string>("");
+  EXPECT_GT(energy["observed_order"].as<double>(), 0.5);
+  EXPECT_GT(energy["error_estimate"].as<double>(), 0.0);
+  EXPECT_NE(outcome.out.find("3 levels: extrapolated energy"), std::string::npos) << outcome.out;
+}
+
+// A mesh that cannot be coarsened: exit 2, the error located at the key, nothing written.
+TEST_F(CliTest, LevelsOnAChainExitTwoAtTheKey) {
+  const Outcome outcome = Drape({"solve", WriteScene(), "--set", "solver.levels=2"});
+  EXPECT_EQ(outcome.exit_status, 2);
+  EXPECT_TRUE(std::regex_search(
+      outcome.err, std::regex("--set:1:[0-9]+: solver\\.levels: 2 needs a grid or circle mesh")))
+      << outcome.err;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
 TEST_F(CliTest, IterationLimitExitsOneAndStillWritesTheResult) {
   const Outcome outcome = Drape({"solve", WriteScene(), "--set", "solver.max_iterations=1"});
   EXPECT_EQ(outcome.exit_status, 1) << outcome.err;

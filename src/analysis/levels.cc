@@ -425,7 +425,7 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
       record.restarted_flat = true;
       record.iterations = result.summary.iterations;
       record.wall_time_s = result.summary.wall_time_s;
-      current.positions = current.initial;
+      std::copy(current.initial.begin(), current.initial.end(), current.positions.begin());
       result = RunSolve(scenes[k], current, method, on_iteration);
     }
     const LatticeAxes axes = AxesOf(scenes[k].mesh);
