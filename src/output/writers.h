@@ -1,16 +1,20 @@
 // Result files: summary.json, nodes.csv, history.csv, kinetic.csv, mesh.vtk, mesh.obj, profile.csv,
-// drape.png, shadow.png (the pictures drawn by src/output/render.h). Each is written to a temporary name
-// in the output folder and renamed, so no half-written file is ever left.
+// drape.png, shadow.png (the pictures drawn by src/output/render.h). Each is written to a temporary
+// name in the output folder and renamed, so no half-written file is ever left.
 #ifndef DRAPE_SRC_OUTPUT_WRITERS_H_
 #define DRAPE_SRC_OUTPUT_WRITERS_H_
 
 #include <string>
 
 #include "src/model/model.h"
-#include "src/solvers/run.h"
 #include "src/scene/scene.h"
+#include "src/solvers/run.h"
 
 namespace drape {
+
+// Creates `directory` if needed and checks that a file can be written into it (before a solve, so
+// that an unwritable folder costs no solving). Throws std::runtime_error saying why not.
+void CheckOutputWritable(const std::string& directory);
 
 // Writes what scene.output.write asks for into `directory` (created if needed).
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
