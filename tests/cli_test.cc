@@ -292,34 +292,81 @@ TEST_F(CliTest, CheckDescribesTheModelAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out_));
 }
 
-// Ctrl-C: the solver stops at its next iteration, the last iterate is written, marked
-// converged: false, and the exit status is 1. SIGINT is blocked in the child from before it
-// starts, so the signal stays pending until drape installs its handler for the solve: the outcome
-// does not depend on when the signal is sent.
-TEST_F(CliTest, InterruptWritesTheLastIterateAndExitsOne) {
-  const std::string scene = WriteScene();
+// Ctrl-C (SIGINT) and a batch system's SIGTERM (Slurm, `timeout`, `docker stop`): the solver stops
+// at its next iteration, the last iterate is written, marked converged: false and interrupted, and
+// the exit status is 1. The signal is blocked in the child from before it starts, so it stays
+// pending until drape installs its handler for the solve: the outcome does not depend on when the
+// signal is sent. (SIGTERM used to kill the solve with nothing written, exit 143.)
+void ExpectInterruptSavesTheLastIterate(const fs::path& directory, const std::string& scene,
+                                        const fs::path& out, int signal) {
   sigset_t interrupt, previous;
   sigemptyset(&interrupt);
-  sigaddset(&interrupt, SIGINT);
+  sigaddset(&interrupt, signal);
   ASSERT_EQ(sigprocmask(SIG_BLOCK, &interrupt, &previous), 0);
   const pid_t child = fork();
   if (child == 0) {
-    const std::string quiet = (directory_ / "child_output.txt").string();
+    const std::string quiet = (directory / "child_output.txt").string();
     if (!freopen(quiet.c_str(), "w", stdout) || !freopen(quiet.c_str(), "a", stderr)) _exit(100);
     execl(DRAPE_BINARY, DRAPE_BINARY, "solve", scene.c_str(), static_cast<char*>(nullptr));
     _exit(101);
   }
   sigprocmask(SIG_SETMASK, &previous, nullptr);
   ASSERT_GT(child, 0);
-  ASSERT_EQ(kill(child, SIGINT), 0);
+  ASSERT_EQ(kill(child, signal), 0);
   int status = 0;
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFEXITED(status)) << "drape ended by a signal";
-  EXPECT_EQ(WEXITSTATUS(status), 1) << ReadFile(directory_ / "child_output.txt");
-  const YAML::Node summary = Summary(out_);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << ReadFile(directory / "child_output.txt");
+  const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
   EXPECT_FALSE(summary["converged"].as<bool>());
-  EXPECT_NE(summary["termination"].as<std::string>().find("interrupt"), std::string::npos);
-  EXPECT_TRUE(fs::exists(out_ / "nodes.csv"));
+  EXPECT_TRUE(summary["interrupted"].as<bool>());
+  const std::string name = signal == SIGTERM ? "SIGTERM" : "SIGINT";
+  EXPECT_NE(summary["termination"].as<std::string>().find("interrupted (" + name + ")"),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "nodes.csv"));
+}
+
+TEST_F(CliTest, InterruptWritesTheLastIterateAndExitsOne) {
+  ExpectInterruptSavesTheLastIterate(directory_, WriteScene(), out_, SIGINT);
+}
+
+TEST_F(CliTest, SigtermWritesTheLastIterateAndExitsOneLikeSigint) {
+  ExpectInterruptSavesTheLastIterate(directory_, WriteScene(), out_, SIGTERM);
+}
+
+// The output folder is checked before anything is built or solved: with an unwritable --out and
+// a scene whose model cannot be built, the folder is what is reported (before: the model's error,
+// i.e. it was found only after building and solving).
+TEST_F(CliTest, UnwritableOutputFolderIsFoundBeforeTheModelIsBuilt) {
+  const std::string scene = WriteScene({{"ids: [4]", "ids: [40]"}});  // out of range: a model error
+  const Outcome unbuildable = Drape({"solve", scene});
+  ASSERT_EQ(unbuildable.exit_status, 2);
+  EXPECT_EQ(unbuildable.err.find("cannot write"), std::string::npos) << unbuildable.err;
+  EXPECT_FALSE(fs::exists(out_)) << "a failed run leaves no folder behind";
+  const Outcome outcome = Drape({"solve", scene, "--out", "/proc/nope"});
+  EXPECT_EQ(outcome.exit_status, 2);
+  EXPECT_NE(outcome.err.find("cannot write the results"), std::string::npos) << outcome.err;
+  EXPECT_EQ(outcome.out, "");
+}
+
+// Stability is on the stdout line of every run; a run that converges to a saddle exits 3 and says
+// "saddle" with the eigenvalue (the flat curtain of Puiseux's paper, solved by his fixed point,
+// which has no curvature information: it used to exit 0).
+TEST_F(CliTest, StabilityIsOnTheResultLineAndASaddleExitsThree) {
+  const Outcome minimum = Drape({"solve", WriteScene()});
+  ASSERT_EQ(minimum.exit_status, 0) << minimum.err;
+  EXPECT_NE(minimum.out.find("stable minimum"), std::string::npos) << minimum.out;
+  EXPECT_FALSE(Summary(out_)["saddle"].as<bool>());
+
+  const Outcome saddle =
+      Drape({"solve", std::string(DRAPE_SOURCE_DIR) + "/configs/puiseux/curtain_3d.yaml", "--out",
+             (directory_ / "curtain").string()});
+  EXPECT_EQ(saddle.exit_status, 3) << saddle.out << saddle.err;
+  EXPECT_NE(saddle.out.find("converged yes"), std::string::npos) << saddle.out;
+  EXPECT_NE(saddle.out.find("saddle: most negative eigenvalue -"), std::string::npos) << saddle.out;
+  const YAML::Node summary = Summary(directory_ / "curtain");
+  EXPECT_TRUE(summary["saddle"].as<bool>());
+  EXPECT_LT(summary["min_eigenvalue"].as<double>(), 0.0);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "costs/constant_force_potential.h"
 #include "costs/spring_stretch.h"
+#include "src/model/contact.h"
 
 namespace drape {
 namespace {
@@ -85,6 +86,52 @@ TEST(Certificate, NotEvaluableWhereTheEnergyIsNot) {
   const Certificate certificate = ComputeCertificate(model, model.positions.data());
   EXPECT_FALSE(certificate.evaluable);
   EXPECT_FALSE(certificate.relative_residual <= 1.0);
+}
+
+// Issue 14, item 2: a state that has run away, is not finite, or has a node inside an obstacle's
+// body is not certified, whatever its residual.
+TEST(Certificate, RefusesAStateThatHasRunAway) {
+  Model model = HangingMass(0.1);
+  model.size = 0.1;
+  EXPECT_EQ(ComputeCertificate(model, model.positions.data()).unsound, "");
+  model.positions[5] = -2.7e11;  // where newton's first long steps took a sheet past a pin
+  const Certificate certificate = ComputeCertificate(model, model.positions.data());
+  EXPECT_NE(certificate.unsound.find("run away"), std::string::npos) << certificate.unsound;
+}
+
+TEST(Certificate, RefusesAStateThatIsNotFinite) {
+  Model model = HangingMass(0.1);
+  model.positions[3] = INFINITY;
+  EXPECT_NE(ComputeCertificate(model, model.positions.data()).unsound, "");
+}
+
+TEST(Certificate, RefusesANodeInsideAnObstacle) {
+  Model model = HangingMass(0.1);
+  ObstacleSpec floor;
+  floor.kind = ObstacleSpec::Kind::kPlane;
+  floor.center = {0, 0, -0.05};
+  floor.normal = {0, 0, 1};
+  model.obstacles = {floor};
+  const Certificate certificate = ComputeCertificate(model, model.positions.data());
+  EXPECT_NE(certificate.unsound.find("inside obstacle 1"), std::string::npos)
+      << certificate.unsound;
+}
+
+// Issue 14, item 4: reactions + contact (+ constraint) = −(weight + loads), checked.
+TEST(Certificate, BalanceCountsReactionsAndTheGivenConstraintForces) {
+  Model model = HangingMass(kRest + kMass * kGravity / kStiffness);
+  Certificate certificate = ComputeCertificate(model, model.positions.data());
+  EXPECT_TRUE(certificate.balanced) << certificate.balance_error;
+  EXPECT_NEAR(certificate.applied_sum.z(), -2 * kMass * kGravity, 1e-12);
+  // A constraint holding the lower node (a force on it equal to its weight): the spring is then
+  // too long, and the support carries one weight less.
+  const std::vector<double> holding = {0, 0, 0, 0, 0, kMass * kGravity};
+  model.positions[5] = -kRest;
+  certificate = ComputeCertificate(model, model.positions.data(), &holding);
+  EXPECT_LT(certificate.relative_residual, 1e-12);
+  EXPECT_NEAR(certificate.reaction_sum.z(), kMass * kGravity, 1e-12);
+  EXPECT_NEAR(certificate.constraint_sum.z(), kMass * kGravity, 1e-12);
+  EXPECT_TRUE(certificate.balanced) << certificate.balance_error;
 }
 
 }  // namespace

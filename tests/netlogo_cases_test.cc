@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "src/analysis/drape_analysis.h"
-#include "src/solvers/run.h"
 #include "src/model/stretch_limit.h"
+#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -58,14 +58,12 @@ TEST_P(NetlogoCoarse, ExplicitEulerAndNewtonAgree) {
   ASSERT_TRUE(euler.result.converged) << euler.result.summary.termination;
   ASSERT_TRUE(newton.result.converged) << newton.result.summary.termination;
   const double e1 = euler.result.certificate.energy, e2 = newton.result.certificate.energy;
-  // The damped motion settles in a minimum. From the symmetric flat start newton can stop on a
-  // symmetric saddle instead (the coarse arc: an umbrella held open by compressed rings); its
-  // certificate must then say so, and the motion's rest point lies lower.
-  if (std::abs(e1 - e2) > 1e-4 * std::abs(e2)) {
-    EXPECT_FALSE(c.unique_shape);
-    EXPECT_FALSE(newton.result.stability.stable);
-    EXPECT_LT(e1, e2);
-  }
+  // From the symmetric flat start newton used to stop on a symmetric saddle (the coarse arc: an
+  // umbrella held open by compressed rings); now it leaves it along the negative curvature and
+  // ends at a stable minimum (issue 14). The triangular and arc discs fold in more than one way,
+  // so the two methods may settle in different minima there.
+  EXPECT_TRUE(newton.result.stability.stable) << newton.result.stability.min_eigenvalue;
+  if (std::abs(e1 - e2) > 1e-4 * std::abs(e2)) EXPECT_FALSE(c.unique_shape);
   if (!c.unique_shape) return;
   double largest = 0.0;
   for (int node = 0; node < euler.model.num_nodes; ++node) {

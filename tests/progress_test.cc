@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
+#include <string>
 
 namespace drape {
 namespace {
@@ -43,6 +45,24 @@ TEST(ProgressLine, ClearErasesTheLineAndOnlyIfShown) {
   progress.Clear();
   const std::string erased = out.str().substr(width + 1);
   EXPECT_EQ(erased, "\r" + std::string(width, ' ') + "\r");
+}
+
+// Without a terminal (issue 14, item 6): a plain line of its own every interval of solving time,
+// nothing before the first interval has passed, and nothing to erase.
+TEST(ProgressLine, PlainModePrintsALineEveryIntervalOfSolvingTime) {
+  std::ostringstream out;
+  ProgressLine progress(out, 5.0, /*plain=*/true);
+  IterationRecord record;
+  for (double t : {0.0, 1.0, 4.9, 5.1, 6.0, 9.0, 10.2, 10.3, 31.0}) {
+    record.time_s = t;
+    ++record.iteration;
+    progress.Update(record);
+  }
+  progress.Clear();
+  const std::string text = out.str();
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;  // at 5.1, 10.2 and 31.0
+  EXPECT_EQ(text.find('\r'), std::string::npos);
+  EXPECT_NE(text.find("iteration 4 "), std::string::npos) << text;
 }
 
 }  // namespace

@@ -96,8 +96,13 @@ INSTANTIATE_TEST_SUITE_P(
     Static, PuiseuxUniqueCase,
     ::testing::Values(UniqueCase{"piece_8x8_uniform_2d", {}}, UniqueCase{"piece_15x15_ramp_2d", {}},
                       UniqueCase{"paraglider_fixed_trailing_edge", {}},
-                      UniqueCase{"paraglider_free_trailing_edge", {}}, UniqueCase{"curtain_3d", {}},
-                      UniqueCase{"pulled_border_3d", {}}, UniqueCase{"pulled_corner_3d", {}},
+                      UniqueCase{"paraglider_free_trailing_edge", {}},
+                      // Flat 3-D pieces loaded in their plane: the planar equilibrium the paper
+                      // computes is a saddle (the compressed parts buckle out of the plane).
+                      // Newton is kept on it for the comparison; by default it leaves it.
+                      UniqueCase{"curtain_3d", {"solver.newton.escape_saddles=0"}},
+                      UniqueCase{"pulled_border_3d", {"solver.newton.escape_saddles=0"}},
+                      UniqueCase{"pulled_corner_3d", {"solver.newton.escape_saddles=0"}},
                       UniqueCase{"hammock_3d", {"mesh.nodes=[7,7]"}}),
     [](const ::testing::TestParamInfo<UniqueCase>& info) { return info.param.name; });
 

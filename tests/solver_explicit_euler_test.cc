@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
-#include "src/solvers/run.h"
+#include <algorithm>
+#include <cmath>
+
 #include "src/model/stretch_limit.h"
+#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -93,6 +96,27 @@ TEST(ExplicitEuler, StopsWhenProvotHoldsTheTriangularDiscStillOutOfEquilibrium) 
       << result.summary.termination;
   EXPECT_LT(result.summary.iterations, scene.solver.max_iterations);
   EXPECT_LE(MaxStretchRatio(model, model.positions.data()), 1.1 * (1.0 + 1e-12));
+}
+
+// Issue 14, item 5: with Provot's constraint the equilibrium is that of the constrained problem:
+// the constraint's forces count in the residual and in the reactions, which then carry the whole
+// weight (before: converged no, 0.198 N of reactions for 0.4905 N of yarn).
+TEST(ExplicitEuler, ProvotLimitedYarnIsAConstrainedEquilibriumWithTheWholeWeightInTheReactions) {
+  const auto solved = testing::SolveConfig("configs/netlogo/yarn_limit.yaml", "explicit-euler");
+  const RunResult& result = solved.result;
+  EXPECT_TRUE(result.converged) << result.summary.termination;
+  EXPECT_EQ(result.summary.constraint_forces.size(), solved.model.positions.size());
+  double weight = 0.0;
+  for (int node = 0; node < solved.model.num_nodes; ++node) {
+    weight -= solved.model.applied[3 * node + 2];
+  }
+  EXPECT_NEAR(weight, 0.4905, 1e-12);
+  EXPECT_NEAR(result.certificate.reaction_sum.z(), weight, 1e-6 * weight);
+  EXPECT_TRUE(result.certificate.balanced) << result.certificate.balance_error;
+  // Some spring is held at its limit: the constraint does carry force.
+  double largest = 0.0;
+  for (double f : result.summary.constraint_forces) largest = std::max(largest, std::abs(f));
+  EXPECT_GT(largest, 0.01);
 }
 
 }  // namespace

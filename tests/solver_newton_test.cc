@@ -4,9 +4,10 @@
 
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
-#include "src/scene/scene_loader.h"
-#include "src/solvers/solvers.h"
 #include "src/numerics/stability.h"
+#include "src/scene/scene_loader.h"
+#include "src/solvers/run.h"
+#include "src/solvers/solvers.h"
 #include "tests/hand_built_models.h"
 
 namespace drape {
@@ -97,6 +98,32 @@ TEST(Newton, AModelWithoutFreeCoordinatesIsEvaluatedNotSolved) {
   const SolverSummary summary = SolveNewton(model, 1e-8);
   EXPECT_EQ(summary.iterations, 0);
   ASSERT_EQ(summary.history.size(), 1u);
+}
+
+// Issue 14, item 1: a saddle is not an answer. On Rusinko & Swan's arc disc on a pin newton used
+// to stop after 10 iterations on the flat disc balanced on the pin (a saddle, most negative
+// eigenvalue −1.24 N/m, energy −0.00431 J, drape ratio 0.94) and exit 0; now it leaves it along
+// the negative curvature and finds the drape (−0.01387 J).
+TEST(Newton, LeavesTheSaddleOfTheFlatDiscOnAPin) {
+  const Scene scene = LoadScene(std::string(DRAPE_SOURCE_DIR) + "/configs/netlogo/disc_arc.yaml");
+  Model model = BuildModel(scene);
+  const RunResult result = RunSolve(scene, model, "newton");
+  EXPECT_TRUE(result.converged) << result.summary.termination;
+  EXPECT_TRUE(result.stability.stable) << result.stability.min_eigenvalue;
+  EXPECT_FALSE(result.Saddle());
+  EXPECT_LT(result.certificate.energy, -0.0138);
+  EXPECT_GE(result.summary.statistics.at("saddle_escapes"), 1.0);
+}
+
+// With escape_saddles: 0 it stops there, and the result says it is a saddle.
+TEST(Newton, WithoutEscapeTheSaddleIsReportedAsOne) {
+  const Scene scene = LoadScene(std::string(DRAPE_SOURCE_DIR) + "/configs/netlogo/disc_arc.yaml",
+                                {"solver.newton.escape_saddles=0"});
+  Model model = BuildModel(scene);
+  const RunResult result = RunSolve(scene, model, "newton");
+  EXPECT_TRUE(result.converged) << result.summary.termination;
+  EXPECT_TRUE(result.Saddle());
+  EXPECT_LT(result.stability.min_eigenvalue, -0.1);
 }
 
 }  // namespace

@@ -175,11 +175,11 @@ TEST_F(WritersTest, NodesCsvHasOneFullPrecisionRowPerNode) {
 
   const auto lines = Lines(Path("nodes.csv"));
   ASSERT_EQ(lines.size(), 1u + model.num_nodes);
-  EXPECT_EQ(lines[0], "id,i,j,x,y,z,fixed,fx,fy,fz");
+  EXPECT_EQ(lines[0], "id,i,j,x,y,z,fixed,fx,fy,fz,contact_fx,contact_fy,contact_fz");
   const std::vector<std::string> letters = {"z", "", "xyz", "xyz"};
   for (int node = 0; node < model.num_nodes; ++node) {
     const auto fields = Fields(lines[node + 1]);
-    ASSERT_EQ(fields.size(), 10u) << lines[node + 1];
+    ASSERT_EQ(fields.size(), 13u) << lines[node + 1];
     EXPECT_EQ(std::stoi(fields[0]), node);
     EXPECT_EQ(std::stoi(fields[1]), model.grid_index[node][0]);
     EXPECT_EQ(std::stoi(fields[2]), model.grid_index[node][1]);

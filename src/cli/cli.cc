@@ -55,8 +55,10 @@ constexpr char kHelp[] =
 
 constexpr char kExitStatus[] =
     "\n"
-    "exit status: 0 converged; 1 ran but did not reach the tolerance (results written,\n"
-    "converged: false); 2 bad input or usage (nothing written).\n";
+    "exit status: 0 converged to a stable minimum; 1 ran but did not reach the tolerance\n"
+    "(results written, converged: false; also after SIGINT or SIGTERM, which save the last\n"
+    "iterate); 2 bad input, bad usage or an unwritable output folder (nothing written);\n"
+    "3 converged to a saddle, not a minimum (results written, saddle: true).\n";
 
 // Bad usage of the command itself (not of the scene): the message and the usage lines.
 class UsageError : public std::runtime_error {
@@ -141,24 +143,47 @@ std::string OutputDirectory(const Scene& scene) {
   return scene.output.directory.empty() ? "out/" + scene.name : scene.output.directory;
 }
 
-// Lets a Ctrl-C reach the solver's handler even if the parent process had blocked SIGINT (a
-// blocked signal stays pending until here, so none sent before the solve is lost).
+// Lets a Ctrl-C (SIGINT) or a batch system's SIGTERM reach the solver's handler even if the parent
+// process had blocked it (a blocked signal stays pending until here, so none sent before the solve
+// is lost): the solve stops at the next iteration and its last iterate is written, interrupted.
 void EnableInterrupt() {
   InstallInterruptHandler();
   sigset_t interrupt;
   sigemptyset(&interrupt);
   sigaddset(&interrupt, SIGINT);
+  sigaddset(&interrupt, SIGTERM);
   pthread_sigmask(SIG_UNBLOCK, &interrupt, nullptr);
+}
+
+// What the certificate says of the state: a stable minimum, a saddle (with the most negative
+// eigenvalue of the free Hessian), or why it cannot be certified.
+std::string StabilityText(const RunResult& result) {
+  if (!result.certificate.unsound.empty()) return "not certified: " + result.certificate.unsound;
+  const Stability& stability = result.stability;
+  if (!stability.computed) return "stability not computed";
+  if (stability.stable) return "stable minimum";
+  char text[120];
+  std::snprintf(text, sizeof text, "saddle: most negative eigenvalue %.3g N/m",
+                stability.min_eigenvalue);
+  return text;
 }
 
 std::string ResultLine(const RunResult& result, const std::string& directory) {
   const SolverSummary& summary = result.summary;
-  char text[160];
+  char text[200];
   std::snprintf(text, sizeof text,
-                "%s: converged %s, %d iterations, %.3g s, relative residual %.3g",
+                "%s: converged %s, %d iterations, %.3g s, relative residual %.3g, ",
                 summary.solver.c_str(), result.converged ? "yes" : "no", summary.iterations,
                 summary.wall_time_s, result.certificate.relative_residual);
-  return std::string(text) + " (" + summary.termination + "); results in " + directory;
+  return std::string(text) + StabilityText(result) + " (" + summary.termination + "); results in " +
+         directory;
+}
+
+// 0 converged to a stable minimum (or stability not computed), 3 converged to a saddle, 1 not
+// converged.
+int ExitStatus(const RunResult& result) {
+  if (!result.converged) return kExitNotConverged;
+  return result.Saddle() ? kExitSaddle : kExitConverged;
 }
 
 // The stdout summary of a `solver.levels` run: the extrapolated drape coefficient (else energy)
@@ -187,11 +212,19 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
   if (arguments.solver) scene.solver.method = *arguments.solver;
   if (arguments.out) scene.output.directory = *arguments.out;
   RequireKnownSolver(scene);
+  const std::string directory = OutputDirectory(scene);
+  try {  // before the model is built and solved: an unwritable folder costs nothing
+    CheckOutputWritable(directory);
+  } catch (const std::exception& error) {
+    err << "drape: cannot write the results: " << error.what() << "\n";
+    return kExitBadInput;
+  }
   Model model = BuildModel(scene);
 
-  ProgressLine progress(err);
+  const bool plain = !options.show_progress && options.plain_progress_interval_s > 0.0;
+  ProgressLine progress(err, plain ? options.plain_progress_interval_s : 0.2, plain);
   std::function<bool(const IterationRecord&)> on_iteration;
-  if (options.show_progress) {
+  if (options.show_progress || plain) {
     on_iteration = [&progress](const IterationRecord& record) { return progress.Update(record); };
   }
   EnableInterrupt();
@@ -202,7 +235,6 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
                                : RunSolve(scene, model, scene.solver.method, on_iteration);
   progress.Clear();
 
-  const std::string directory = OutputDirectory(scene);
   try {
     WriteOutputs(scene, model, result, directory, multilevel ? &levels : nullptr);
   } catch (const std::exception& error) {
@@ -210,7 +242,7 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     return kExitBadInput;
   }
   out << ResultLine(result, directory) << (multilevel ? LevelsLine(levels) : "") << std::endl;
-  return result.converged ? kExitConverged : kExitNotConverged;
+  return ExitStatus(result);
 }
 
 int Check(const Arguments& arguments, std::ostream& out) {

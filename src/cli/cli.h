@@ -14,11 +14,14 @@ enum ExitStatus {
   kExitConverged = 0,     // solved to the tolerance (or another subcommand succeeded)
   kExitNotConverged = 1,  // ran, results written, but the tolerance was not reached
   kExitBadInput = 2,      // bad scene, bad usage, or results that could not be written
+  kExitSaddle = 3,        // converged, results written, but not a stable minimum (a saddle)
 };
 
 struct CommandOptions {
   // Show the one-line progress report on `err` (the caller decides: stderr is a terminal).
   bool show_progress = false;
+  // Without a terminal: print a plain progress line on `err` every this many seconds (0: never).
+  double plain_progress_interval_s = 0.0;
 };
 
 // Runs `drape args...` (args without the program name): prints results on `out`, errors, usage

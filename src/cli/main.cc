@@ -11,5 +11,6 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   drape::CommandOptions options;
   options.show_progress = ::isatty(STDERR_FILENO) == 1;
+  if (!options.show_progress) options.plain_progress_interval_s = 5.0;  // batch jobs, logs
   return drape::RunCommand(args, std::cout, std::cerr, options);
 }

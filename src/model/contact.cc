@@ -93,19 +93,25 @@ void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSp
                      Model* model) {
   CheckContactInput(obstacles, contact);
   if (obstacles.empty()) return;
+  model->obstacles = obstacles;
+  model->contact = contact;
   const double stiffness = ContactStiffness(contact, *model);
   bool anchored = false;
   for (int k = 0; k < model->num_nodes; ++k) anchored = anchored || FullyFixed(*model, k);
   const double reach = kReachFactor * model->size;
-  // Least-squares shift of the potential (src/model/term.h): the energy at a full clearance's depth.
+  // Least-squares shift of the potential (src/model/term.h): the energy at a full clearance's
+  // depth.
   const double shift = stiffness * std::pow(contact.thickness, 3) / 3.0;
-  for (const ObstacleSpec& obstacle : obstacles) {
+  for (size_t index = 0; index < obstacles.size(); ++index) {
+    const ObstacleSpec& obstacle = obstacles[index];
     const std::string type = std::string(KindName(obstacle.kind)) + "_contact";
     for (int k = 0; k < model->num_nodes; ++k) {
       if (FullyFixed(*model, k)) continue;
       const double* x = model->positions.data() + 3 * k;
       if (anchored && ObstacleDistance(obstacle, x) - contact.thickness > reach) continue;
       WithFunctor(obstacle, contact.thickness, stiffness, [&](const auto& functor) {
+        model->contact_terms.push_back(
+            {static_cast<int>(model->terms.size()), static_cast<int>(index)});
         model->terms.push_back(MakeTerm(type, {k}, functor, shift));
         return 0;
       });
@@ -140,6 +146,68 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
     report.max_penetration_fraction = report.max_penetration / contact.thickness;
   }
   return report;
+}
+
+namespace {
+
+// Signed distance to `obstacle` at from + s (to − from).
+double DistanceAlong(const ObstacleSpec& obstacle, const double* from, const double* to, double s) {
+  const double x[3] = {from[0] + s * (to[0] - from[0]), from[1] + s * (to[1] - from[1]),
+                       from[2] + s * (to[2] - from[2])};
+  return ObstacleDistance(obstacle, x);
+}
+
+// The step-limit rule for one node and obstacle (see NodeSafeFraction).
+double SafeFractionFor(const ObstacleSpec& obstacle, double thickness, const double* from,
+                       const double* to) {
+  const double start = ObstacleDistance(obstacle, from);
+  if (!(start > 0.0)) return 1.0;  // already inside (or on) the body: nothing to guard
+  const double floor = 0.5 * std::min(start, thickness);
+  const double length =
+      std::sqrt((to[0] - from[0]) * (to[0] - from[0]) + (to[1] - from[1]) * (to[1] - from[1]) +
+                (to[2] - from[2]) * (to[2] - from[2]));
+  if (start - length >= floor) return 1.0;  // the distance is 1-Lipschitz: cannot get there
+  if (!std::isfinite(length)) return 0.0;
+  // d(s) is convex along the segment (every obstacle is a convex body): golden-section search
+  // for its minimum, then bisection for where it first falls to the floor.
+  constexpr double kGolden = 0.6180339887498949;
+  double low = 0.0, high = 1.0;
+  for (int k = 0; k < 60 && high - low > 1e-12; ++k) {
+    const double a = high - kGolden * (high - low), b = low + kGolden * (high - low);
+    if (DistanceAlong(obstacle, from, to, a) <= DistanceAlong(obstacle, from, to, b)) {
+      high = b;
+    } else {
+      low = a;
+    }
+  }
+  const double lowest = 0.5 * (low + high);
+  if (DistanceAlong(obstacle, from, to, lowest) >= floor) return 1.0;
+  // d falls from start ≥ 2 floor at s = 0 to below the floor at `lowest`, monotonically.
+  double safe = 0.0, unsafe = lowest;
+  for (int k = 0; k < 60 && unsafe - safe > 1e-12; ++k) {
+    const double middle = 0.5 * (safe + unsafe);
+    (DistanceAlong(obstacle, from, to, middle) >= floor ? safe : unsafe) = middle;
+  }
+  return safe;
+}
+
+}  // namespace
+
+double NodeSafeFraction(const Model& model, const double* from, const double* to) {
+  double fraction = 1.0;
+  for (const ObstacleSpec& obstacle : model.obstacles) {
+    fraction = std::min(fraction, SafeFractionFor(obstacle, model.contact.thickness, from, to));
+  }
+  return fraction;
+}
+
+double ObstacleSafeFraction(const Model& model, const double* from, const double* to) {
+  if (model.obstacles.empty()) return 1.0;
+  double fraction = 1.0;
+  for (int node = 0; node < model.num_nodes; ++node) {
+    fraction = std::min(fraction, NodeSafeFraction(model, from + 3 * node, to + 3 * node));
+  }
+  return fraction;
 }
 
 }  // namespace drape

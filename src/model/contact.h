@@ -56,6 +56,16 @@ double ObstacleDistance(const ObstacleSpec& obstacle, const double* x);
 ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
                              const Model& model, const double* positions);
 
+// The step limit that keeps nodes from passing through obstacles between two iterates (thin ones
+// too: a pin is a point, a disk has no thickness, so a long step can jump over them). A node that
+// starts outside an obstacle at distance d₀ from its surface must keep, all along its straight
+// move, at least half of min(d₀, contact.thickness) from it. NodeSafeFraction: the largest
+// s ∈ [0, 1] such that the move of one node from `from` to from + s (to − from) (3 doubles each)
+// keeps that for every obstacle of the model; ObstacleSafeFraction: the same for all nodes at once
+// (3 per node). 1 when the model has no obstacles.
+double NodeSafeFraction(const Model& model, const double* from, const double* to);
+double ObstacleSafeFraction(const Model& model, const double* from, const double* to);
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_MODEL_CONTACT_H_

@@ -2,6 +2,9 @@
 
 #include <cassert>
 #include <cmath>
+#include <cstdio>
+
+#include "src/model/contact.h"
 
 namespace drape {
 
@@ -77,15 +80,110 @@ double RelativeResidual(const Model& model, const std::vector<double>& gradient)
   return FreeForceNorm(model, gradient) / ReferenceForce(model, gradient);
 }
 
-Certificate ComputeCertificate(const Model& model, const double* positions) {
+namespace {
+
+// −∇ of the contact terms per node, in total and per obstacle.
+void AddContactForces(const Model& model, const double* positions, Certificate* certificate) {
+  if (model.contact_terms.empty()) return;
+  certificate->contact_forces.assign(model.num_dofs(), 0.0);
+  certificate->contact_sum_by_obstacle.assign(model.obstacles.size(), Eigen::Vector3d::Zero());
+  double local_gradient[3 * 32];
+  for (const auto& [term_index, obstacle] : model.contact_terms) {
+    const Term& term = *model.terms[term_index];
+    double energy = 0.0;
+    if (!term.EnergyGradient(positions, &energy, local_gradient)) continue;
+    const auto& nodes = term.nodes();
+    for (size_t a = 0; a < nodes.size(); ++a) {
+      for (int c = 0; c < 3; ++c) {
+        certificate->contact_forces[3 * nodes[a] + c] -= local_gradient[3 * a + c];
+        certificate->contact_sum_by_obstacle[obstacle][c] -= local_gradient[3 * a + c];
+        certificate->contact_sum[c] -= local_gradient[3 * a + c];
+      }
+    }
+  }
+}
+
+// Empty if the state can be certified; else what is wrong with it.
+std::string StateProblem(const Model& model, const double* positions) {
+  for (int k = 0; k < model.num_dofs(); ++k) {
+    if (!std::isfinite(positions[k])) return "positions not finite";
+  }
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  const bool started = static_cast<int>(model.initial.size()) == model.num_dofs();
+  const double* start = started ? model.initial.data() : positions;
+  for (int node = 0; node < model.num_nodes; ++node) centre += Eigen::Vector3d(start + 3 * node);
+  if (model.num_nodes > 0) centre /= model.num_nodes;
+  double extent = model.size > 0.0 ? model.size : 1.0;
+  for (int node = 0; node < model.num_nodes; ++node) {
+    extent = std::max(extent, (Eigen::Vector3d(start + 3 * node) - centre).norm());
+  }
+  for (int node = 0; node < model.num_nodes; ++node) {
+    const double distance = (Eigen::Vector3d(positions + 3 * node) - centre).norm();
+    if (distance > kRunawayFactor * extent) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "run away: node %d is %.3g m from where the fabric started (more than %g x "
+                    "its size)",
+                    node, distance, kRunawayFactor);
+      return text;
+    }
+  }
+  for (int node = 0; node < model.num_nodes; ++node) {
+    for (size_t o = 0; o < model.obstacles.size(); ++o) {
+      const double distance = ObstacleDistance(model.obstacles[o], positions + 3 * node);
+      if (distance < 0.0) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "node %d is inside obstacle %zu (%.3g m below its surface, beyond the "
+                      "clearance layer)",
+                      node, o + 1, -distance);
+        return text;
+      }
+    }
+  }
+  return "";
+}
+
+void CheckBalance(const Model& model, Certificate* certificate) {
+  for (int node = 0; node < model.num_nodes; ++node) {
+    for (int c = 0; c < 3; ++c) certificate->applied_sum[c] += model.applied[3 * node + c];
+  }
+  const Eigen::Vector3d total = certificate->reaction_sum + certificate->contact_sum +
+                                certificate->constraint_sum + certificate->applied_sum;
+  certificate->balance_error = total.norm() / certificate->reference_force;
+  int free_nodes = 0;
+  for (int node = 0; node < model.num_nodes; ++node) {
+    if (!model.fixed[3 * node] || !model.fixed[3 * node + 1] || !model.fixed[3 * node + 2]) {
+      ++free_nodes;
+    }
+  }
+  const double bound = std::sqrt(std::max(free_nodes, 1)) * certificate->relative_residual;
+  certificate->balanced = certificate->balance_error <= 1.01 * bound + 1e-9;
+}
+
+}  // namespace
+
+Certificate ComputeCertificate(const Model& model, const double* positions,
+                               const std::vector<double>* constraint_forces) {
   Certificate certificate;
+  certificate.unsound = StateProblem(model, positions);
   std::vector<double> gradient;
   certificate.evaluable =
       EvaluateEnergy(model, positions, &certificate.energy, &gradient, &certificate.energy_by_type);
   if (!certificate.evaluable) {
     certificate.relative_residual = INFINITY;
     certificate.max_node_force = INFINITY;
+    certificate.balance_error = INFINITY;
+    if (certificate.unsound.empty()) certificate.unsound = "energy or forces not finite";
     return certificate;
+  }
+  // A constraint force F_c on a node adds to the model's −∇E: the residual is −(∇E − F_c).
+  if (constraint_forces) {
+    assert(static_cast<int>(constraint_forces->size()) == model.num_dofs());
+    for (int k = 0; k < model.num_dofs(); ++k) {
+      gradient[k] -= (*constraint_forces)[k];
+      certificate.constraint_sum[k % 3] += (*constraint_forces)[k];
+    }
   }
   certificate.reference_force = ReferenceForce(model, gradient);
   certificate.relative_residual = RelativeResidual(model, gradient);
@@ -105,6 +203,8 @@ Certificate ComputeCertificate(const Model& model, const double* positions) {
     }
     certificate.max_node_force = std::max(certificate.max_node_force, std::sqrt(free_squared));
   }
+  AddContactForces(model, positions, &certificate);
+  CheckBalance(model, &certificate);
   return certificate;
 }
 

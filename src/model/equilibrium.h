@@ -50,8 +50,29 @@ struct Certificate {
   double reference_force = 0.0;     // N
   std::vector<double> node_forces;  // 3 per node: reaction at fixed dofs, residual at free ones
   Eigen::Vector3d reaction_sum = Eigen::Vector3d::Zero();  // N, total force of the supports
+  // Contact: the force of the obstacles on each node (3 per node, −∇ of the contact terms; empty
+  // without obstacles), their total, and the total per obstacle (in the scene's order), N.
+  std::vector<double> contact_forces;
+  Eigen::Vector3d contact_sum = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> contact_sum_by_obstacle;
+  // Constraint forces given to ComputeCertificate (Provot's), in total, N.
+  Eigen::Vector3d constraint_sum = Eigen::Vector3d::Zero();
+  // Balance of the whole fabric: |reactions + contact + constraint + weight and loads| over the
+  // reference force. At equilibrium it is at most √(free nodes) × the relative residual (the free
+  // residual forces are all that is left), up to rounding; `balanced` says whether it is.
+  Eigen::Vector3d applied_sum = Eigen::Vector3d::Zero();  // N, weight + loads
+  double balance_error = 0.0;
+  bool balanced = false;
+  // Why the state cannot be certified, whatever its residual (empty if it can): not finite, a node
+  // inside an obstacle's body (beyond the clearance layer), or run away (a node farther than
+  // kRunawayFactor × the scene's size from where the fabric started).
+  std::string unsound;
 };
-Certificate ComputeCertificate(const Model& model, const double* positions);
+constexpr double kRunawayFactor = 1e3;
+// `constraint_forces` (3 per node, N), if given: forces that hold the fabric besides the energy's
+// (Provot's stretch-limit constraint); they count in the residual and the reactions.
+Certificate ComputeCertificate(const Model& model, const double* positions,
+                               const std::vector<double>* constraint_forces = nullptr);
 
 }  // namespace drape
 

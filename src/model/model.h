@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "src/scene/scene.h"
 #include "src/model/term.h"
+#include "src/scene/scene.h"
 
 namespace drape {
 
@@ -33,6 +33,12 @@ struct Model {
   // material.springs.stretch_limit (maximum stretch ratio), 0 when the scene sets none; the
   // explicit-euler solver enforces it with Provot's constraint (src/model/stretch_limit.h).
   double stretch_limit = 0.0;
+  // The scene's obstacles and contact settings (src/model/contact.h), and for each contact term
+  // {its index in `terms`, its obstacle's index in `obstacles`}: for the step limit, the contact
+  // forces and the certificate.
+  std::vector<ObstacleSpec> obstacles;
+  ContactSpec contact;
+  std::vector<std::array<int, 2>> contact_terms;
 
   int num_dofs() const { return 3 * num_nodes; }
   int num_free_dofs() const;

@@ -97,12 +97,22 @@ void AddDrapeMembers(const DrapeAnalysis& analysis,
                                    1));
 }
 
-// How deep the fabric sits in the obstacles' clearance layer (the contact penalty's accuracy).
-void AddContactMembers(const Scene& scene, const Model& model,
+std::string JsonVector(const Eigen::Vector3d& v) {
+  return "[" + JsonNumber(v.x()) + ", " + JsonNumber(v.y()) + ", " + JsonNumber(v.z()) + "]";
+}
+
+// How deep the fabric sits in the obstacles' clearance layer (the contact penalty's accuracy), and
+// the force the obstacles exert on it, in total and per obstacle (in the scene's order), N.
+void AddContactMembers(const Scene& scene, const Model& model, const Certificate& certificate,
                        std::vector<std::pair<std::string, std::string>>* members) {
   if (scene.obstacles.empty()) return;
   const ContactReport contact =
       MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
+  std::string by_obstacle = "[";
+  for (size_t k = 0; k < certificate.contact_sum_by_obstacle.size(); ++k) {
+    by_obstacle += (k ? ", " : "") + JsonVector(certificate.contact_sum_by_obstacle[k]);
+  }
+  by_obstacle += "]";
   members->emplace_back(
       "contact",
       JsonObject({{"thickness", JsonNumber(contact.thickness)},
@@ -110,7 +120,9 @@ void AddContactMembers(const Scene& scene, const Model& model,
                   {"nodes_in_contact", std::to_string(contact.nodes_in_contact)},
                   {"max_penetration", JsonNumber(contact.max_penetration)},
                   {"max_penetration_fraction", JsonNumber(contact.max_penetration_fraction)},
-                  {"allowed_fraction", JsonNumber(contact.allowed_fraction)}},
+                  {"allowed_fraction", JsonNumber(contact.allowed_fraction)},
+                  {"force_sum", JsonVector(certificate.contact_sum)},
+                  {"force_by_obstacle", by_obstacle}},
                  1));
 }
 
@@ -153,6 +165,17 @@ void AddLevelsMembers(const LevelsReport& report,
   members->emplace_back("extrapolation", JsonObject(extrapolation, 1));
 }
 
+// The balance of the whole fabric: reactions + contact + constraint = −(weight + loads).
+std::string BalanceObject(const Certificate& certificate) {
+  return JsonObject({{"reactions", JsonVector(certificate.reaction_sum)},
+                     {"contact", JsonVector(certificate.contact_sum)},
+                     {"constraint", JsonVector(certificate.constraint_sum)},
+                     {"weight_and_loads", JsonVector(certificate.applied_sum)},
+                     {"relative_error", JsonNumber(certificate.balance_error)},
+                     {"balanced", JsonBool(certificate.balanced)}},
+                    1);
+}
+
 void WriteSummary(const Scene& scene, const Model& model, const RunResult& result,
                   const std::optional<DrapeAnalysis>& drape, const LevelsReport* levels,
                   std::ostream& out) {
@@ -160,10 +183,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   const SolverSummary& summary = result.summary;
   std::vector<std::pair<std::string, double>> energy{{"total", certificate.energy}};
   for (const auto& [type, value] : certificate.energy_by_type) energy.emplace_back(type, value);
-  const Eigen::Vector3d& reactions = certificate.reaction_sum;
-  const std::string reaction_sum = "[" + JsonNumber(reactions.x()) + ", " +
-                                   JsonNumber(reactions.y()) + ", " + JsonNumber(reactions.z()) +
-                                   "]";
+  const std::string reaction_sum = JsonVector(certificate.reaction_sum);
 
   std::vector<std::pair<std::string, std::string>> members = {
       {"scene", JsonString(scene.name)},
@@ -178,16 +198,24 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
       {"terms", JsonMap(model.TermCounts(), 1, [](int count) { return std::to_string(count); })},
       {"energy", JsonMap(energy, 1, [](double v) { return JsonNumber(v); })},
       {"residual", JsonObject({{"max_node_force", JsonNumber(certificate.max_node_force)},
-                               {"relative", JsonNumber(certificate.relative_residual)}},
+                               {"relative", JsonNumber(certificate.relative_residual)},
+                               {"round_off_floor", JsonNumber(result.residual_floor)},
+                               {"at_round_off_floor", JsonBool(result.at_floor)}},
                               1)},
       {"reactions", JsonObject({{"sum", reaction_sum}}, 1)},
+      {"balance", BalanceObject(certificate)},
       {"stable", result.stability.computed ? JsonBool(result.stability.stable) : "null"},
+      {"saddle", JsonBool(result.Saddle())},
+      {"interrupted", JsonBool(result.summary.termination.rfind("interrupted", 0) == 0)},
   };
-  if (result.stability.computed && !result.stability.stable) {
+  if (result.stability.computed && !result.stability.stable && certificate.unsound.empty()) {
     members.emplace_back("min_eigenvalue", JsonNumber(result.stability.min_eigenvalue));
   }
+  if (!certificate.unsound.empty()) {
+    members.emplace_back("state_problem", JsonString(certificate.unsound));
+  }
   if (drape) AddDrapeMembers(*drape, &members);
-  AddContactMembers(scene, model, &members);
+  AddContactMembers(scene, model, certificate, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics",
                        JsonMap(summary.statistics, 1, [](double v) { return JsonNumber(v); }));
@@ -195,8 +223,15 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   out << JsonObject(members, 0) << "\n";
 }
 
+// The obstacles' force on a node (0 without obstacles; NaN if the certificate failed).
+double ContactForce(const RunResult& result, int k) {
+  const auto& forces = result.certificate.contact_forces;
+  if (forces.empty()) return result.certificate.evaluable ? 0.0 : NAN;
+  return k < static_cast<int>(forces.size()) ? forces[k] : NAN;
+}
+
 void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) {
-  out << "id,i,j,x,y,z,fixed,fx,fy,fz\n";
+  out << "id,i,j,x,y,z,fixed,fx,fy,fz,contact_fx,contact_fy,contact_fz\n";
   for (int node = 0; node < model.num_nodes; ++node) {
     const auto ij = node < static_cast<int>(model.grid_index.size()) ? model.grid_index[node]
                                                                      : std::array<int, 2>{-1, -1};
@@ -204,6 +239,7 @@ void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) 
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(model.positions[3 * node + c]);
     out << ',' << FixedLetters(model, node);
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(NodeForce(result, 3 * node + c));
+    for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(ContactForce(result, 3 * node + c));
     out << '\n';
   }
 }
@@ -267,6 +303,8 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
       model.num_nodes, out);
   WriteVectors(
       "force", [&result](int k) { return NodeForce(result, k); }, model.num_nodes, out);
+  WriteVectors(
+      "contact_force", [&result](int k) { return ContactForce(result, k); }, model.num_nodes, out);
   out << "SCALARS fixed int 1\nLOOKUP_TABLE default\n";
   for (int node = 0; node < model.num_nodes; ++node) out << (AnyFixed(model, node) ? 1 : 0) << '\n';
 }
@@ -315,6 +353,34 @@ bool Requested(const Scene& scene, const std::string& what) {
 }
 
 }  // namespace
+
+void CheckOutputWritable(const std::string& directory) {
+  const fs::path folder = fs::absolute(fs::path(directory));
+  // The outermost folder this check creates: removed again, so a run that fails later (a model
+  // that cannot be built) leaves nothing behind.
+  fs::path created;
+  for (fs::path p = folder; !p.empty() && p != p.root_path(); p = p.parent_path()) {
+    std::error_code ignored;
+    if (fs::exists(p, ignored)) break;
+    created = p;
+  }
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error) throw std::runtime_error("cannot create " + folder.string() + ": " + error.message());
+  const fs::path probe = folder / (".drape-write-check" + std::to_string(::getpid()));
+  bool writable;
+  {
+    std::ofstream file(probe, std::ios::binary | std::ios::trunc);
+    writable = static_cast<bool>(file);
+  }
+  const int saved_errno = errno;
+  fs::remove(probe, error);
+  if (!created.empty()) fs::remove_all(created, error);
+  if (!writable) {
+    throw std::runtime_error("cannot write into " + folder.string() + ": " +
+                             std::strerror(saved_errno));
+  }
+}
 
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
                   const std::string& directory, const LevelsReport* levels) {

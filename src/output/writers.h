@@ -13,6 +13,10 @@
 
 namespace drape {
 
+// Creates `directory` if needed and checks that a file can be written into it (before a solve, so
+// that an unwritable folder costs no solving). Throws std::runtime_error saying why not.
+void CheckOutputWritable(const std::string& directory);
+
 // Writes what scene.output.write asks for into `directory` (created if needed). `levels` (of a
 // `solver.levels` run, else null) adds the `levels` and `extrapolation` members to summary.json.
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,

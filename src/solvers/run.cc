@@ -1,5 +1,6 @@
 #include "src/solvers/run.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace drape {
@@ -20,16 +21,34 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   RunResult result;
   result.summary = info->make()->Solve(model, options);
   result.summary.solver = method;
-  result.certificate = ComputeCertificate(model, model.positions.data());
-  result.stability = AnalyseStability(model, model.positions.data());
-  // The solver's claim stands only if the forces recomputed at its final positions confirm it.
+  const std::vector<double>* constraint =
+      result.summary.constraint_forces.empty() ? nullptr : &result.summary.constraint_forces;
+  result.certificate = ComputeCertificate(model, model.positions.data(), constraint);
+  result.residual_floor = RelativeResidualFloor(model, model.positions.data());
+  if (result.certificate.unsound.empty()) {
+    result.stability = AnalyseStability(model, model.positions.data());
+  } else {  // a state that cannot be certified is not called stable
+    result.stability.computed = true;
+    result.stability.stable = false;
+  }
+  // The solver's claim stands only if the forces recomputed at its final positions confirm it: to
+  // the tolerance, or (when it stopped at the round-off floor) to the floor measured here.
+  result.at_floor = result.summary.converged && result.summary.residual_floor > 0.0;
+  const double accepted = result.at_floor
+                              ? std::max(options.tolerance, kFloorFactor * result.residual_floor)
+                              : options.tolerance;
   result.converged = result.summary.converged && result.certificate.evaluable &&
-                     result.certificate.relative_residual <= options.tolerance;
+                     result.certificate.unsound.empty() &&
+                     result.certificate.relative_residual <= accepted;
   if (result.summary.converged && !result.converged) {
     char text[200];
-    std::snprintf(text, sizeof text, "%s; but the recomputed relative residual is %.3g",
-                  result.summary.termination.c_str(), result.certificate.relative_residual);
-    result.summary.termination = text;
+    std::snprintf(text, sizeof text, "; but the recomputed relative residual is %.3g",
+                  result.certificate.relative_residual);
+    result.summary.termination += result.certificate.unsound.empty()
+                                      ? std::string(text)
+                                      : "; but " + result.certificate.unsound;
+  } else if (!result.certificate.unsound.empty()) {
+    result.summary.termination += "; " + result.certificate.unsound;
   }
   return result;
 }

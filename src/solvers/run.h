@@ -7,17 +7,25 @@
 
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
+#include "src/numerics/round_off_floor.h"
+#include "src/numerics/stability.h"
 #include "src/scene/scene.h"
 #include "src/solvers/solver.h"
-#include "src/numerics/stability.h"
 
 namespace drape {
 
 struct RunResult {
   SolverSummary summary;    // what the solver says
   Certificate certificate;  // recomputed at the final positions
-  Stability stability;
-  bool converged = false;  // the solver's claim, confirmed by the certificate
+  Stability stability;      // stable = false whenever certificate.unsound says why
+  bool converged = false;   // the solver's claim, confirmed by the certificate
+  // The relative residual's round-off floor at the final positions (src/numerics/round_off_floor.h)
+  // and whether the solve stopped there above the tolerance (then converged: the tolerance is
+  // below what double precision can certify).
+  double residual_floor = 0.0;
+  bool at_floor = false;
+  // Converged, but not to a stable minimum (a saddle: stability.min_eigenvalue < 0).
+  bool Saddle() const { return converged && stability.computed && !stability.stable; }
 };
 
 // Solves with scene.solver (method, tolerance, limits, method options). `on_iteration` may be

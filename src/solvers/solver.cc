@@ -4,16 +4,22 @@
 #include <csignal>
 #include <cstdio>
 
+#include "src/numerics/round_off_floor.h"
+
 namespace drape {
 
 namespace {
-std::atomic<bool> interrupt_requested{false};
-void OnInterrupt(int) { interrupt_requested = true; }
+volatile std::sig_atomic_t interrupt_signal = 0;
+void OnInterrupt(int signal) { interrupt_signal = signal; }
 }  // namespace
 
-bool InterruptRequested() { return interrupt_requested; }
-void RequestInterrupt() { interrupt_requested = true; }
-void InstallInterruptHandler() { std::signal(SIGINT, OnInterrupt); }
+bool InterruptRequested() { return interrupt_signal != 0; }
+int InterruptSignal() { return interrupt_signal; }
+void RequestInterrupt() { interrupt_signal = SIGINT; }
+void InstallInterruptHandler() {
+  std::signal(SIGINT, OnInterrupt);
+  std::signal(SIGTERM, OnInterrupt);
+}
 
 const SolverInfo* FindSolver(const std::string& name) {
   for (const auto& info : AllSolvers()) {
@@ -42,17 +48,44 @@ void IterationMonitor::Stop(const std::string& termination) {
   summary_->wall_time_s = ElapsedSeconds();
 }
 
-bool IterationMonitor::Record(int iteration, double energy, double relative_residual) {
+bool IterationMonitor::AtRoundOffFloor(int iteration, double relative_residual) {
+  if (relative_residual < 0.5 * stagnation_mark_ || iteration == 0) {
+    stagnation_mark_ = relative_residual;
+    stagnation_iteration_ = iteration;
+    stagnation_wait_ = kStagnantIterations;
+    return false;
+  }
+  if (iteration - stagnation_iteration_ < stagnation_wait_) return false;
+  stagnation_iteration_ = iteration;  // check again after twice as many (the check costs a Hessian)
+  stagnation_wait_ *= 2;
+  const double floor = RelativeResidualFloor(model_, model_.positions.data());
+  if (!(relative_residual <= kFloorFactor * floor)) return false;
+  summary_->residual_floor = floor;
+  return true;
+}
+
+bool IterationMonitor::Record(int iteration, double energy, double relative_residual,
+                              bool may_converge) {
   IterationRecord record{iteration, ElapsedSeconds(), energy, relative_residual};
   summary_->history.push_back(record);
   summary_->iterations = iteration;
   summary_->wall_time_s = record.time_s;
   const bool caller_continues = !options_.on_iteration || options_.on_iteration(record);
-  char text[160];
-  if (relative_residual <= options_.tolerance) {
+  char text[240];
+  if (may_converge && relative_residual <= options_.tolerance) {
     summary_->converged = true;
     std::snprintf(text, sizeof text, "relative residual %.3g reached the tolerance %.3g",
                   relative_residual, options_.tolerance);
+    summary_->termination = text;
+    return true;
+  }
+  if (may_converge && std::isfinite(relative_residual) &&
+      AtRoundOffFloor(iteration, relative_residual)) {
+    summary_->converged = true;
+    std::snprintf(text, sizeof text,
+                  "at the round-off floor (≈ %.3g); tolerance %.3g is below what double precision "
+                  "can certify (relative residual %.3g)",
+                  summary_->residual_floor, options_.tolerance, relative_residual);
     summary_->termination = text;
     return true;
   }
@@ -61,7 +94,8 @@ bool IterationMonitor::Record(int iteration, double energy, double relative_resi
     return true;
   }
   if (InterruptRequested()) {
-    summary_->termination = "interrupted (SIGINT)";
+    summary_->termination =
+        InterruptSignal() == SIGTERM ? "interrupted (SIGTERM)" : "interrupted (SIGINT)";
     return true;
   }
   if (iteration >= options_.max_iterations) {

@@ -4,6 +4,7 @@
 #define DRAPE_SRC_SOLVERS_SOLVER_H_
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -41,6 +42,11 @@ struct SolverSummary {
   std::vector<IterationRecord> history;
   // Extra per-method figures worth reporting (e.g. "factorizations"), written to summary.json.
   std::map<std::string, double> statistics;
+  // The round-off floor of the relative residual where the solve stopped on it (else 0).
+  double residual_floor = 0.0;
+  // Forces of a constraint the method enforces besides the energy (Provot's stretch limit), on
+  // each node at the final positions, 3 per node, N; empty if none. The certificate counts them.
+  std::vector<double> constraint_forces;
   // A per-step series beyond the history (the dynamic scheme's kinetic energy, written to
   // kinetic.csv): column names, then one row per step.
   std::vector<std::string> trace_columns;
@@ -65,12 +71,23 @@ const std::vector<SolverInfo>& AllSolvers();
 const SolverInfo* FindSolver(const std::string& name);
 
 // Shared stopping rule and history: every solver calls Record() once per iteration (iteration 0
-// is the start) and stops when it returns true. It stops on the relative residual, the iteration
-// and time limits, an interrupt (Ctrl-C), or the caller's callback, and says which in the summary.
+// is the start), with model.positions at the iterate, and stops when it returns true. It stops on
+// the relative residual, the round-off floor, the iteration and time limits, an interrupt (SIGINT
+// or SIGTERM), or the caller's callback, and says which in the summary.
+//
+// The round-off floor: when the residual has not halved for kStagnantIterations iterations, the
+// floor is estimated at the iterate (src/numerics/round_off_floor.h); a residual above the
+// tolerance but within kFloorFactor of the floor stops the solve, converged (the tolerance is
+// below what double precision can certify; the summary says so and records the floor).
 class IterationMonitor {
  public:
+  static constexpr int kStagnantIterations = 20;
   IterationMonitor(const Model& model, const SolverOptions& options, SolverSummary* summary);
-  bool Record(int iteration, double energy, double relative_residual);
+  // `may_converge` false: the residual criterion does not stop the solve at this iterate (a
+  // method that has found it to be a saddle and moves on).
+  bool Record(int iteration, double energy, double relative_residual, bool may_converge = true);
+  // Whether `relative_residual` meets the tolerance.
+  bool Reached(double relative_residual) const { return relative_residual <= options_.tolerance; }
   double ElapsedSeconds() const;
   // For a method that stops for its own reason (a line search failing, a non-finite step).
   void Stop(const std::string& termination);
@@ -78,12 +95,20 @@ class IterationMonitor {
  private:
   const Model& model_;
   const SolverOptions& options_;
+  bool AtRoundOffFloor(int iteration, double relative_residual);
+
   SolverSummary* summary_;
   std::chrono::steady_clock::time_point start_;
+  double stagnation_mark_ = INFINITY;  // residual at the last halving
+  int stagnation_iteration_ = 0;       // iteration of the last halving (or floor check)
+  int stagnation_wait_ = kStagnantIterations;
 };
 
-// Set by the SIGINT handler that the command installs; solvers stop at the next iteration.
+// Set by the SIGINT and SIGTERM handler that the command installs; solvers stop at the next
+// iteration and the last iterate is written, marked interrupted. InterruptSignal: the signal
+// received (SIGINT when requested by RequestInterrupt), 0 if none.
 bool InterruptRequested();
+int InterruptSignal();
 void RequestInterrupt();
 void InstallInterruptHandler();
 

@@ -5,8 +5,8 @@
 //
 // Precision: a line search comparing energies stalls around a relative residual of 1e-7, where
 // energy changes fall below the roundoff of the total energy. When Ceres stops for that reason,
-// the solve restarts from there with the energy measured locally (src/model/local_energy.h), re-anchored
-// at every iterate.
+// the solve restarts from there with the energy measured locally (src/model/local_energy.h),
+// re-anchored at every iterate.
 #include <ceres/first_order_function.h>
 #include <ceres/gradient_problem.h>
 #include <ceres/gradient_problem_solver.h>
@@ -16,6 +16,7 @@
 #include <memory>
 #include <vector>
 
+#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/local_energy.h"
 #include "src/solvers/solvers.h"
@@ -29,7 +30,12 @@ namespace {
 class FreeEnergy : public ceres::FirstOrderFunction {
  public:
   FreeEnergy(const Model& model, const DofMap& dofs)
-      : model_(model), dofs_(dofs), work_(model.positions) {}
+      : model_(model), dofs_(dofs), work_(model.positions), iterate_(model.positions) {}
+
+  // The current iterate (after each accepted step): no trial point may be reached from it by
+  // passing through an obstacle (src/model/contact.h); such a point is reported as not evaluable,
+  // and the line search shortens the step.
+  void SetIterate(const double* free) { dofs_.Scatter(free, iterate_.data()); }
 
   // From now on, the cost is the energy change from the point last evaluated, integrated from the
   // gradient: it starts at 0 there, so the double it is returned in resolves tiny changes.
@@ -47,6 +53,10 @@ class FreeEnergy : public ceres::FirstOrderFunction {
   bool Evaluate(const double* free, double* cost, double* free_gradient) const override {
     ++evaluations_;
     dofs_.Scatter(free, work_.data());
+    if (!model_.obstacles.empty() &&
+        ObstacleSafeFraction(model_, iterate_.data(), work_.data()) < 1.0) {
+      return false;
+    }
     if (!EvaluateEnergy(model_, work_.data(), &last_energy_, &gradient_)) return false;
     const int n = dofs_.num_free();
     last_free_gradient_.resize(n);
@@ -80,6 +90,7 @@ class FreeEnergy : public ceres::FirstOrderFunction {
   bool local_ = false;
   LocalEnergy local_energy_;
   mutable std::vector<double> work_, gradient_, last_point_, last_free_gradient_;
+  std::vector<double> iterate_;
   mutable double last_energy_ = 0.0, last_cost_ = 0.0;
   mutable int evaluations_ = 0;
 };
@@ -104,6 +115,7 @@ class MonitorCallback : public ceres::IterationCallback {
       stopped_ = monitor_->Record(recorded_, energy, last_residual_);
       ++recorded_;
       energy_.Anchor();
+      energy_.SetIterate(free_.data());
     }
     return stopped_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
   }

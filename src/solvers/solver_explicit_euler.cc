@@ -20,9 +20,10 @@
 #include <deque>
 #include <vector>
 
+#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
-#include "src/solvers/solvers.h"
 #include "src/model/stretch_limit.h"
+#include "src/solvers/solvers.h"
 
 namespace drape {
 
@@ -133,7 +134,17 @@ class ProvotConstraint {
     for (size_t k = 0; k < forces.size(); ++k) {
       if (!fixed_[k]) sum += forces[k] * forces[k];
     }
+    active_ = active;
+    directions_ = direction;
     return std::sqrt(sum);
+  }
+
+  // The constraint's forces on the nodes (3 per node, N): the tensions found by the last
+  // ConstrainedResidualNorm, on the springs at their limit there.
+  std::vector<double> ConstraintForces(int num_dofs) const {
+    std::vector<double> forces(num_dofs, 0.0);
+    for (int s : active_) AddTension(s, directions_[s], tension_[s], &forces);
+    return forces;
   }
 
  private:
@@ -155,6 +166,8 @@ class ProvotConstraint {
   std::vector<int> order_;  // free nodes, breadth-first from the anchored ones
   std::vector<std::vector<int>> earlier_springs_;
   std::vector<double> tension_;  // N, the constraint's tension per spring (warm start)
+  std::vector<int> active_;      // springs at their limit at the last ConstrainedResidualNorm
+  std::vector<Eigen::Vector3d> directions_;
 };
 
 // A stable step for the undamped scheme: 1/ω_max with ω_max² ≤ max_i 2 Σ_springs k / m_i
@@ -179,6 +192,27 @@ double DefaultTimeStep(const Model& model) {
 // to the inner node): the solve stops there, not converged.
 constexpr double kStillFraction = 1e-6;
 constexpr int kStillSteps = 1000;
+
+// x ← x + v dt for the free coordinates, each node's move cut where it would pass through an
+// obstacle (src/model/contact.h); a node so stopped loses its velocity.
+void MoveAroundObstacles(const Model& model, double dt, std::vector<double>* v,
+                         std::vector<double>* x) {
+  for (int node = 0; node < model.num_nodes; ++node) {
+    double to[3];
+    for (int c = 0; c < 3; ++c) {
+      const int k = 3 * node + c;
+      to[c] = (*x)[k] + (model.fixed[k] ? 0.0 : (*v)[k] * dt);
+    }
+    const double fraction =
+        model.obstacles.empty() ? 1.0 : NodeSafeFraction(model, x->data() + 3 * node, to);
+    for (int c = 0; c < 3; ++c) {
+      const int k = 3 * node + c;
+      if (model.fixed[k]) continue;
+      (*x)[k] += fraction * (*v)[k] * dt;
+      if (fraction < 1.0) (*v)[k] = 0.0;
+    }
+  }
+}
 
 class ExplicitEulerSolver : public Solver {
  public:
@@ -245,14 +279,15 @@ class ExplicitEulerSolver : public Solver {
       for (int k = 0; k < model.num_dofs(); ++k) {
         if (model.fixed[k]) continue;
         v[k] = (1.0 - friction) * v[k] + forces[k] / model.mass[k / 3] * dt;
-        x[k] += v[k] * dt;
       }
+      MoveAroundObstacles(model, dt, &v, &x);
       if (provot) {
         before = x;
         provot->Apply(&x);
         for (int k = 0; k < model.num_dofs(); ++k) v[k] += (x[k] - before[k]) / dt;
       }
     }
+    if (provot) summary.constraint_forces = provot->ConstraintForces(model.num_dofs());
     summary.statistics["simulated_time_s"] = summary.iterations * dt;
     return summary;
   }

@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/mesh.h"
 #include "src/numerics/sparse_hessian.h"
@@ -65,6 +66,9 @@ struct NewtonSettings {
   // After H fails, H is tried again once the residual has fallen tenfold or after this many steps.
   int exact_retry_steps = 10;
   double armijo = 1e-4;
+  // 1: where the residual is met at a saddle, leave it along the most negative curvature (issue
+  // 14); 0: stop there (the certificate then reports the saddle).
+  bool escape_saddles = true;
 };
 
 NewtonSettings ReadSettings(const std::map<std::string, double>& options) {
@@ -84,6 +88,9 @@ NewtonSettings ReadSettings(const std::map<std::string, double>& options) {
   double exact_retry_steps = settings.exact_retry_steps;
   read("exact_retry_steps", &exact_retry_steps);
   settings.exact_retry_steps = std::max(1, static_cast<int>(exact_retry_steps));
+  double escape_saddles = 1.0;
+  read("escape_saddles", &escape_saddles);
+  settings.escape_saddles = escape_saddles != 0.0;
   return settings;
 }
 
@@ -212,6 +219,12 @@ void NewtonIteration::Run() {
     counters_.projected_terms = assembly_.projected_terms;
     const double residual = RelativeResidual(model_, gradient_);
     last_residual_ = residual;
+    // A saddle is not an answer: where the residual is met but the true Hessian is indefinite,
+    // leave along its most negative curvature and go on.
+    if (settings_.escape_saddles && monitor_.Reached(residual) && EscapeSaddle()) {
+      if (monitor_.Record(iteration, assembly_.energy, residual, /*may_converge=*/false)) return;
+      continue;
+    }
     if (monitor_.Record(iteration, assembly_.energy, residual)) return;
     if (iteration == 0) stiffness_scale_ = StiffnessScale(hessian_);
     if (!Step(residual)) return;
@@ -307,7 +320,10 @@ bool NewtonIteration::LineSearch(const std::vector<double>& step, double* alpha)
   const double rounding =
       64.0 * std::numeric_limits<double>::epsilon() * assembly_.energy_magnitude;
   trial_ = model_.positions;
-  double a = 1.0;
+  // No node may pass through an obstacle (src/model/contact.h): the step starts at most there.
+  SetTrial(step, 1.0, &trial_);
+  double a = ObstacleSafeFraction(model_, model_.positions.data(), trial_.data());
+  if (!(a > 0.0)) return false;
   for (int evaluation = 0; evaluation < settings_.max_line_search; ++evaluation) {
     SetTrial(step, a, &trial_);
     double trial_energy;
@@ -320,7 +336,9 @@ bool NewtonIteration::LineSearch(const std::vector<double>& step, double* alpha)
     if (evaluation == 0) {
       // Gain ratio of the full step against its quadratic model (A + λD) p = −g:
       // predicted decrease −g·p − ½ pᵀA p = −½ g·p + ½ λ pᵀD p.
-      const double predicted = -0.5 * slope + 0.5 * last_lambda_ * WeightedSquaredNorm(step);
+      // For a step limited to a < 1 by an obstacle: −a g·p − ½ a² pᵀA p.
+      const double predicted =
+          -a * slope + 0.5 * a * a * (slope + last_lambda_ * WeightedSquaredNorm(step));
       full_step_gain_ = flat     ? (accepted ? 1.0 : 0.0)
                         : finite ? (energy - trial_energy) / predicted
                                  : -1.0;
@@ -359,6 +377,7 @@ void NewtonIteration::Expand(const std::vector<double>& step, double energy, dou
   expanded_ = trial_;
   for (int k = 0; k < settings_.max_expansions; ++k) {
     SetTrial(step, 2.0 * *alpha, &expanded_);
+    if (ObstacleSafeFraction(model_, model_.positions.data(), expanded_.data()) < 1.0) return;
     double expanded_energy;
     ++counters_.energy_evaluations;
     if (!EvaluateEnergy(model_, expanded_.data(), &expanded_energy) ||
@@ -388,6 +407,7 @@ bool NewtonIteration::EscapeSaddle() {
   for (double t = 0.1 * model_size_; t > 1e-7 * model_size_; t *= 0.3) {
     for (double sign : {1.0, -1.0}) {
       SetTrial(direction, sign * t, &trial_);
+      if (ObstacleSafeFraction(model_, model_.positions.data(), trial_.data()) < 1.0) continue;
       double energy;
       ++counters_.energy_evaluations;
       if (EvaluateEnergy(model_, trial_.data(), &energy) && energy < best_energy) {

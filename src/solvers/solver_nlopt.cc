@@ -14,10 +14,10 @@
 // outcome is mapped to a termination text, and the solve ends at the point where the residual was
 // reached, else at the evaluated point of lowest energy.
 //
-// Precision: as for ceres-lbfgs (see src/solvers/solver_ceres_lbfgs.cc), line searches that compare total
-// energies stall once energy changes fall below the roundoff of the energy. With `local_energy`
-// (default 1) the objective is the energy measured from an anchor point as the integral of the
-// gradient along the segment (trapezoid rule, exact for a quadratic energy),
+// Precision: as for ceres-lbfgs (see src/solvers/solver_ceres_lbfgs.cc), line searches that compare
+// total energies stall once energy changes fall below the roundoff of the energy. With
+// `local_energy` (default 1) the objective is the energy measured from an anchor point as the
+// integral of the gradient along the segment (trapezoid rule, exact for a quadratic energy),
 //   f(x) = f(x_a) + ½ (g(x_a) + g(x)) · (x − x_a),
 // with the anchor moved to every point whose f is the lowest so far; f then differs from the
 // energy by a constant up to O(|x − x_a|³) and resolves tiny changes near the minimum.
@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/local_energy.h"
 #include "src/solvers/solvers.h"
@@ -86,6 +87,10 @@ struct Objective {
     dofs.Gather(gradient.data(), g.data());
     for (double& entry : g) entry *= scale;
     if (!free_gradient.empty()) free_gradient = g;
+    // No point may be reached from the best one through an obstacle (src/model/contact.h): such a
+    // point gets a value far above the best (NLopt's line searches fail on an infinite one), so
+    // the step is shortened; it is never recorded as an iterate.
+    if (Crosses(free)) return CrossingValue(free, free_gradient);
     const double value = LocalValue(free, g, scale * energy);
     const double residual = RelativeResidual(model, gradient);
     if (value < best_value) {
@@ -111,6 +116,34 @@ struct Objective {
     }
     return value;
   }
+
+  bool Crosses(const std::vector<double>& free) {
+    if (model.obstacles.empty()) return false;
+    if (best_point.empty()) return false;
+    crossing_from.assign(model.positions.begin(), model.positions.end());
+    dofs.Scatter(best_point.data(), crossing_from.data());
+    return ObstacleSafeFraction(model, crossing_from.data(), model.positions.data()) < 1.0;
+  }
+  std::vector<double> crossing_from;
+
+  // The value of a point that crosses an obstacle: a bowl centred at the best point, rising to
+  // kCrossingPenalty × (1 + |best value|) above it at `free`, so that the slope along the step is
+  // positive and the line search backtracks.
+  double CrossingValue(const std::vector<double>& free, std::vector<double>& free_gradient) const {
+    double squared = 0.0;
+    for (size_t k = 0; k < free.size(); ++k) {
+      squared += (free[k] - best_point[k]) * (free[k] - best_point[k]);
+    }
+    const double rise = kCrossingPenalty * (1.0 + std::abs(best_value));
+    const double curvature = squared > 0.0 ? rise / squared : 0.0;
+    if (!free_gradient.empty()) {
+      for (size_t k = 0; k < free.size(); ++k) {
+        free_gradient[k] = 2.0 * curvature * (free[k] - best_point[k]);
+      }
+    }
+    return best_value + rise;
+  }
+  static constexpr double kCrossingPenalty = 1e3;
 
   // Restarts from the best point: the local energy is measured from there again.
   void Reanchor() {

@@ -13,7 +13,7 @@ const std::vector<SolverInfo>& AllSolvers() {
        "solution, CHOLMOD supernodal Cholesky, pseudo-time regularisation M/dt^2 and an Armijo "
        "line search; quadratic near the end (the default)",
        {"regularization", "max_line_search", "max_expansions", "exact_hessian_residual",
-        "absolute_projection_above", "exact_retry_steps"},
+        "absolute_projection_above", "exact_retry_steps", "escape_saddles"},
        [] { return NewNewtonSolver(); }},
       {"ceres-lbfgs",
        "L-BFGS on the exact energy (ceres::GradientProblemSolver, per-term autodiff gradients)",

@@ -1,0 +1,29 @@
+// The round-off floor of the equilibrium residual: how small double precision can make the
+// relative residual at given positions, so that a tolerance below it is recognised as one that
+// cannot be certified (instead of iterating in place until a limit).
+//
+// Two sources, per free coordinate i:
+//  - the sum of the terms' forces at the node cancels at equilibrium, each carrying a relative
+//    rounding of ε: ε Σ_terms |∂E_t/∂x_i|;
+//  - the positions themselves are doubles: the nearest representable state is off the exact one
+//    by up to half an ulp per coordinate, ε|x_j|/2, which changes the forces by H δ; with
+//    independent roundings, √(Σ_j H_ij² (ε|x_j|/2)²) (H the free Hessian). This is the floor of a
+//    long stiff structure far from the origin (a 325 m cable of 8e6 N/m springs: ~1e-8).
+// The floor is the norm of their sum over the free coordinates, over the reference force.
+#ifndef DRAPE_SRC_NUMERICS_ROUND_OFF_FLOOR_H_
+#define DRAPE_SRC_NUMERICS_ROUND_OFF_FLOOR_H_
+
+#include "src/model/model.h"
+
+namespace drape {
+
+// The relative residual's round-off floor at `positions` (see above); 0 when the model has no
+// free coordinate, +∞ when the forces or the Hessian are not finite there.
+double RelativeResidualFloor(const Model& model, const double* positions);
+
+// A residual within this factor of the floor is at the floor (the estimate is of its order).
+constexpr double kFloorFactor = 2.0;
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_NUMERICS_ROUND_OFF_FLOOR_H_
