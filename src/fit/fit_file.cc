@@ -32,29 +32,7 @@ std::string DirectoryOf(const std::string& path) {
   return directory.empty() ? "." : directory;
 }
 
-YAML::Node ReadFitDocument(const std::string& path) {
-  std::error_code error;
-  if (fs::is_directory(path, error)) {
-    throw InputError(path + ": cannot read the fit file: it is a folder");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read the fit file: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text.str());
-    if (documents.size() > 1) {
-      const YAML::Mark mark = documents[1].Mark();
-      throw InputError(Location{path, mark.line + 1, mark.column + 1, ""},
-                       "a fit file holds one YAML document; this is a second one");
-    }
-    return documents.empty() ? YAML::Node() : documents[0];
-  } catch (const YAML::Exception& exception) {
-    const YAML::Mark mark = exception.mark;
-    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
-                     "YAML syntax error: " + exception.msg);
-  }
-}
+YAML::Node ReadFitDocument(const std::string& path) { return ReadYamlFile(path, "fit file"); }
 
 // ------------------------------------------------------------------------------- data files
 
@@ -363,6 +341,13 @@ void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
   std::vector<std::string> overrides;
   for (const auto& parameter : spec.parameters) {
     overrides.push_back(parameter.key + "=" + FormatValue(parameter.initial));
+  }
+  std::error_code missing;
+  if (!std::filesystem::is_regular_file(specimen.scene_file, missing)) {
+    throw InputError(specimen.where,
+                     "cannot read the scene file " + specimen.scene_file + ": " +
+                         (std::filesystem::exists(specimen.scene_file, missing) ? "it is not a file"
+                                                                                : "no such file"));
   }
   Scene scene;
   try {

@@ -18,9 +18,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "src/model/contact.h"
 #include "src/analysis/drape_analysis.h"
+#include "src/model/contact.h"
 #include "src/output/render.h"
+#include "src/output/result_folder.h"
 
 namespace drape {
 
@@ -344,8 +345,8 @@ bool Requested(const Scene& scene, const std::string& what) {
 
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
                   const std::string& directory) {
-  const fs::path folder(directory);
-  fs::create_directories(folder);
+  ResultFolder result_folder(directory);  // the files go to its staging folder, then move in
+  const fs::path& folder = result_folder.staging();
   std::optional<DrapeAnalysis> drape;
   if (HasDrapeCoefficient(scene, model)) drape = AnalyseDrape(scene, model);
   if (Requested(scene, "summary")) {
@@ -386,6 +387,7 @@ void WriteOutputs(const Scene& scene, const Model& model, const RunResult& resul
     WriteAtomically(folder, "shadow.png",
                     [&](std::ostream& out) { DrawShadowView(scene, model, *drape, out); });
   }
+  result_folder.Commit();
 }
 
 }  // namespace drape

@@ -1,18 +1,19 @@
 // Result files: summary.json, nodes.csv, history.csv, kinetic.csv, mesh.vtk, mesh.obj, profile.csv,
-// drape.png, shadow.png (the pictures drawn by src/output/render.h). Each is written to a temporary name
-// in the output folder and renamed, so no half-written file is ever left.
+// drape.png, shadow.png (the pictures drawn by src/output/render.h). Each is written to a temporary
+// name in the output folder and renamed, so no half-written file is ever left.
 #ifndef DRAPE_SRC_OUTPUT_WRITERS_H_
 #define DRAPE_SRC_OUTPUT_WRITERS_H_
 
 #include <string>
 
 #include "src/model/model.h"
-#include "src/solvers/run.h"
 #include "src/scene/scene.h"
+#include "src/solvers/run.h"
 
 namespace drape {
 
-// Writes what scene.output.write asks for into `directory` (created if needed).
+// Writes what scene.output.write asks for into `directory` (created if needed), as a whole
+// (src/output/result_folder.h): files of an earlier run that this one does not write are removed.
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
                   const std::string& directory);
 

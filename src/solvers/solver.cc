@@ -13,6 +13,7 @@ void OnInterrupt(int) { interrupt_requested = true; }
 
 bool InterruptRequested() { return interrupt_requested; }
 void RequestInterrupt() { interrupt_requested = true; }
+void ClearInterrupt() { interrupt_requested = false; }
 void InstallInterruptHandler() { std::signal(SIGINT, OnInterrupt); }
 
 const SolverInfo* FindSolver(const std::string& name) {

@@ -14,10 +14,10 @@
 // outcome is mapped to a termination text, and the solve ends at the point where the residual was
 // reached, else at the evaluated point of lowest energy.
 //
-// Precision: as for ceres-lbfgs (see src/solvers/solver_ceres_lbfgs.cc), line searches that compare total
-// energies stall once energy changes fall below the roundoff of the energy. With `local_energy`
-// (default 1) the objective is the energy measured from an anchor point as the integral of the
-// gradient along the segment (trapezoid rule, exact for a quadratic energy),
+// Precision: as for ceres-lbfgs (see src/solvers/solver_ceres_lbfgs.cc), line searches that compare
+// total energies stall once energy changes fall below the roundoff of the energy. With
+// `local_energy` (default 1) the objective is the energy measured from an anchor point as the
+// integral of the gradient along the segment (trapezoid rule, exact for a quadratic energy),
 //   f(x) = f(x_a) + ½ (g(x_a) + g(x)) · (x − x_a),
 // with the anchor moved to every point whose f is the lowest so far; f then differs from the
 // energy by a constant up to O(|x − x_a|³) and resolves tiny changes near the minimum.
@@ -33,6 +33,7 @@
 
 #include "src/model/equilibrium.h"
 #include "src/model/local_energy.h"
+#include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 
 namespace drape {
@@ -48,9 +49,9 @@ constexpr int kStallEvaluations = 200;
 // Restarts in a row that do not lower the residual at the best point before the solve gives up.
 constexpr int kFruitlessRestarts = 5;
 
-double Option(const SolverOptions& options, const char* key, double fallback) {
-  const auto found = options.method_options.find(key);
-  return found == options.method_options.end() ? fallback : found->second;
+// Option `key` of method `name`: as given, else its default in the catalogue.
+double Option(const std::string& name, const SolverOptions& options, const char* key) {
+  return *MethodOptionValue(name, options.method_options, key);
 }
 
 // What the objective callback needs: the model, the stop rule and the opt to stop.
@@ -180,7 +181,8 @@ double ObjectiveScale(const Model& model, double tolerance) {
 
 class NloptSolver : public Solver {
  public:
-  explicit NloptSolver(nlopt::algorithm algorithm) : algorithm_(algorithm) {}
+  NloptSolver(std::string name, nlopt::algorithm algorithm)
+      : name_(std::move(name)), algorithm_(algorithm) {}
 
   SolverSummary Solve(Model& model, const SolverOptions& options) const override {
     const DofMap dofs(model);
@@ -194,7 +196,7 @@ class NloptSolver : public Solver {
     SolverSummary summary;
     IterationMonitor monitor(model, options, &summary);
     Objective objective(model, dofs, monitor);
-    objective.local_energy = Option(options, "local_energy", 1.0) != 0.0;
+    objective.local_energy = Option(name_, options, "local_energy") != 0.0;
     objective.monitor_tolerance = options.tolerance;
     objective.scale = ObjectiveScale(model, options.tolerance);
     std::vector<double> x(n);
@@ -254,7 +256,7 @@ class NloptSolver : public Solver {
     opt.set_maxtime(std::max(1e-3, options.time_limit - objective->monitor.ElapsedSeconds()));
     if (algorithm_ == nlopt::LD_LBFGS || algorithm_ == nlopt::LD_TNEWTON_PRECOND_RESTART ||
         algorithm_ == nlopt::LD_VAR2) {
-      opt.set_vector_storage(static_cast<unsigned>(Option(options, "memory", 10.0)));
+      opt.set_vector_storage(static_cast<unsigned>(Option(name_, options, "memory")));
     }
     double value = 0.0;
     std::string outcome;
@@ -275,18 +277,19 @@ class NloptSolver : public Solver {
     return outcome;
   }
 
+  const std::string name_;
   const nlopt::algorithm algorithm_;
 };
 
 }  // namespace
 
 std::unique_ptr<Solver> NewNloptSolver(const std::string& name) {
-  if (name == "nlopt-lbfgs") return std::make_unique<NloptSolver>(nlopt::LD_LBFGS);
+  if (name == "nlopt-lbfgs") return std::make_unique<NloptSolver>(name, nlopt::LD_LBFGS);
   if (name == "nlopt-tnewton")
-    return std::make_unique<NloptSolver>(nlopt::LD_TNEWTON_PRECOND_RESTART);
-  if (name == "nlopt-var2") return std::make_unique<NloptSolver>(nlopt::LD_VAR2);
-  if (name == "nlopt-mma") return std::make_unique<NloptSolver>(nlopt::LD_MMA);
-  if (name == "nlopt-slsqp") return std::make_unique<NloptSolver>(nlopt::LD_SLSQP);
+    return std::make_unique<NloptSolver>(name, nlopt::LD_TNEWTON_PRECOND_RESTART);
+  if (name == "nlopt-var2") return std::make_unique<NloptSolver>(name, nlopt::LD_VAR2);
+  if (name == "nlopt-mma") return std::make_unique<NloptSolver>(name, nlopt::LD_MMA);
+  if (name == "nlopt-slsqp") return std::make_unique<NloptSolver>(name, nlopt::LD_SLSQP);
   return nullptr;
 }
 
