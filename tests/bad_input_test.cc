@@ -208,5 +208,104 @@ TEST_F(BadInputTest, OverrideWithABadValueIsLocatedInTheOverride) {
                  {"--set", "solver.tolerance=1e-6", "--set", "material.node_mass=-1"});
 }
 
+TEST_F(BadInputTest, SolverOptionOutOfRangeInAnOverride) {
+  ExpectRejected(WriteValidScene(scratch_),
+                 "--set:1:27: solver.ceres-lbfgs.memory: must be an integer in [1, 1000], got -5",
+                 {"--set", "solver.ceres-lbfgs.memory=-5"});
+}
+
+TEST_F(BadInputTest, UnknownMethodInAnOverride) {
+  ExpectRejected(WriteValidScene(scratch_), "--set:1:15: solver.method: unknown method 'newtn'",
+                 {"--set", "solver.method=newtn"});
+}
+
+// A run whose explicit step diverges (a stiff chain, dt at the top of its range): its positions
+// overflowed to inf and were written to nodes.csv, mesh.vtk and mesh.obj; now it stops with the
+// node named, exit 2, nothing written.
+TEST_F(BadInputTest, ARunThatStopsBeingFiniteWritesNothing) {
+  const fs::path scene = scratch_ / "diverging.yaml";
+  std::ofstream(scene) << "mesh: {kind: chain, length: 0.4, nodes: 5}\n"
+                          "material: {node_mass: 0.001, springs: {structural: 1e6}}\n"
+                          "fixed:\n  - nodes: {ids: [0, 4]}\n"
+                          "loads: {gravity: [0, 0, -9.81]}\n"
+                          "solver: {method: explicit-euler, explicit-euler: {dt: 100}}\n";
+  const Outcome outcome = Drape({"solve", scene.string(), "--out", out_.string()});
+  EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
+  EXPECT_TRUE(HasLine(outcome.err,
+                      scene.string() + ":6:9: solver: explicit-euler produced a non-finite",
+                      "nothing written"))
+      << outcome.err;
+  EXPECT_FALSE(fs::exists(out_ / "nodes.csv"));
+}
+
+// Memory runs out while the model is built (a 9-million-node grid allowed by mesh.max_nodes,
+// under a 1 GB address-space limit): a message and exit 2, never a signal. Not under
+// AddressSanitizer, which reserves far more address space than the limit allows.
+TEST_F(BadInputTest, OutOfMemoryIsAMessageAndExitStatus2) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "an address-space limit and AddressSanitizer do not mix";
+#else
+  const fs::path scene = scratch_ / "huge.yaml";
+  std::ofstream(scene) << "mesh: {nodes: [3000, 3000], max_nodes: 10000000}\n"
+                          "material: {density: 0.2, springs: {structural: 100}}\n"
+                          "fixed:\n  - nodes: {edge: top}\n"
+                          "loads: {gravity: [0, 0, -9.81]}\n";
+  const fs::path err = scratch_ / "stderr.txt";
+  const std::string command = "ulimit -v 1000000; " + ShellQuoted(DRAPE_BINARY) + " check " +
+                              ShellQuoted(scene.string()) + " > /dev/null 2> " +
+                              ShellQuoted(err.string());
+  const int status = std::system(("bash -c " + ShellQuoted(command)).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2) << ReadText(err);
+  EXPECT_NE(ReadText(err).find("drape: out of memory"), std::string::npos) << ReadText(err);
+#endif
+}
+
+// `drape fit` with a scene that does not exist: located in the fit file (it named only the
+// scene's path before).
+TEST_F(BadInputTest, FitWithAMissingSceneIsLocatedInTheFitFile) {
+  const fs::path fit = scratch_ / "fit.yaml";
+  std::ofstream(fit) << "scene: no_such_scene.yaml\n"
+                        "parameters:\n  - {key: material.springs.structural, initial: 20, "
+                        "bounds: [1, 1000]}\n"
+                        "measurements:\n  - positions: {file: nodes.csv}\n";
+  std::ofstream(scratch_ / "nodes.csv") << "id,x,y,z\n0,0,0,0\n";
+  const Outcome outcome = Drape({"fit", fit.string(), "--out", out_.string()});
+  EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
+  EXPECT_TRUE(HasLine(outcome.err, fit.string() + ":1:8: scene: cannot read the scene file",
+                      "no such file"))
+      << outcome.err;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+// `drape compare` refuses, with exit 2 and no report, a scene that is missing or broken, a bad
+// --set, a --repeat that is not a whole number and a --time-limit that is not finite (it wrote
+// a report with exit 0, and read "2x" as 2, before).
+TEST_F(BadInputTest, CompareRefusesBadScenesAndArguments) {
+  const std::string valid = WriteValidScene(scratch_);
+  const std::string broken = (kBadFolder / "option_negative_memory.yaml").string();
+  const std::string missing = (scratch_ / "no_such_scene.yaml").string();
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{missing}, missing + ": cannot read"},
+      {{broken}, broken + ":16:25: solver.nlopt-lbfgs.memory: must be"},
+      {{valid, "--set", "mesh.nodes"}, "--set:1:1: "},
+      {{valid, "--set", "material.node_mass=-1"}, "--set:1:20: material.node_mass"},
+      {{valid, "--repeat", "2x"}, "--repeat: expected a whole number"},
+      {{valid, "--repeat", "0"}, "--repeat: expected a whole number"},
+      {{valid, "--time-limit", "inf"}, "--time-limit: expected a finite number"},
+      {{valid, "--time-limit", "5s"}, "--time-limit: expected a finite number"},
+  };
+  for (const auto& [extra, expected] : cases) {
+    std::vector<std::string> args = {"compare", "--solvers",   "ceres-lbfgs",
+                                     "--out",   out_.string(), "--no-plots"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    SCOPED_TRACE(extra.back());
+    const Outcome outcome = Drape(args);
+    EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
+    EXPECT_NE(outcome.err.find(expected), std::string::npos) << outcome.err;
+    EXPECT_FALSE(fs::exists(out_ / "report.md"));
+  }
+}
+
 }  // namespace
 }  // namespace drape

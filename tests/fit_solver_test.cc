@@ -6,12 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 
 #include "src/fit/fit_measurements.h"
+#include "src/solvers/solver.h"
 #include "tests/fit_test_support.h"
 
 namespace drape::testing {
@@ -58,6 +60,33 @@ TEST(FitSolverTest, RecoversSpringStiffnessFromNodePositions) {
   // the default 1 mm sigma), and the error is covered by a few standard errors.
   EXPECT_NEAR(noisy.residual_variance, 0.25, 0.05);
   EXPECT_LT(std::abs(noisy.parameters[0] - truth), 4.0 * noisy.standard_errors[0]);
+}
+
+// Ctrl-C part way through a fit (here requested from the progress callback at the 6th
+// evaluation): the closing solve at the best point ran with the interrupt still set, stopped at
+// once far from it, and fit.json reported that state's objective with a false "several
+// equilibria" warning (issue 14, failure 7). The result is the best point's objective now.
+TEST(FitSolverTest, AnInterruptedFitReportsTheBestObjectiveFound) {
+  const TrueSolve solved =
+      SolveTruth("configs/fit/sheet_springs.yaml", {"material.springs.structural=35"});
+  const std::string folder = FitTempDir("springs_interrupted");
+  WriteNodePositions(solved.model, kNoise, 3, folder + "/nodes.csv");
+  FitSpec spec = LoadFitFile(SpringsFit(folder, "bobyqa"));
+  FitProblem problem(spec);
+  FitOptions options;
+  options.on_evaluation = [](const FitIterationRecord& record) {
+    if (record.evaluation == 6) RequestInterrupt();
+  };
+  const FitResult result = RunFit(problem, options);
+  ClearInterrupt();
+  double best = INFINITY;
+  for (const auto& record : result.history) {
+    if (record.inner_converged) best = std::min(best, record.objective);
+  }
+  ASSERT_TRUE(std::isfinite(best));
+  EXPECT_FALSE(result.converged);
+  EXPECT_NEAR(result.objective, best, 1e-6 * best) << result.termination;
+  EXPECT_EQ(result.termination.find("several equilibria"), std::string::npos) << result.termination;
 }
 
 std::string ScanFit(const std::string& folder, const std::string& method) {

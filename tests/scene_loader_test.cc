@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
-#include "src/solvers/solver.h"
+#include "src/scene/solver_methods.h"
 
 namespace drape {
 namespace {
@@ -114,8 +116,8 @@ TEST_F(SceneLoaderTest, MinimalSceneGetsTheDefaults) {
   const SolverSpec defaults;
   EXPECT_EQ(scene.solver.method, "newton");
   EXPECT_DOUBLE_EQ(scene.solver.tolerance, defaults.tolerance);
-  EXPECT_EQ(scene.solver.max_iterations, defaults.max_iterations);
-  EXPECT_DOUBLE_EQ(scene.solver.time_limit, defaults.time_limit);
+  EXPECT_FALSE(scene.solver.max_iterations.has_value());  // the method's default applies
+  EXPECT_FALSE(scene.solver.time_limit.has_value());
   EXPECT_TRUE(scene.solver.method_options.empty());
   EXPECT_EQ(scene.output.directory, (folder_ / "out" / "scene").string());
   EXPECT_EQ(scene.output.write, OutputSpec().write);
@@ -220,7 +222,7 @@ output:
   EXPECT_EQ(scene.solver.method, "ceres-lbfgs");
   EXPECT_DOUBLE_EQ(scene.solver.tolerance, 1e-9);
   EXPECT_EQ(scene.solver.max_iterations, 500);
-  EXPECT_DOUBLE_EQ(scene.solver.time_limit, 30.0);
+  EXPECT_DOUBLE_EQ(scene.solver.time_limit.value_or(0.0), 30.0);
   EXPECT_DOUBLE_EQ(scene.solver.method_options.at("ceres-lbfgs").at("memory"), 12.0);
   EXPECT_EQ(scene.output.directory, (folder_ / "results" / "here").string());
   EXPECT_EQ(scene.output.write.size(), 9u);
@@ -377,16 +379,28 @@ obstacles:
   EXPECT_EQ(scene.obstacles[0].where.key, "obstacles[0].disk");
 }
 
+// A value inside the option's range: its default when that is a finite number, else 1 (or 0,
+// "none", where that is accepted).
+double ValidValue(const MethodOption& option) {
+  if (option.default_value && std::isfinite(*option.default_value)) return *option.default_value;
+  return option.zero_means_none ? 0.0 : 1.0;
+}
+
 TEST_F(SceneLoaderTest, EveryRegisteredMethodAndItsOptionsAreAccepted) {
-  for (const auto& info : AllSolvers()) {
-    std::string text = std::string(kMinimal) + "solver:\n  method: " + info.name + "\n";
-    if (!info.option_keys.empty()) {
-      text += "  " + info.name + ": {" + info.option_keys.front() + ": 2}\n";
+  for (const auto& method : SolverMethods()) {
+    std::string text = std::string(kMinimal) + "solver:\n  method: " + method.name + "\n";
+    if (!method.options.empty()) text += "  " + method.name + ":\n";
+    for (const auto& option : method.options) {
+      std::ostringstream line;
+      line << "    " << option.key << ": " << ValidValue(option) << "\n";
+      text += line.str();
     }
     const Scene scene = Load(text);
-    EXPECT_EQ(scene.solver.method, info.name);
-    if (!info.option_keys.empty()) {
-      EXPECT_DOUBLE_EQ(scene.solver.method_options.at(info.name).at(info.option_keys.front()), 2.0);
+    EXPECT_EQ(scene.solver.method, method.name);
+    for (const auto& option : method.options) {
+      EXPECT_DOUBLE_EQ(scene.solver.method_options.at(method.name).at(option.key),
+                       ValidValue(option))
+          << method.name << "." << option.key;
     }
   }
 }

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "src/scene/solver_methods.h"
+
 namespace drape {
 namespace {
 
@@ -54,14 +56,21 @@ TEST(IterationMonitor, StopsWhenTheTimeIsUpOrTheCallerSaysSo) {
   EXPECT_EQ(summary.termination, "stopped by caller");
 }
 
-TEST(SolverRegistry, EveryMethodHasADescriptionAndBuilds) {
+TEST(SolverRegistry, EveryRegisteredMethodIsInTheCatalogueAndBuilds) {
   ASSERT_FALSE(AllSolvers().empty());
   for (const auto& info : AllSolvers()) {
-    EXPECT_FALSE(info.description.empty()) << info.name;
+    EXPECT_NE(FindSolverMethod(info.name), nullptr) << info.name;
     EXPECT_NE(info.make(), nullptr) << info.name;
     EXPECT_EQ(FindSolver(info.name), &info);
   }
   EXPECT_EQ(FindSolver("no-such-method"), nullptr);
+}
+
+TEST(SolverRegistry, EveryMethodOfTheCatalogueHasCode) {
+  for (const auto& method : SolverMethods()) {
+    EXPECT_NE(FindSolver(method.name), nullptr) << method.name;
+  }
+  EXPECT_EQ(SolverMethods().size(), AllSolvers().size());
 }
 
 }  // namespace

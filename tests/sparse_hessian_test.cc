@@ -2,10 +2,12 @@
 // per-term positive semidefinite projection) and SparseCholesky (CHOLMOD on it).
 #include "src/numerics/sparse_hessian.h"
 
+#include <SuiteSparse_config.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <new>
 #include <random>
 #include <vector>
 
@@ -144,6 +146,26 @@ TEST(SparseCholesky, SolvesAPositiveDefiniteSystemAndRefusesAnIndefiniteOne) {
   cholesky.Solve(b, &x);
   hessian.Multiply(hessian.projected_values(), x.data(), product.data());
   for (int k = 0; k < hessian.size(); ++k) EXPECT_NEAR(product[k] + x[k], b[k], 1e-9);
+}
+
+// CHOLMOD's allocations fail (SuiteSparse's allocator replaced by one that always fails): the
+// constructor used the NULL of cholmod_allocate_sparse unchecked and crashed (issue 14, failure
+// 7); now it reports std::bad_alloc, which the commands turn into "out of memory", exit 2.
+void* NoMemory(size_t) { return nullptr; }
+
+TEST(SparseCholesky, ReportsOutOfMemoryInsteadOfUsingANullMatrix) {
+  const Model model = ShakenSheet(0.8);
+  const AssembledHessian assembled(model, /*project=*/true);
+  void* (*original)(size_t) = SuiteSparse_config.malloc_func;
+  SuiteSparse_config.malloc_func = NoMemory;
+  bool out_of_memory = false;
+  try {
+    SparseCholesky cholesky(assembled.hessian);
+  } catch (const std::bad_alloc&) {
+    out_of_memory = true;
+  }
+  SuiteSparse_config.malloc_func = original;
+  EXPECT_TRUE(out_of_memory);
 }
 
 }  // namespace

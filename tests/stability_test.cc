@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "src/model/equilibrium.h"
-#include "src/solvers/solvers.h"
 #include "src/numerics/sparse_hessian.h"
+#include "src/solvers/solvers.h"
 #include "tests/assembled_hessian.h"
 #include "tests/hand_built_models.h"
 
@@ -65,6 +65,17 @@ TEST(Stability, AStraightChainCompressedBetweenItsSupportsIsASaddle) {
   EXPECT_TRUE(stability.computed);
   EXPECT_FALSE(stability.stable);
   EXPECT_NEAR(stability.min_eigenvalue, expected, 0.05 * std::abs(expected));
+}
+
+// A stiffness of 1e-320 (subnormal) made the shift τ underflow to 0, and the search for the most
+// negative eigenvalue multiplied 0 by 10 for ever (issue 14, failure 7). It ends now (in
+// milliseconds; a hang fails by the suite's timeout), with a number.
+TEST(Stability, TheEigenvalueSearchEndsForASubnormalStiffness) {
+  ChainSpec spec = CompressedChain();
+  spec.stiffness = 1e-320;
+  const Model model = Chain(spec);
+  const Stability stability = AnalyseStability(model, model.positions.data());
+  EXPECT_FALSE(std::isnan(stability.min_eigenvalue));
 }
 
 TEST(Stability, AStretchedStraightChainIsStable) {

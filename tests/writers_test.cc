@@ -93,10 +93,12 @@ class WritersTest : public ::testing::Test {
 
   std::string Path(const std::string& name) const { return (directory_ / name).string(); }
 
+  // The result files (hidden names left out: the folder's .drape.lock stays there).
   std::set<std::string> Files() const {
     std::set<std::string> names;
     for (const auto& entry : fs::directory_iterator(directory_)) {
-      names.insert(entry.path().filename().string());
+      const std::string name = entry.path().filename().string();
+      if (name[0] != '.') names.insert(name);
     }
     return names;
   }

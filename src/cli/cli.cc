@@ -6,6 +6,7 @@
 #include <exception>
 #include <functional>
 #include <map>
+#include <new>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -23,6 +24,7 @@
 #include "src/output/writers.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
+#include "src/scene/solver_methods.h"
 #include "src/solvers/run.h"
 #include "src/solvers/solver.h"
 
@@ -299,13 +301,17 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
   return result.converged ? kExitConverged : kExitNotConverged;
 }
 
+// The catalogue (src/scene/solver_methods.h): each method, its default limits and every option
+// with its default and range.
 int ListSolvers(std::ostream& out) {
-  for (const auto& info : AllSolvers()) {
-    out << info.name << "\n    " << info.description << "\n";
-    if (!info.option_keys.empty()) {
-      out << "    options (solver." << info.name << ".<key>):";
-      for (const auto& key : info.option_keys) out << " " << key;
-      out << "\n";
+  for (const auto& method : SolverMethods()) {
+    out << method.name << "\n    " << method.description << "\n    defaults: max_iterations "
+        << method.max_iterations << ", time_limit " << method.time_limit << " s\n";
+    if (method.options.empty()) continue;
+    out << "    options (solver." << method.name << ".<key>):\n";
+    for (const auto& option : method.options) {
+      out << "      " << option.key << " = " << DescribeDefault(option) << ", "
+          << DescribeRange(option) << ": " << option.doc << "\n";
     }
   }
   return kExitConverged;
@@ -358,6 +364,9 @@ int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     err << "drape: " << error.what() << "\n" << kUsage;
   } catch (const InputError& error) {
     err << error.what() << "\n";
+  } catch (const std::bad_alloc&) {
+    err << "drape: out of memory (the scene's mesh or method needs more memory than this machine "
+           "gives; a coarser mesh, or mesh.max_nodes, bounds it); nothing written\n";
   } catch (const std::exception& error) {
     err << "drape: error: " << error.what() << "\n";
   }

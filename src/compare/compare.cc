@@ -14,11 +14,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/compare/compare_report.h"
 #include "src/analysis/drape_analysis.h"
+#include "src/compare/compare_report.h"
 #include "src/model/equilibrium.h"
-#include "src/solvers/run.h"
 #include "src/scene/scene_loader.h"
+#include "src/scene/solver_methods.h"
+#include "src/solvers/run.h"
 #include "src/solvers/solver.h"
 
 namespace drape {
@@ -58,9 +59,10 @@ double Median(std::vector<double> values) {
   return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
-Scene WithLimits(Scene scene, double tolerance, const CompareOptions& options) {
+Scene WithLimits(Scene scene, const std::string& method, double tolerance,
+                 const CompareOptions& options) {
   scene.solver.tolerance = tolerance;
-  scene.solver.time_limit = std::min(scene.solver.time_limit, options.time_limit);
+  scene.solver.time_limit = std::min(EffectiveTimeLimit(scene.solver, method), options.time_limit);
   return scene;
 }
 
@@ -161,7 +163,7 @@ RunRecord CompareRun(const Scene& scene, const std::string& method, const SceneR
   RunRecord run;
   run.scene = scene.name;
   run.solver = method;
-  const Scene limited = WithLimits(scene, scene.solver.tolerance, options);
+  const Scene limited = WithLimits(scene, method, scene.solver.tolerance, options);
   for (int repeat = 0; repeat < std::max(1, options.repeat); ++repeat) {
     TimedSolve timed;
     try {
@@ -228,8 +230,8 @@ SceneReference ComputeReference(const Scene& scene, double size,
   SceneReference reference;
   double best_residual = std::numeric_limits<double>::infinity();
   auto consider = [&](const std::string& method, double tolerance) {
-    Scene limited = WithLimits(scene, tolerance, options);
-    limited.solver.max_iterations = std::max(limited.solver.max_iterations, 1000);
+    Scene limited = WithLimits(scene, method, tolerance, options);
+    limited.solver.max_iterations = std::max(EffectiveMaxIterations(limited.solver, method), 1000);
     try {
       const TimedSolve timed = Solve(limited, method, nullptr);
       const Certificate& certificate = timed.result.certificate;
@@ -345,6 +347,46 @@ SceneComparison CompareScene(const std::string& scene_file, const CompareOptions
   return comparison;
 }
 
+namespace {
+
+// The whole text as an integer ≥ 1 ("2x", "1.5" and "0" are refused).
+int WholeNumber(const std::string& flag, const std::string& value) {
+  size_t used = 0;
+  const int number = std::stoi(value, &used);
+  if (used != value.size() || number < 1) {
+    throw std::invalid_argument(flag + ": expected a whole number >= 1, got '" + value + "'");
+  }
+  return number;
+}
+
+// The whole text as a finite number > 0 ("inf", "nan", "5s" and "0" are refused).
+double FinitePositive(const std::string& flag, const std::string& value) {
+  size_t used = 0;
+  const double number = std::stod(value, &used);
+  if (used != value.size() || !std::isfinite(number) || !(number > 0.0)) {
+    throw std::invalid_argument(flag + ": expected a finite number of seconds > 0, got '" + value +
+                                "'");
+  }
+  return number;
+}
+
+// Every scene loads (with the --set overrides) and builds, before anything is solved or written;
+// the first that does not is reported, located, and the comparison stops (exit 2).
+bool ScenesLoad(const CompareOptions& options, std::ostream& log) {
+  for (const std::string& file : options.scenes) {
+    try {
+      const Scene scene = LoadScene(file, options.overrides);
+      BuildModel(scene);
+    } catch (const InputError& error) {
+      log << error.what() << "\ndrape compare: nothing compared, no report written\n";
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 CompareOptions ParseCompareArguments(const std::vector<std::string>& args) {
   CompareOptions options;
   for (size_t i = 0; i < args.size(); ++i) {
@@ -375,9 +417,9 @@ CompareOptions ParseCompareArguments(const std::vector<std::string>& args) {
       } else if (flag == "--out") {
         options.out_dir = value;
       } else if (flag == "--repeat") {
-        options.repeat = std::stoi(value);
+        options.repeat = WholeNumber(flag, value);
       } else if (flag == "--time-limit") {
-        options.time_limit = std::stod(value);
+        options.time_limit = FinitePositive(flag, value);
       } else if (flag == "--set") {
         options.overrides.push_back(value);
       } else {
@@ -385,7 +427,8 @@ CompareOptions ParseCompareArguments(const std::vector<std::string>& args) {
       }
     } catch (const std::logic_error& error) {
       if (dynamic_cast<const std::invalid_argument*>(&error) &&
-          std::string(error.what()).rfind("unknown option", 0) == 0) {
+          (std::string(error.what()).rfind("unknown option", 0) == 0 ||
+           std::string(error.what()).rfind(flag + ":", 0) == 0)) {
         throw;
       }
       throw std::invalid_argument(flag + ": not a number: '" + value + "'");
@@ -409,6 +452,7 @@ int RunCompare(const CompareOptions& options, std::ostream& log) {
     log << "drape compare: --repeat must be at least 1 and --time-limit positive\n";
     return 2;
   }
+  if (!ScenesLoad(options, log)) return 2;
   const Clock::time_point start = Clock::now();
   std::vector<SceneComparison> comparisons;
   for (const std::string& file : options.scenes) {

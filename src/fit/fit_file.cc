@@ -336,6 +336,13 @@ void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
   for (const auto& parameter : spec.parameters) {
     overrides.push_back(parameter.key + "=" + FormatNumber(parameter.initial));
   }
+  std::error_code missing;
+  if (!std::filesystem::is_regular_file(specimen.scene_file, missing)) {
+    throw InputError(specimen.where,
+                     "cannot read the scene file " + specimen.scene_file + ": " +
+                         (std::filesystem::exists(specimen.scene_file, missing) ? "it is not a file"
+                                                                                : "no such file"));
+  }
   Scene scene;
   try {
     scene = LoadScene(specimen.scene_file, overrides);
@@ -464,7 +471,7 @@ FitSpec LoadFitFile(const std::string& path) {
   spec.file = path;
   spec.name = fs::path(path).stem().string();
   spec.root = Location{path, 1, 1, ""};
-  const YAML::Node document = ReadYamlDocument(path, "fit file");
+  const YAML::Node document = ReadYamlFile(path, "fit file");
   YamlOrigins origins(path);
   ReadTop(YamlRoot(document, origins), &spec);
   for (const auto& specimen : spec.specimens) CheckSpecimen(spec, specimen);

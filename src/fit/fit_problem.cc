@@ -10,6 +10,7 @@
 #include "src/numerics/sparse_hessian.h"
 #include "src/output/json.h"
 #include "src/scene/scene_loader.h"
+#include "src/scene/solver_methods.h"
 #include "src/solvers/solver.h"
 
 namespace drape {
@@ -201,7 +202,8 @@ bool FitProblem::SolveEquilibrium(FitEquilibrium* equilibrium, const std::vector
   if (equilibrium->tolerance == 0.0) {
     equilibrium->tolerance = std::min(equilibrium->scene.solver.tolerance, kInnerTolerance);
   }
-  const SolverSpec& limits = equilibrium->scene.solver;
+  const int max_iterations = EffectiveMaxIterations(equilibrium->scene.solver, "newton");
+  const double time_limit = EffectiveTimeLimit(equilibrium->scene.solver, "newton");
   // Warm start: the free coordinates of the nearest equilibrium (fixed ones as the scene says),
   // with a short budget; from the scene's own start if that fails.
   InnerRun run;
@@ -210,13 +212,13 @@ bool FitProblem::SolveEquilibrium(FitEquilibrium* equilibrium, const std::vector
     for (size_t k = 0; k < model->positions.size(); ++k) {
       if (!model->fixed[k]) model->positions[k] = (*start)[k];
     }
-    run = RunNewton(*model, equilibrium->tolerance,
-                    std::min(kWarmStartIterations, limits.max_iterations), limits.time_limit);
+    run = RunNewton(*model, equilibrium->tolerance, std::min(kWarmStartIterations, max_iterations),
+                    time_limit);
   }
   int iterations = run.iterations;
   if (!(run.residual <= kAcceptedResidual)) {
     model->positions = model->initial;
-    run = RunNewton(*model, equilibrium->tolerance, limits.max_iterations, limits.time_limit);
+    run = RunNewton(*model, equilibrium->tolerance, max_iterations, time_limit);
     iterations += run.iterations;
   }
   // A floor above the tolerance: later solves of this equilibrium stop as soon as they reach it.

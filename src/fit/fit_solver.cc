@@ -41,6 +41,7 @@ class Recorder {
     if (evaluation.converged && evaluation.objective < best_objective_) {
       best_objective_ = evaluation.objective;
       best_u_ = u;
+      best_evaluation_ = evaluation;
     }
     record.best_objective = best_objective_;
     record.parameters = problem_.ToParameters(u);
@@ -54,6 +55,7 @@ class Recorder {
 
   const std::vector<double>& best_u() const { return best_u_; }
   double best_objective() const { return best_objective_; }
+  const FitEvaluation& best_evaluation() const { return best_evaluation_; }
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
 
  private:
@@ -63,6 +65,7 @@ class Recorder {
   Clock::time_point start_;
   double best_objective_ = std::numeric_limits<double>::infinity();
   std::vector<double> best_u_;
+  FitEvaluation best_evaluation_;
 };
 
 // An unconverged inner solve makes the point unusable: the objective there is replaced by a large
@@ -222,9 +225,18 @@ FitResult RunFit(FitProblem& problem, const FitOptions& options) {
   // The state at the best point, solved from a cold start (as `drape solve` would), and its
   // Jacobian (implicit; whole finite differences otherwise). A different objective than the
   // warm-started one means the drape has several equilibria there: said in the termination.
+  // After a Ctrl-C the search is over but these closing solves still run to their end (a solve
+  // with the interrupt set stops at once, unconverged, far from the optimum); a second Ctrl-C
+  // stops them, and then the best point is reported as the search evaluated it.
+  if (InterruptRequested()) ClearInterrupt();
   result.final_evaluation = problem.Evaluate(recorder.best_u(), true);
+  if (!result.final_evaluation.converged && InterruptRequested()) {
+    result.final_evaluation = recorder.best_evaluation();
+    result.termination += "; interrupted again: the best point is reported as the search found it";
+  }
   const double warm = recorder.best_objective(), cold = result.final_evaluation.objective;
-  if (std::abs(cold - warm) > 1e-6 * std::max(warm, cold) + 1e-12) {
+  if (result.final_evaluation.converged &&
+      std::abs(cold - warm) > 1e-6 * std::max(warm, cold) + 1e-12) {
     char text[200];
     std::snprintf(text, sizeof text,
                   "; WARNING: solved from its initial shape the optimum's objective is %.6g, not "

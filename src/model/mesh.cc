@@ -19,8 +19,10 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cassert>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <numeric>
@@ -294,19 +296,22 @@ Mesh BuildCircle(const MeshSpec& spec) {
   }
   const double rho = spec.radius / spec.spacing;  // radius in lattice steps
   const int m = static_cast<int>(std::floor(rho * (1.0 + 1e-9)));
+  // The loader caps the lattice (mesh.max_nodes ≤ 1e8 ⇒ side ≤ 10⁴); the index is size_t anyway.
+  assert(rho < 1e5 && "a circle lattice beyond the loader's mesh.max_nodes");
   const int side = 2 * m + 1;
   const double limit = rho * rho * (1.0 + 1e-9);
   Mesh mesh;
   mesh.nu = mesh.nv = side;
-  std::vector<int> id(side * side, -1);
+  std::vector<int> id(static_cast<size_t>(side) * side, -1);
+  auto index = [side](int i, int j) { return static_cast<size_t>(j) * side + i; };
   auto at = [&](int i, int j) {  // lattice (i, j) in [0, side)², -1 outside
-    return (i < 0 || j < 0 || i >= side || j >= side) ? -1 : id[j * side + i];
+    return (i < 0 || j < 0 || i >= side || j >= side) ? -1 : id[index(i, j)];
   };
   for (int j = 0; j < side; ++j) {
     for (int i = 0; i < side; ++i) {
       const double x = i - m, y = j - m;
       if (x * x + y * y > limit) continue;
-      id[j * side + i] = static_cast<int>(mesh.nodes.size());
+      id[index(i, j)] = static_cast<int>(mesh.nodes.size());
       mesh.nodes.push_back(spec.origin + spec.spacing * Eigen::Vector3d(x, y, 0.0));
       mesh.grid_index.push_back({i, j});
     }
@@ -345,10 +350,8 @@ void AddUnique(int a, int b, std::set<Link>* seen, std::vector<Link>* links) {
 }
 
 Mesh BuildArc(const MeshSpec& spec) {
-  if (!(spec.radius > 0.0) || spec.rings < 1 || spec.spokes < 3) {
-    throw InputError(spec.where,
-                     "an arc mesh needs a positive radius, at least 1 ring and 3 spokes");
-  }
+  // The loader owns these ranges (mesh.spokes ≥ 3, rings ≥ 1, rings × spokes ≤ mesh.max_nodes).
+  assert(spec.radius > 0.0 && spec.rings >= 1 && spec.spokes >= 3);
   const int rings = spec.rings, spokes = spec.spokes;
   auto id = [spokes](int ring, int spoke) {  // ring 0 is the centre
     return ring == 0 ? 0 : 1 + (ring - 1) * spokes + (spoke % spokes);
@@ -531,8 +534,30 @@ SurfaceData ReadPly(std::istream& in, const MeshSpec& spec) {
   return data;
 }
 
+// A face of zero area gives its nodes no mass and no membrane: an error, located at its line.
+void CheckFaceAreas(const SurfaceData& data, const Mesh& mesh, const MeshSpec& spec) {
+  const double size = BoundingDiagonal(AsColumns(mesh.nodes));
+  for (size_t f = 0; f < data.faces.size(); ++f) {
+    const auto& face = data.faces[f];
+    Eigen::Vector3d twice_area = Eigen::Vector3d::Zero();  // the fan's summed cross products
+    const Eigen::Vector3d& first = mesh.nodes[face[0]];
+    for (size_t k = 1; k + 1 < face.size(); ++k) {
+      twice_area += (mesh.nodes[face[k]] - first).cross(mesh.nodes[face[k + 1]] - first);
+    }
+    if (!(twice_area.norm() > 1e-12 * size * size)) {
+      FileError(spec, data.face_lines[f], "a face has zero area (its vertices are collinear)");
+    }
+  }
+}
+
 // Triangulates the faces (fans), checking every index; fills nodes, triangles, springs, areas.
 Mesh SurfaceMesh(const SurfaceData& data, const MeshSpec& spec) {
+  if (data.vertices.size() > static_cast<size_t>(spec.max_nodes)) {
+    FileError(spec, 0,
+              "the file has " + std::to_string(data.vertices.size()) +
+                  " vertices, above the limit of " + std::to_string(spec.max_nodes) +
+                  " nodes; raise mesh.max_nodes to build it anyway");
+  }
   const int n = static_cast<int>(data.vertices.size());
   if (n == 0) FileError(spec, 0, "the file has no vertices");
   if (data.faces.empty()) FileError(spec, 0, "the file has no faces (springs follow face edges)");
@@ -582,10 +607,16 @@ Mesh SurfaceMesh(const SurfaceData& data, const MeshSpec& spec) {
   }
   mesh.flexion_warp.assign(flexion.begin(), flexion.end());
   LumpTriangleAreas(&mesh);
+  CheckFaceAreas(data, mesh, spec);
   return mesh;
 }
 
 Mesh BuildFromFile(const MeshSpec& spec) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(spec.path, error)) {
+    FileError(spec, 0,
+              "cannot read the mesh file: not a regular file (a folder, a device or missing)");
+  }
   std::ifstream in(spec.path);
   if (!in) FileError(spec, 0, "cannot read the mesh file");
   const std::string extension = Lowercase(spec.path.substr(spec.path.find_last_of('.') + 1));

@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "costs/constant_force_potential.h"
 #include "costs/pressure_potential.h"
@@ -288,10 +289,46 @@ void AddLoads(const Scene& scene, const Mesh& mesh, Model* model) {
   AddPressure(scene, mesh, model);
 }
 
-// Gravity or loads along a direction in which nothing is fixed (and no obstacle holds the fabric)
-// would translate the whole fabric without end: the energy has no minimum.
+// Whether some node, carried along `direction` from its start, meets one of the obstacles: sphere
+// tracing on the signed distance, out to 1000 × the distance scale of the scene.
+bool SomeObstacleOnThePath(const Scene& scene, const Model& model,
+                           const Eigen::Vector3d& direction) {
+  constexpr int kMaxSteps = 400;
+  for (const ObstacleSpec& obstacle : scene.obstacles) {
+    for (int k = 0; k < model.num_nodes; ++k) {
+      const Eigen::Vector3d start = Eigen::Map<const Eigen::Vector3d>(&model.positions[3 * k]);
+      const double reach = 1e3 * (model.size + std::abs(ObstacleDistance(obstacle, start.data())));
+      double travelled = 0.0;
+      for (int step = 0; step < kMaxSteps && travelled <= reach; ++step) {
+        const Eigen::Vector3d at = start + travelled * direction;
+        const double distance = ObstacleDistance(obstacle, at.data());
+        if (distance <= 1e-9 * model.size) return true;
+        travelled += distance;
+      }
+    }
+  }
+  return false;
+}
+
+// A node that starts inside an obstacle's body would be pushed out by the contact penalty with
+// a force far beyond the loads: refused, at the obstacle.
+void CheckNoNodeStartsInside(const Scene& scene, const Model& model) {
+  for (const ObstacleSpec& obstacle : scene.obstacles) {
+    for (int k = 0; k < model.num_nodes; ++k) {
+      const double distance = ObstacleDistance(obstacle, &model.positions[3 * k]);
+      if (distance < -1e-9 * model.size) {
+        std::ostringstream text;
+        text << "node " << k << " starts inside this obstacle (" << -distance
+             << " m deep): move the fabric or the obstacle";
+        throw InputError(obstacle.where, text.str());
+      }
+    }
+  }
+}
+
+// Gravity or loads along a direction in which nothing is fixed (and no obstacle on the way holds
+// the fabric) would translate the whole fabric without end: the energy has no minimum.
 void CheckHasMinimum(const Scene& scene, const Model& model) {
-  if (!scene.obstacles.empty()) return;
   for (int c = 0; c < 3; ++c) {
     bool fixed = false;
     double net = 0.0, magnitude = 0.0;
@@ -303,11 +340,15 @@ void CheckHasMinimum(const Scene& scene, const Model& model) {
     if (fixed || magnitude == 0.0) continue;
     const std::string axis = kAxisNames[c];
     if (std::abs(net) > 1e-12 * magnitude) {
+      Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+      direction[c] = net > 0.0 ? 1.0 : -1.0;
+      if (SomeObstacleOnThePath(scene, model, direction)) continue;
       throw InputError(scene.loads.where,
                        "gravity/loads act along " + axis + " but no node is fixed along " + axis +
                            " and no obstacle holds the fabric: the energy has no minimum (fix "
                            "some nodes)");
     }
+    if (!scene.obstacles.empty()) continue;  // sliding along an obstacle: left to the solver
     throw InputError(scene.loads.where, "loads act along " + axis + " but no node is fixed along " +
                                             axis + ": the fabric is free to slide along " + axis +
                                             " and its equilibrium is not unique (fix some nodes)");
@@ -368,6 +409,7 @@ Model BuildModel(const Scene& scene) {
   }
   AddLoads(scene, mesh, &model);
   if (!scene.obstacles.empty()) AddContactTerms(scene.obstacles, scene.contact, &model);
+  CheckNoNodeStartsInside(scene, model);
   CheckHasMinimum(scene, model);
   CheckPressureHeld(scene, model);
   ValidateModel(model);

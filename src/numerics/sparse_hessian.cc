@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <new>
 
 #include "src/numerics/library_threads.h"
 
@@ -37,8 +38,9 @@ bool ProjectFixed(EigenvalueFilter filter, int n, double* row_major) {
   return true;
 }
 
-// A translation-invariant 2-node term's Hessian is [A −A; −A A] = [1 −1; −1 1] ⊗ A (src/model/term.h
-// builds it so, exactly): its eigenvalues are 0 and 2·eig(A), and projecting A projects the whole.
+// A translation-invariant 2-node term's Hessian is [A −A; −A A] = [1 −1; −1 1] ⊗ A
+// (src/model/term.h builds it so, exactly): its eigenvalues are 0 and 2·eig(A), and projecting A
+// projects the whole.
 bool ProjectSpringLike(EigenvalueFilter filter, double* row_major) {
   Eigen::Map<Eigen::Matrix<double, 6, 6, Eigen::RowMajor>> matrix(row_major);
   const Eigen::Matrix3d block = matrix.topLeftCorner<3, 3>();
@@ -192,20 +194,31 @@ SparseCholesky::SparseCholesky(const FreeHessian& hessian) : hessian_(hessian) {
   const int n = hessian.size();
   matrix_ = cholmod_allocate_sparse(n, n, hessian.num_nonzeros(), /*sorted=*/1, /*packed=*/1,
                                     /*stype=*/1, CHOLMOD_REAL, &common_);
+  if (!matrix_) ReleaseAndThrowOutOfMemory();
   std::copy(hessian.column_starts().begin(), hessian.column_starts().end(),
             static_cast<int*>(matrix_->p));
   std::copy(hessian.rows().begin(), hessian.rows().end(), static_cast<int*>(matrix_->i));
   std::fill_n(static_cast<double*>(matrix_->x), hessian.num_nonzeros(), 0.0);
   factor_ = cholmod_analyze(matrix_, &common_);
   rhs_ = cholmod_zeros(n, 1, CHOLMOD_REAL, &common_);
+  if (!factor_ || !rhs_) ReleaseAndThrowOutOfMemory();
 }
 
-SparseCholesky::~SparseCholesky() {
-  cholmod_free_dense(&rhs_, &common_);
-  cholmod_free_factor(&factor_, &common_);
-  cholmod_free_sparse(&matrix_, &common_);
+// CHOLMOD returns NULL when it runs out of memory (or fails otherwise): the constructor frees
+// what it got and reports std::bad_alloc, which the command turns into "out of memory", exit 2.
+void SparseCholesky::ReleaseAndThrowOutOfMemory() {
+  Release();
+  throw std::bad_alloc();
+}
+
+void SparseCholesky::Release() {
+  if (rhs_) cholmod_free_dense(&rhs_, &common_);
+  if (factor_) cholmod_free_factor(&factor_, &common_);
+  if (matrix_) cholmod_free_sparse(&matrix_, &common_);
   cholmod_finish(&common_);
 }
+
+SparseCholesky::~SparseCholesky() { Release(); }
 
 double SparseCholesky::factor_nonzeros() const { return common_.lnz; }
 
@@ -220,12 +233,14 @@ bool SparseCholesky::Factorize(const std::vector<double>& values,
   const int ok = cholmod_factorize(matrix_, factor_, &common_);
   last_factorization_seconds_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (common_.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
   return ok && common_.status == CHOLMOD_OK && factor_->minor == factor_->n;
 }
 
 void SparseCholesky::Solve(const std::vector<double>& b, std::vector<double>* x) {
   std::copy(b.begin(), b.end(), static_cast<double*>(rhs_->x));
   cholmod_dense* solution = cholmod_solve(CHOLMOD_A, factor_, rhs_, &common_);
+  if (!solution) throw std::bad_alloc();
   const double* values = static_cast<const double*>(solution->x);
   x->assign(values, values + hessian_.size());
   cholmod_free_dense(&solution, &common_);

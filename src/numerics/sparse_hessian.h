@@ -75,7 +75,8 @@ class FreeHessian {
 
 class SparseCholesky {
  public:
-  // Symbolic analysis of the pattern of `hessian` (which must outlive this object).
+  // Symbolic analysis of the pattern of `hessian` (which must outlive this object). Throws
+  // std::bad_alloc when CHOLMOD runs out of memory (here, in Factorize or in Solve).
   explicit SparseCholesky(const FreeHessian& hessian);
   ~SparseCholesky();
   SparseCholesky(const SparseCholesky&) = delete;
@@ -92,6 +93,9 @@ class SparseCholesky {
   double factorization_flops() const { return common_.fl; }  // of the numeric factorisation
 
  private:
+  void Release();
+  [[noreturn]] void ReleaseAndThrowOutOfMemory();
+
   const FreeHessian& hessian_;
   cholmod_common common_;
   cholmod_sparse* matrix_ = nullptr;

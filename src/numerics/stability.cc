@@ -13,6 +13,7 @@
 #include "src/numerics/stability.h"
 
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -60,14 +61,16 @@ double InverseIterationEstimate(const FreeHessian& hessian, SparseCholesky* chol
 // λ_min of H when H + τ I is not positive definite, and (if `vector`) its eigenvector, unit norm.
 double MostNegativeEigenvalue(const FreeHessian& hessian, SparseCholesky* cholesky, double tau,
                               std::vector<double>* vector = nullptr) {
-  double low = tau, high = 10.0 * tau;
+  // A shift that underflows (stiffnesses of 1e-320 give τ = 0 or a subnormal τ) would never grow
+  // by tenfold steps: the bracket starts at the smallest normal number at least.
+  double low = std::max(tau, std::numeric_limits<double>::min()), high = 10.0 * low;
   while (!PositiveDefiniteWithShift(hessian, cholesky, high)) {
     low = high;
     high *= 10.0;
     if (!std::isfinite(high)) return -INFINITY;
   }
   while (high / low > kBracketRatio) {
-    const double middle = std::sqrt(low * high);
+    const double middle = std::sqrt(low) * std::sqrt(high);  // low · high may underflow
     if (PositiveDefiniteWithShift(hessian, cholesky, middle)) {
       high = middle;
     } else {

@@ -21,6 +21,7 @@
 #include "src/output/atomic_file.h"
 #include "src/output/json.h"
 #include "src/output/render.h"
+#include "src/output/result_folder.h"
 
 namespace drape {
 
@@ -384,8 +385,8 @@ void CheckOutputWritable(const std::string& directory) {
 
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
                   const std::string& directory, const LevelsReport* levels) {
-  const fs::path folder(directory);
-  fs::create_directories(folder);
+  ResultFolder result_folder(directory);  // the files go to its staging folder, then move in
+  const fs::path& folder = result_folder.staging();
   std::optional<DrapeAnalysis> drape;
   if (HasDrapeCoefficient(scene, model)) drape = AnalyseDrape(scene, model);
   if (Requested(scene, "summary")) {
@@ -427,6 +428,7 @@ void WriteOutputs(const Scene& scene, const Model& model, const RunResult& resul
     WriteAtomically(folder / "shadow.png",
                     [&](std::ostream& out) { DrawShadowView(scene, model, *drape, out); });
   }
+  result_folder.Commit();
 }
 
 }  // namespace drape

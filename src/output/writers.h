@@ -17,8 +17,10 @@ namespace drape {
 // that an unwritable folder costs no solving). Throws std::runtime_error saying why not.
 void CheckOutputWritable(const std::string& directory);
 
-// Writes what scene.output.write asks for into `directory` (created if needed). `levels` (of a
-// `solver.levels` run, else null) adds the `levels` and `extrapolation` members to summary.json.
+// Writes what scene.output.write asks for into `directory` (created if needed), as a whole
+// (src/output/result_folder.h): files of an earlier run that this one does not write are removed.
+// `levels` (of a `solver.levels` run, else null) adds the `levels` and `extrapolation` members to
+// summary.json.
 void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
                   const std::string& directory, const LevelsReport* levels = nullptr);
 

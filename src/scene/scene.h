@@ -53,6 +53,8 @@ struct MeshSpec {
   bool closed = false;                  // chain: a link from the last node back to the first
   // file
   std::string path;  // resolved against the scene file's folder
+  int max_nodes =
+      1000000;  // the loader refuses a larger mesh (mesh.max_nodes, src/scene/scene_size.h)
   Location where;
 };
 
@@ -158,13 +160,16 @@ struct ContactSpec {
 struct SolverSpec {
   std::string method = "newton";
   double tolerance = 1e-8;  // relative equilibrium residual
-  int max_iterations = 1000;
-  double time_limit = 600.0;  // s
+  // As given; when not, the method's own defaults (src/scene/solver_methods.h; see
+  // MaxIterations, TimeLimit below).
+  std::optional<int> max_iterations;
+  std::optional<double> time_limit;  // s
   // Nested lattices to solve on (grid and circle meshes): 1 = the scene's mesh only; N > 1 solves
   // on spacings 2^(N-1) h, ..., 2h, h, each started from the previous one, and extrapolates.
   int levels = 1;
   Location levels_where;
-  // Method-specific keys: solver.<method>.<key>: number (validated by the solver registry).
+  // Method-specific keys: solver.<method>.<key>: number (checked against the catalogue of
+  // src/scene/solver_methods.h).
   std::map<std::string, std::map<std::string, double>> method_options;
   Location where;
 };

@@ -16,9 +16,10 @@
 #include <sstream>
 
 #include "src/scene/fabric_parameters.h"
+#include "src/scene/scene_size.h"
+#include "src/scene/solver_methods.h"
 #include "src/scene/yaml_overrides.h"
 #include "src/scene/yaml_reader.h"
-#include "src/solvers/solver.h"
 
 namespace drape {
 namespace {
@@ -31,9 +32,6 @@ const std::vector<std::string>& OutputKinds() {
                                                  "png",     "kinetic", "profile", "shadow"};
   return kinds;
 }
-
-// The default method. It is accepted even while no solver of that name is registered yet.
-constexpr const char* kDefaultMethod = "newton";
 
 bool Contains(const std::vector<std::string>& list, const std::string& item) {
   return std::find(list.begin(), list.end(), item) != list.end();
@@ -56,11 +54,12 @@ std::string Resolve(const std::string& directory, const std::string& path) {
 
 const std::map<std::string, std::vector<std::string>>& MeshKeysByKind() {
   static const std::map<std::string, std::vector<std::string>> keys = {
-      {"grid", {"kind", "size", "nodes", "u", "v", "plane", "origin"}},
-      {"circle", {"kind", "radius", "spacing", "origin"}},
-      {"arc", {"kind", "radius", "rings", "spokes", "origin"}},
-      {"chain", {"kind", "length", "nodes", "direction", "origin", "points", "closed"}},
-      {"file", {"kind", "path"}},
+      {"grid", {"kind", "size", "nodes", "u", "v", "plane", "origin", "max_nodes"}},
+      {"circle", {"kind", "radius", "spacing", "origin", "max_nodes"}},
+      {"arc", {"kind", "radius", "rings", "spokes", "origin", "max_nodes"}},
+      {"chain",
+       {"kind", "length", "nodes", "direction", "origin", "points", "closed", "max_nodes"}},
+      {"file", {"kind", "path", "max_nodes"}},
   };
   return keys;
 }
@@ -192,10 +191,32 @@ void ReadChain(const YamlMap& map, MeshSpec* spec) {
   }
 }
 
+// The largest mesh.max_nodes accepted: node ids and coordinate indices stay within int.
+constexpr int kLargestMaxNodes = 100000000;
+
+// mesh.max_nodes, and the mesh's node count against it, before anything is built.
+void CheckMeshSize(const YamlMap& map, MeshSpec* spec) {
+  if (const auto given = map.Find("max_nodes")) {
+    spec->max_nodes = ReadIntAtLeast(*given, 2);
+    if (spec->max_nodes > kLargestMaxNodes) {
+      Fail(*given, "must be at most " + std::to_string(kLargestMaxNodes) + ", got " +
+                       std::to_string(spec->max_nodes));
+    }
+  }
+  const double nodes = EstimatedNodes(*spec);
+  if (nodes <= spec->max_nodes) return;
+  std::ostringstream text;
+  text.precision(3);
+  text << "the mesh would have " << nodes << " nodes (about " << nodes * kBytesPerNode / 1e9
+       << " GB to solve), above the limit of " << spec->max_nodes
+       << " nodes; raise mesh.max_nodes to build it anyway";
+  Fail(map.value(), text.str());
+}
+
 MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory) {
   static const std::vector<std::string> all_keys = {
-      "kind",    "size",  "nodes",  "u",      "v",         "plane", "origin", "radius",
-      "spacing", "rings", "spokes", "length", "direction", "path",  "points", "closed"};
+      "kind",  "size",   "nodes",  "u",         "v",    "plane",  "origin", "radius",   "spacing",
+      "rings", "spokes", "length", "direction", "path", "points", "closed", "max_nodes"};
   const YamlMap map(value, all_keys);
   MeshSpec spec;
   spec.where = value.where;
@@ -222,7 +243,7 @@ MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory) {
     case MeshSpec::Kind::kArc:
       if (const auto radius = map.Find("radius")) spec.radius = ReadPositive(*radius);
       if (const auto rings = map.Find("rings")) spec.rings = ReadIntAtLeast(*rings, 1);
-      if (const auto spokes = map.Find("spokes")) spec.spokes = ReadIntAtLeast(*spokes, 1);
+      if (const auto spokes = map.Find("spokes")) spec.spokes = ReadIntAtLeast(*spokes, 3);
       break;
     case MeshSpec::Kind::kChain:
       ReadChain(map, &spec);
@@ -236,6 +257,7 @@ MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory) {
     }
   }
   if (const auto origin = map.Find("origin")) spec.origin = ReadVector3(*origin);
+  CheckMeshSize(map, &spec);
   return spec;
 }
 
@@ -764,17 +786,24 @@ ContactSpec ReadContact(const YamlValue& value) {
 
 std::vector<std::string> MethodNames() {
   std::vector<std::string> names;
-  for (const auto& info : AllSolvers()) names.push_back(info.name);
-  if (!Contains(names, kDefaultMethod)) names.push_back(kDefaultMethod);
+  for (const auto& method : SolverMethods()) names.push_back(method.name);
   return names;
 }
 
-std::map<std::string, double> ReadMethodOptions(const std::string& method, const YamlValue& value) {
-  const SolverInfo* info = FindSolver(method);
-  // A method named but not registered yet (the default) takes any numeric option.
-  const YamlMap map = info ? YamlMap(value, info->option_keys) : YamlMap(value);
+// solver.<method>: only that method's keys, each a number in its registered range.
+std::map<std::string, double> ReadMethodOptions(const SolverMethod& method,
+                                                const YamlValue& value) {
+  std::vector<std::string> keys;
+  for (const auto& option : method.options) keys.push_back(option.key);
+  const YamlMap map(value, keys);
   std::map<std::string, double> options;
-  for (const auto& key : map.Keys()) options[key] = ReadNumber(map.Get(key));
+  for (const auto& key : map.Keys()) {
+    const YamlValue given = map.Get(key);
+    const double number = ReadNumber(given);
+    const std::string problem = CheckMethodOption(*FindMethodOption(method, key), number);
+    if (!problem.empty()) Fail(given, problem);
+    options[key] = number;
+  }
   return options;
 }
 
@@ -787,7 +816,7 @@ SolverSpec ReadSolver(const YamlValue& value) {
   solver.where = value.where;
   if (const auto method = map.Find("method")) {
     solver.method = ReadString(*method);
-    if (!FindSolver(solver.method) && solver.method != kDefaultMethod) {
+    if (!FindSolverMethod(solver.method)) {
       const auto nearest = NearestName(solver.method, methods);
       Fail(*method, "unknown method '" + solver.method + "'" +
                         (nearest ? "; did you mean '" + *nearest + "'?" : "") +
@@ -802,9 +831,10 @@ SolverSpec ReadSolver(const YamlValue& value) {
     solver.levels_where = v->where;
     if (solver.levels > 8) Fail(*v, "at most 8 levels (each halves the spacing)");
   }
-  for (const auto& method : methods) {
-    if (const auto v = map.Find(method))
-      solver.method_options[method] = ReadMethodOptions(method, *v);
+  for (const auto& method : SolverMethods()) {
+    if (const auto v = map.Find(method.name)) {
+      solver.method_options[method.name] = ReadMethodOptions(method, *v);
+    }
   }
   return solver;
 }
@@ -874,8 +904,6 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   if (!top.Has("loads")) scene->loads.where = OptionalSection(top, "loads").where;
 }
 
-YAML::Node ReadDocument(const std::string& path) { return ReadYamlDocument(path, "scene file"); }
-
 }  // namespace
 
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides) {
@@ -885,7 +913,7 @@ Scene LoadScene(const std::string& path, const std::vector<std::string>& overrid
   if (scene.directory.empty()) scene.directory = ".";
   scene.name = fs::path(path).stem().string();
   scene.root = Location{path, 1, 1, ""};
-  YAML::Node document = ReadDocument(path);
+  YAML::Node document = ReadYamlFile(path, "scene file");
   YamlOrigins origins(path);
   ApplyOverrides(document, overrides, &origins);
   ReadScene(YamlRoot(document, origins), &scene);

@@ -278,7 +278,96 @@ std::optional<double> ParseNumber(const std::string& text, std::string* error) {
     *error = quoted + " is not a finite number";
     return std::nullopt;
   }
+  if (std::abs(number) > kLargestInputMagnitude ||
+      (number != 0.0 && std::abs(number) < kSmallestInputMagnitude)) {
+    std::ostringstream text;
+    text << quoted << " is out of range: numbers in a scene lie between " << kSmallestInputMagnitude
+         << " and " << kLargestInputMagnitude
+         << " in magnitude (or are 0), so that their products stay finite";
+    *error = text.str();
+    return std::nullopt;
+  }
   return number;
+}
+
+namespace {
+
+// Where each document of a stream starts, and where its content (its first node) starts.
+class DocumentStarts : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    starts.push_back(mark);
+    contents.push_back(mark);
+    awaiting_content_ = true;
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { Content(mark); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { Content(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    Content(mark);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    Content(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    Content(mark);
+  }
+  void OnMapEnd() override {}
+
+  std::vector<YAML::Mark> starts, contents;
+
+ private:
+  void Content(const YAML::Mark& mark) {
+    if (awaiting_content_) contents.back() = mark;
+    awaiting_content_ = false;
+  }
+  bool awaiting_content_ = false;
+};
+
+// Throws InputError for a second document, or for text the parser does not advance over (it
+// would otherwise yield empty documents for ever). Throws YAML::Exception for a syntax error.
+void CheckSingleDocument(const std::string& text, const std::string& path,
+                         const std::string& what) {
+  std::istringstream stream(text);
+  YAML::Parser parser(stream);
+  DocumentStarts documents;
+  while (documents.starts.size() < 2 && parser.HandleNextDocument(documents)) {
+  }
+  if (documents.starts.size() < 2) return;
+  const YAML::Mark& first = documents.starts[0];
+  const YAML::Mark& second = documents.starts[1];
+  const YAML::Mark& content = documents.contents[1];
+  const Location where{path, content.line + 1, content.column + 1, ""};
+  if (second.pos == first.pos) {
+    throw InputError(where, "YAML syntax error: unexpected text here (a stray ',', ']' or '}'?)");
+  }
+  throw InputError(where, "a " + what + " holds one YAML document; this is a second one");
+}
+
+}  // namespace
+
+YAML::Node ReadYamlFile(const std::string& path, const std::string& what) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw InputError(path + ": cannot read the " + what + ": it is a folder");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read the " + what + ": " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": cannot read the " + what + ": read error");
+  try {
+    CheckSingleDocument(text.str(), path, what);
+    return YAML::Load(text.str());
+  } catch (const YAML::Exception& exception) {  // a ParserException, with its mark
+    const YAML::Mark mark = exception.mark;
+    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
+                     "YAML syntax error: " + exception.msg);
+  }
 }
 
 double ReadNumber(const YamlValue& value) {
@@ -365,31 +454,6 @@ std::vector<double> ReadNumbers(const YamlValue& value, int size) {
 Eigen::Vector3d ReadVector3(const YamlValue& value) {
   const auto numbers = ReadNumbers(value, 3);
   return {numbers[0], numbers[1], numbers[2]};
-}
-
-YAML::Node ReadYamlDocument(const std::string& path, const std::string& what) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError(path + ": cannot read the " + what + ": it is a folder");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read the " + what + ": " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read the " + what + ": read error");
-  try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text.str());
-    if (documents.size() > 1) {
-      const YAML::Mark mark = documents[1].Mark();
-      throw InputError(Location{path, mark.line + 1, mark.column + 1, ""},
-                       "a " + what + " holds one YAML document; this is a second one");
-    }
-    return documents.empty() ? YAML::Node() : documents[0];
-  } catch (const YAML::Exception& exception) {  // a ParserException, with its mark
-    const YAML::Mark mark = exception.mark;
-    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
-                     "YAML syntax error: " + exception.msg);
-  }
 }
 
 }  // namespace drape

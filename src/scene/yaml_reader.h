@@ -5,6 +5,8 @@
 #ifndef DRAPE_SRC_SCENE_YAML_READER_H_
 #define DRAPE_SRC_SCENE_YAML_READER_H_
 
+#include <yaml-cpp/anchor.h>
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
@@ -58,11 +60,6 @@ struct YamlValue {
 };
 
 // The root of a document.
-// The one YAML document of the file at `path` (`what` names it in messages: "scene file"). Throws
-// InputError for a folder, an unreadable file, a YAML syntax error (at its line and column) or a
-// second document.
-YAML::Node ReadYamlDocument(const std::string& path, const std::string& what);
-
 YamlValue YamlRoot(const YAML::Node& root, const YamlOrigins& origins);
 
 // Throws InputError at `value`.
@@ -117,6 +114,18 @@ std::string ItemKey(const std::string& parent, int index);
 std::vector<YamlValue> ReadList(const YamlValue& value);
 
 // Scalars. Numbers are plain decimal scalars, fully parsed and finite.
+// The one YAML document of the file at `path` (a `what`, e.g. "scene file", for the messages),
+// or a null node if the file is empty. Throws InputError, located, for an unreadable file, a
+// syntax error or a second document. (yaml-cpp 0.7's LoadAll never returns on some inputs, e.g. a
+// lone ',': this reader counts the documents itself and stops where the parser stops advancing.)
+YAML::Node ReadYamlFile(const std::string& path, const std::string& what);
+
+// Every number read lies in [1e-30, 1e15] in magnitude, or is 0: within that range the
+// products the model forms (mass × gravity × height, stiffness × length², ...) stay finite, and
+// no stiffness is subnormal (tests/bad_input_test.cc; density 1e308 or a stiffness of 1e-320 are
+// refused where they are written).
+constexpr double kLargestInputMagnitude = 1e15;
+constexpr double kSmallestInputMagnitude = 1e-30;
 double ReadNumber(const YamlValue& value);
 double ReadPositive(const YamlValue& value);     // > 0
 double ReadNonNegative(const YamlValue& value);  // >= 0

@@ -16,6 +16,7 @@ void OnInterrupt(int signal) { interrupt_signal = signal; }
 bool InterruptRequested() { return interrupt_signal != 0; }
 int InterruptSignal() { return interrupt_signal; }
 void RequestInterrupt() { interrupt_signal = SIGINT; }
+void ClearInterrupt() { interrupt_signal = 0; }
 void InstallInterruptHandler() {
   std::signal(SIGINT, OnInterrupt);
   std::signal(SIGTERM, OnInterrupt);

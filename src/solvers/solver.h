@@ -1,5 +1,6 @@
 // The solver interface: every method takes a Model and Options and returns a Summary. Methods are
-// listed in one registry (solver_registry.cc); `drape solvers` prints it.
+// described in the catalogue (src/scene/solver_methods.h; `drape solvers` prints it) and their
+// code is registered under the same names (solver_registry.cc).
 #ifndef DRAPE_SRC_SOLVERS_SOLVER_H_
 #define DRAPE_SRC_SOLVERS_SOLVER_H_
 
@@ -26,8 +27,10 @@ struct IterationRecord {
 struct SolverOptions {
   double tolerance = 1e-8;  // relative residual to reach
   int max_iterations = 1000;
-  double time_limit = 600.0;                     // s
-  std::map<std::string, double> method_options;  // solver.<method>.<key>
+  double time_limit = 600.0;  // s
+  // solver.<method>.<key> as given; the solver reads each through MethodOptionValue
+  // (src/scene/solver_methods.h), which supplies the registered default.
+  std::map<std::string, double> method_options;
   // Called after every iteration, with model.positions at the current iterate. Returning false
   // stops the solve (termination "stopped by caller").
   std::function<bool(const IterationRecord&)> on_iteration;
@@ -60,10 +63,10 @@ class Solver {
   virtual SolverSummary Solve(Model& model, const SolverOptions& options) const = 0;
 };
 
+// The code of one method; its description and options are in the catalogue under the same name
+// (src/scene/solver_methods.h).
 struct SolverInfo {
   std::string name;
-  std::string description;               // one line, for `drape solvers`
-  std::vector<std::string> option_keys;  // accepted keys under solver.<name>
   std::function<std::unique_ptr<Solver>()> make;
 };
 
@@ -110,6 +113,8 @@ class IterationMonitor {
 bool InterruptRequested();
 int InterruptSignal();
 void RequestInterrupt();
+// For a command that goes on after an interrupt stopped one stage (drape fit's closing solves).
+void ClearInterrupt();
 void InstallInterruptHandler();
 
 }  // namespace drape

@@ -19,6 +19,7 @@
 #include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/local_energy.h"
+#include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 
 namespace drape {
@@ -138,9 +139,8 @@ ceres::GradientProblemSolver::Options CeresOptions(const SolverOptions& options,
                                                    ceres::IterationCallback* callback) {
   ceres::GradientProblemSolver::Options ceres_options;
   ceres_options.line_search_direction_type = ceres::LBFGS;
-  const auto memory = options.method_options.find("memory");
   ceres_options.max_lbfgs_rank =
-      memory != options.method_options.end() ? static_cast<int>(memory->second) : 20;
+      static_cast<int>(*MethodOptionValue("ceres-lbfgs", options.method_options, "memory"));
   ceres_options.max_num_iterations = options.max_iterations;
   ceres_options.max_solver_time_in_seconds = options.time_limit;
   // Ceres fails a line search once step × |direction| falls below this absolute length (1e-9 by

@@ -15,23 +15,27 @@
 // after subtracting, on each spring at its limit, the tension (≥ 0) that the constraint carries,
 // found leaf to root along the breadth-first tree. Writes the kinetic energy per step (trace).
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/stretch_limit.h"
+#include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 
 namespace drape {
 
 namespace {
 
-double Option(const SolverOptions& options, const char* key, double fallback) {
-  const auto found = options.method_options.find(key);
-  return found == options.method_options.end() ? fallback : found->second;
+// Option `key`: as given, else its default in the catalogue (src/scene/solver_methods.cc), which
+// is none for dt and stretch_limit (derived from the model).
+std::optional<double> Option(const SolverOptions& options, const char* key) {
+  return MethodOptionValue("explicit-euler", options.method_options, key);
 }
 
 Eigen::Vector3d At(const std::vector<double>& values, int node) {
@@ -223,14 +227,12 @@ class ExplicitEulerSolver : public Solver {
                          " is free but has no mass (give the material a density or node_mass)");
       }
     }
-    const double dt = Option(options, "dt", DefaultTimeStep(model));
-    const double friction = Option(options, "friction", 0.01);
-    const double limit = Option(options, "stretch_limit", model.stretch_limit);
-    if (!(dt > 0.0) || !(friction >= 0.0 && friction < 1.0) || (limit != 0.0 && !(limit > 1.0))) {
-      throw InputError(
-          "explicit-euler: needs dt > 0, 0 <= friction < 1 and stretch_limit > 1 "
-          "(or 0: none)");
-    }
+    // The scene loader checks the ranges where the options are given (located); the model's
+    // stretch limit is checked where the scene gives it.
+    const double dt = Option(options, "dt").value_or(DefaultTimeStep(model));
+    const double friction = *Option(options, "friction");
+    const double limit = Option(options, "stretch_limit").value_or(model.stretch_limit);
+    assert(dt > 0.0 && friction >= 0.0 && friction < 1.0 && (limit == 0.0 || limit > 1.0));
     std::unique_ptr<ProvotConstraint> provot;  // mutable: keeps its tensions between steps
     if (limit > 0.0) provot = std::make_unique<ProvotConstraint>(model, limit);
 

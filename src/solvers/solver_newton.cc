@@ -45,26 +45,28 @@
 #include "src/model/mesh.h"
 #include "src/numerics/sparse_hessian.h"
 #include "src/numerics/stability.h"
+#include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 
 namespace drape {
 
 namespace {
 
+// The options' defaults and ranges are in the catalogue (src/scene/solver_methods.cc).
 struct NewtonSettings {
-  double regularization = 1e-4;  // μ at the start (dimensionless)
+  double regularization;  // μ at the start (dimensionless)
   double min_regularization = 1e-12;
   double max_regularization = 1e16;
-  int max_line_search = 30;  // energy evaluations per step
-  int max_expansions = 4;    // doublings of an accepted full step
+  int max_line_search;  // energy evaluations per step
+  int max_expansions;   // doublings of an accepted full step
   // H₊ takes the magnitudes of negative eigenvalues above this relative residual, and clamps
   // them to zero below it (0: always magnitudes, ∞: always clamped).
-  double absolute_projection_above = 1e-4;
+  double absolute_projection_above;
   // Try the unprojected H first below this relative residual (by default always; after H fails to
   // factorise, H₊ is used until the residual has fallen tenfold).
-  double exact_hessian_residual = std::numeric_limits<double>::infinity();
+  double exact_hessian_residual;
   // After H fails, H is tried again once the residual has fallen tenfold or after this many steps.
-  int exact_retry_steps = 10;
+  int exact_retry_steps;
   double armijo = 1e-4;
   // 1: where the residual is met at a saddle, leave it along the most negative curvature (issue
   // 14); 0: stop there (the certificate then reports the saddle).
@@ -72,25 +74,15 @@ struct NewtonSettings {
 };
 
 NewtonSettings ReadSettings(const std::map<std::string, double>& options) {
+  auto read = [&options](const char* key) { return *MethodOptionValue("newton", options, key); };
   NewtonSettings settings;
-  auto read = [&options](const char* key, double* value) {
-    if (auto it = options.find(key); it != options.end()) *value = it->second;
-  };
-  read("regularization", &settings.regularization);
-  read("exact_hessian_residual", &settings.exact_hessian_residual);
-  double max_line_search = settings.max_line_search;
-  read("max_line_search", &max_line_search);
-  settings.max_line_search = std::max(1, static_cast<int>(max_line_search));
-  double max_expansions = settings.max_expansions;
-  read("max_expansions", &max_expansions);
-  settings.max_expansions = std::max(0, static_cast<int>(max_expansions));
-  read("absolute_projection_above", &settings.absolute_projection_above);
-  double exact_retry_steps = settings.exact_retry_steps;
-  read("exact_retry_steps", &exact_retry_steps);
-  settings.exact_retry_steps = std::max(1, static_cast<int>(exact_retry_steps));
-  double escape_saddles = 1.0;
-  read("escape_saddles", &escape_saddles);
-  settings.escape_saddles = escape_saddles != 0.0;
+  settings.regularization = read("regularization");
+  settings.exact_hessian_residual = read("exact_hessian_residual");
+  settings.max_line_search = static_cast<int>(read("max_line_search"));
+  settings.max_expansions = static_cast<int>(read("max_expansions"));
+  settings.absolute_projection_above = read("absolute_projection_above");
+  settings.exact_retry_steps = static_cast<int>(read("exact_retry_steps"));
+  settings.escape_saddles = read("escape_saddles") != 0.0;
   return settings;
 }
 

@@ -34,6 +34,7 @@
 #include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/local_energy.h"
+#include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 
 namespace drape {
@@ -49,9 +50,9 @@ constexpr int kStallEvaluations = 200;
 // Restarts in a row that do not lower the residual at the best point before the solve gives up.
 constexpr int kFruitlessRestarts = 5;
 
-double Option(const SolverOptions& options, const char* key, double fallback) {
-  const auto found = options.method_options.find(key);
-  return found == options.method_options.end() ? fallback : found->second;
+// Option `key` of method `name`: as given, else its default in the catalogue.
+double Option(const std::string& name, const SolverOptions& options, const char* key) {
+  return *MethodOptionValue(name, options.method_options, key);
 }
 
 // What the objective callback needs: the model, the stop rule and the opt to stop.
@@ -213,7 +214,8 @@ double ObjectiveScale(const Model& model, double tolerance) {
 
 class NloptSolver : public Solver {
  public:
-  explicit NloptSolver(nlopt::algorithm algorithm) : algorithm_(algorithm) {}
+  NloptSolver(std::string name, nlopt::algorithm algorithm)
+      : name_(std::move(name)), algorithm_(algorithm) {}
 
   SolverSummary Solve(Model& model, const SolverOptions& options) const override {
     const DofMap dofs(model);
@@ -227,7 +229,7 @@ class NloptSolver : public Solver {
     SolverSummary summary;
     IterationMonitor monitor(model, options, &summary);
     Objective objective(model, dofs, monitor);
-    objective.local_energy = Option(options, "local_energy", 1.0) != 0.0;
+    objective.local_energy = Option(name_, options, "local_energy") != 0.0;
     objective.monitor_tolerance = options.tolerance;
     objective.scale = ObjectiveScale(model, options.tolerance);
     std::vector<double> x(n);
@@ -287,7 +289,7 @@ class NloptSolver : public Solver {
     opt.set_maxtime(std::max(1e-3, options.time_limit - objective->monitor.ElapsedSeconds()));
     if (algorithm_ == nlopt::LD_LBFGS || algorithm_ == nlopt::LD_TNEWTON_PRECOND_RESTART ||
         algorithm_ == nlopt::LD_VAR2) {
-      opt.set_vector_storage(static_cast<unsigned>(Option(options, "memory", 10.0)));
+      opt.set_vector_storage(static_cast<unsigned>(Option(name_, options, "memory")));
     }
     double value = 0.0;
     std::string outcome;
@@ -308,18 +310,19 @@ class NloptSolver : public Solver {
     return outcome;
   }
 
+  const std::string name_;
   const nlopt::algorithm algorithm_;
 };
 
 }  // namespace
 
 std::unique_ptr<Solver> NewNloptSolver(const std::string& name) {
-  if (name == "nlopt-lbfgs") return std::make_unique<NloptSolver>(nlopt::LD_LBFGS);
+  if (name == "nlopt-lbfgs") return std::make_unique<NloptSolver>(name, nlopt::LD_LBFGS);
   if (name == "nlopt-tnewton")
-    return std::make_unique<NloptSolver>(nlopt::LD_TNEWTON_PRECOND_RESTART);
-  if (name == "nlopt-var2") return std::make_unique<NloptSolver>(nlopt::LD_VAR2);
-  if (name == "nlopt-mma") return std::make_unique<NloptSolver>(nlopt::LD_MMA);
-  if (name == "nlopt-slsqp") return std::make_unique<NloptSolver>(nlopt::LD_SLSQP);
+    return std::make_unique<NloptSolver>(name, nlopt::LD_TNEWTON_PRECOND_RESTART);
+  if (name == "nlopt-var2") return std::make_unique<NloptSolver>(name, nlopt::LD_VAR2);
+  if (name == "nlopt-mma") return std::make_unique<NloptSolver>(name, nlopt::LD_MMA);
+  if (name == "nlopt-slsqp") return std::make_unique<NloptSolver>(name, nlopt::LD_SLSQP);
   return nullptr;
 }
 

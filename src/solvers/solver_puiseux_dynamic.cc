@@ -6,23 +6,26 @@
 // paper's rules): relative residual r < tolerance (converged), kinetic energy w_c < ε² (at rest),
 // t > t_max; plus the iteration and time limits. The kinetic energy of the nodes, w_c = ½Σ m|v|²,
 // and of the centre of gravity, w_cg = ½ M |v_G|², with v = δ/dt, go to kinetic.csv.
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "src/model/equilibrium.h"
-#include "src/solvers/solvers.h"
 #include "src/model/spring_laplacian.h"
+#include "src/scene/solver_methods.h"
+#include "src/solvers/solvers.h"
 
 namespace drape {
 
 namespace {
 
-double OptionOr(const SolverOptions& options, const char* key, double fallback) {
-  const auto found = options.method_options.find(key);
-  return found == options.method_options.end() ? fallback : found->second;
+// Option `key`: as given, else its default in the catalogue (src/scene/solver_methods.cc).
+std::optional<double> Option(const SolverOptions& options, const char* key) {
+  return MethodOptionValue("puiseux-dynamic", options.method_options, key);
 }
 
 struct KineticEnergy {
@@ -54,11 +57,11 @@ class PuiseuxDynamicSolver : public Solver {
           "has '" +
           unsupported + "' terms");
     }
-    const double dt = OptionOr(options, "dt", 0.01), beta = OptionOr(options, "beta", 0.0);
-    const double t_max = OptionOr(options, "t_max", INFINITY);
-    const double epsilon = OptionOr(options, "epsilon", options.tolerance);
-    if (!(dt > 0.0) || !(beta >= 0.0))
-      throw InputError("puiseux-dynamic: dt must be > 0, beta >= 0");
+    // The scene loader checks the ranges (dt > 0, beta >= 0) where the options are given.
+    const double dt = *Option(options, "dt"), beta = *Option(options, "beta");
+    const double t_max = *Option(options, "t_max");
+    const double epsilon = Option(options, "epsilon").value_or(options.tolerance);
+    assert(dt > 0.0 && beta >= 0.0);
 
     SolverSummary summary;
     summary.trace_columns = {"step", "t", "w_c", "w_cg", "residual"};

@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "src/model/equilibrium.h"
-#include "src/solvers/solvers.h"
 #include "src/model/spring_laplacian.h"
+#include "src/scene/solver_methods.h"
+#include "src/solvers/solvers.h"
 
 namespace drape {
 
@@ -34,8 +35,8 @@ class PuiseuxFixedPointSolver : public Solver {
       monitor.Stop(error);
       return summary;
     }
-    const auto relaxation = options.method_options.find("relaxation");
-    const double omega = relaxation == options.method_options.end() ? 1.0 : relaxation->second;
+    const double omega =
+        *MethodOptionValue("puiseux-fixed-point", options.method_options, "relaxation");
     std::vector<double> gradient, residual(model.num_dofs()), step(model.num_dofs(), 0.0);
     for (int iteration = 0;; ++iteration) {
       double energy;
