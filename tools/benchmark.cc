@@ -13,6 +13,7 @@
 // others are held to a shorter limit. Ratios to newton are printed only where newton reached 1e-8.
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
@@ -277,6 +278,7 @@ SolveRun RunDrape(const std::string& binary, const BenchScene& scene, double cap
   }
   SolveRun run;
   std::system(("rm -rf '" + out + "'").c_str());
+  std::fflush(stdout);  // or the child's copy of the buffer is printed twice
   const pid_t child = fork();
   if (child == 0) {
     std::vector<char*> argv;
@@ -322,8 +324,36 @@ SolveRun RunDrape(const std::string& binary, const BenchScene& scene, double cap
 // Hessian, timed in this process at a perturbed flat state, as the median of `repeats`.
 struct AssemblyProbe {
   int nodes = 0, terms = 0;
-  double assembly = 0, factorization = 0;
+  double assembly = 0, factorization = 0;          // wall s
+  double assembly_cpu = 0, factorization_cpu = 0;  // CPU s (all threads)
+  // CPU s of the terms' local derivatives alone, one thread: EnergyHessian (the fast path where a
+  // functor has one) and ReferenceHessian (nested Jets over every whole functor, as before).
+  double derivatives_cpu = 0, reference_cpu = 0;
 };
+
+double CpuSeconds(clockid_t clock) {
+  timespec time{};
+  clock_gettime(clock, &time);
+  return time.tv_sec + 1e-9 * time.tv_nsec;
+}
+
+// One-thread CPU time of every term's local energy, gradient and Hessian.
+double LocalDerivativesCpu(const Model& model, bool reference) {
+  std::vector<double> gradient(64), hessian(64 * 64);
+  double energy = 0.0;
+  const double start = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+  for (const auto& term : model.terms) {
+    const int n = term->num_coordinates();
+    gradient.resize(n);
+    hessian.resize(n * n);
+    if (reference) {
+      term->ReferenceHessian(model.positions.data(), &energy, gradient.data(), hessian.data());
+    } else {
+      term->EnergyHessian(model.positions.data(), &energy, gradient.data(), hessian.data());
+    }
+  }
+  return CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - start;
+}
 
 double Median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
@@ -348,25 +378,37 @@ AssemblyProbe ProbeAssembly(const BenchScene& scene, int repeats) {
   probe.terms = static_cast<int>(model.terms.size());
   FreeHessian::Assembly assembly;
   std::vector<double> gradient;
-  std::vector<double> assembly_times, factorization_times;
+  std::vector<double> assembly_times, factorization_times, assembly_cpu, factorization_cpu;
+  std::vector<double> derivatives_cpu, reference_cpu;
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
     if (!hessian.Assemble(model.positions.data(), true, &assembly, &gradient)) {
       std::fprintf(stderr, "%s: assembly failed at the probe state\n", scene.name.c_str());
       return probe;
     }
+    assembly_cpu.push_back(CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu_start);
     assembly_times.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    derivatives_cpu.push_back(LocalDerivativesCpu(model, false));
+    reference_cpu.push_back(LocalDerivativesCpu(model, true));
     double largest = 0.0;
     for (int d : hessian.diagonal()) largest = std::max(largest, hessian.projected_values()[d]);
     std::vector<double> shift(hessian.size(), 1e-6 * largest);
+    double factorization_start = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
     while (!cholesky.Factorize(hessian.projected_values(), &shift)) {
       for (double& s : shift) s *= 10.0;
+      factorization_start = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
     }
+    factorization_cpu.push_back(CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - factorization_start);
     factorization_times.push_back(cholesky.last_factorization_seconds());
   }
   probe.assembly = Median(assembly_times);
   probe.factorization = Median(factorization_times);
+  probe.assembly_cpu = Median(assembly_cpu);
+  probe.factorization_cpu = Median(factorization_cpu);
+  probe.derivatives_cpu = Median(derivatives_cpu);
+  probe.reference_cpu = Median(reference_cpu);
   return probe;
 }
 
@@ -457,13 +499,16 @@ int ScenesMain(int argc, char** argv) {
   std::printf("Assembly probe (this build, %u hardware threads; median of %d):\n\n",
               std::thread::hardware_concurrency(), repeats);
   std::printf(
-      "| scene | nodes | terms | assembly s | µs per node | factorisation s | "
-      "assembly ÷ factorisation |\n|---|---|---|---|---|---|---|\n");
+      "| scene | nodes | terms | assembly wall s | factorisation wall s | assembly ÷ "
+      "factorisation, wall | same, CPU | assembly CPU µs per node | local derivatives CPU µs "
+      "per node: this path | nested Jets |\n|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& scene : scenes) {
     const AssemblyProbe probe = ProbeAssembly(scene, repeats);
-    std::printf("| %s | %d | %d | %.4f | %.2f | %.4f | %.2f |\n", scene.name.c_str(), probe.nodes,
-                probe.terms, probe.assembly, 1e6 * probe.assembly / probe.nodes,
-                probe.factorization, probe.assembly / probe.factorization);
+    std::printf("| %s | %d | %d | %.4f | %.4f | %.2f | %.2f | %.2f | %.2f | %.2f |\n",
+                scene.name.c_str(), probe.nodes, probe.terms, probe.assembly, probe.factorization,
+                probe.assembly / probe.factorization, probe.assembly_cpu / probe.factorization_cpu,
+                1e6 * probe.assembly_cpu / probe.nodes, 1e6 * probe.derivatives_cpu / probe.nodes,
+                1e6 * probe.reference_cpu / probe.nodes);
     std::fflush(stdout);
   }
   if (probe_only) return 0;
