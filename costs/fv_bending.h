@@ -54,12 +54,19 @@ struct FvBendingEdge {
     assert(rigidity >= 0.0 && volume_size > 0.0 && volume_area > 0.0);
   }
 
+  // In two stages, binormal then residuals linear in it, for the fast derivatives
+  // (src/model/fast_hessian.h).
   template <typename T>
   bool operator()(const T* const a, const T* const p, const T* const b, T* residual) const {
     T binormal[3];
     CurvatureBinormal(a, p, b, binormal);
-    for (int c = 0; c < 3; ++c) residual[c] = scale * binormal[c];
+    Residuals(binormal, residual);
     return true;
+  }
+
+  template <typename T>
+  void Residuals(const T* binormal, T* residual) const {
+    for (int c = 0; c < 3; ++c) residual[c] = scale * binormal[c];
   }
 
   static FvBendingEdge Create(double rigidity, double volume_size, double volume_area) {
@@ -103,25 +110,42 @@ struct FvBending {
     assert(size1 > 0.0 && size2 > 0.0 && area > 0.0);
   }
 
-  // Nodes in the paper's order W, P, E, S, N.
+  // Nodes in the paper's order W, P, E, S, N. Written in stages, so that the fast derivatives
+  // (src/model/fast_hessian.h) can differentiate each stage on its own and chain them: the two
+  // binormals (3 nodes each) and unit tangents (2 nodes each), the two sections (of one binormal
+  // and the other direction's tangent), then residuals linear in the sections.
   template <typename T>
   bool operator()(const T* const w, const T* const p, const T* const e, const T* const s,
                   const T* const n, T* residual) const {
-    T k1[3], k2[3], t1[3], t2[3];
+    T k1[3], k2[3], t1[3], t2[3], section1[4], section2[4];
     CurvatureBinormal(w, p, e, k1);
     CurvatureBinormal(s, p, n, k2);
     UnitDirection(w, e, t1);
     UnitDirection(s, n, t2);
-    const T along1 = (k1[0] * t2[0] + k1[1] * t2[1] + k1[2] * t2[2]) / size1;
-    const T along2 = (k2[0] * t1[0] + k2[1] * t1[1] + k2[2] * t1[2]) / size2;
-    const T s1 = -along1, s2 = along2;
+    Section(k1, t2, size1, section1);
+    Section(k2, t1, size2, section2);
+    Residuals(section1, section2, residual);
+    return true;
+  }
+
+  // One direction's section: from its binormal k, the other direction's unit tangent t and the
+  // control-volume size l, the component along t, k·t/l, and the rest, k/l − (k·t/l) t.
+  template <typename T>
+  static void Section(const T* k, const T* t, double size, T* section) {
+    section[0] = (k[0] * t[0] + k[1] * t[1] + k[2] * t[2]) / size;
+    for (int c = 0; c < 3; ++c) section[1 + c] = k[c] / size - section[0] * t[c];
+  }
+
+  // The residuals from the two sections (s1 = −along1, s2 = along2): linear in the sections.
+  template <typename T>
+  void Residuals(const T* section1, const T* section2, T* residual) const {
+    const T s1 = -section1[0], s2 = section2[0];
     residual[0] = coupling.l11 * s1 + coupling.l12 * s2;
     residual[1] = coupling.l22 * s2;
     for (int c = 0; c < 3; ++c) {
-      residual[2 + c] = off1 * (k1[c] / size1 - along1 * t2[c]);
-      residual[5 + c] = off2 * (k2[c] / size2 - along2 * t1[c]);
+      residual[2 + c] = off1 * section1[1 + c];
+      residual[5 + c] = off2 * section2[1 + c];
     }
-    return true;
   }
 
   static FvBending Create(double d1, double d2, double d12, double size1, double size2,

@@ -21,10 +21,35 @@ inline int NodesSpanned(const Term& term) {
   return count;
 }
 
+// The term's energy, gradient and Hessian (by whatever path EnergyHessian takes: the staged chain
+// rule of src/model/fast_hessian.h for the finite-volume bending) equal those of nested Jets over
+// the whole functor (ReferenceHessian), to `tolerance` relative to the largest entry.
+inline void ExpectHessianMatchesReference(const Term& term, const std::vector<double>& positions,
+                                          double tolerance = 1e-10) {
+  const int n = term.num_coordinates();
+  std::vector<double> gradient(n), hessian(n * n), reference_gradient(n), reference(n * n);
+  double energy = 0.0, reference_energy = 0.0;
+  ASSERT_TRUE(term.EnergyHessian(positions.data(), &energy, gradient.data(), hessian.data()));
+  ASSERT_TRUE(term.ReferenceHessian(positions.data(), &reference_energy, reference_gradient.data(),
+                                    reference.data()));
+  EXPECT_NEAR(energy, reference_energy, tolerance * std::abs(reference_energy) + 1e-300);
+  double g_scale = 0.0, h_scale = 0.0;
+  for (double g : reference_gradient) g_scale = std::max(g_scale, std::abs(g));
+  for (double h : reference) h_scale = std::max(h_scale, std::abs(h));
+  for (int k = 0; k < n; ++k) {
+    EXPECT_NEAR(gradient[k], reference_gradient[k], tolerance * g_scale) << "gradient entry " << k;
+  }
+  for (int k = 0; k < n * n; ++k) {
+    EXPECT_NEAR(hessian[k], reference[k], tolerance * h_scale) << "Hessian entry " << k;
+  }
+}
+
 // Energy and its gradient/Hessian from the term agree with central differences of the energy
-// (and of the gradient), to `tolerance` relative to the largest entry.
+// (and of the gradient), to `tolerance` relative to the largest entry; and the Hessian equals the
+// nested-Jet reference to 1e-10 (ExpectHessianMatchesReference). Every functor's test calls this.
 inline void ExpectDerivativesMatchDifferences(const Term& term, std::vector<double> positions,
                                               double tolerance = 1e-6) {
+  ExpectHessianMatchesReference(term, positions);
   const int n = term.num_coordinates();
   std::vector<double> gradient(n), hessian(n * n), g_plus(n), g_minus(n);
   double energy = 0.0, energy_h = 0.0;

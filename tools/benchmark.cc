@@ -13,7 +13,9 @@
 // others are held to a shorter limit. Ratios to newton are printed only where newton reached 1e-8.
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <chrono>
@@ -22,12 +24,14 @@
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include "src/model/equilibrium.h"
-#include "src/numerics/library_threads.h"
 #include "src/model/model.h"
+#include "src/numerics/library_threads.h"
+#include "src/numerics/sparse_hessian.h"
 #include "src/scene/scene_loader.h"
 #include "src/solvers/solver.h"
 
@@ -157,8 +161,7 @@ void PrintSplits(const std::vector<std::pair<int, Row>>& splits) {
   }
 }
 
-int Main(int argc, char** argv) {
-  RunLibrariesOnOneThread();  // as drape does (src/numerics/library_threads.h)
+int SolverComparisonMain(int argc, char** argv) {
   std::vector<int> sizes = {50, 100, 256};
   std::vector<std::string> solvers;
   for (const auto& info : AllSolvers()) solvers.push_back(info.name);
@@ -230,7 +233,317 @@ int Main(int argc, char** argv) {
   return 0;
 }
 
+// ---- The scene benchmark (the default mode) ----
+
+// One benchmark scene: a scene file and the overrides that set its size.
+struct BenchScene {
+  std::string name, file;
+  std::vector<std::string> overrides;
+};
+
+const std::vector<BenchScene>& AllScenes() {
+  static const std::vector<BenchScene> scenes = {
+      {"drape10", "configs/fv/drape_tester_cotton_30.yaml", {"mesh.spacing=0.01"}},
+      {"drape5", "configs/fv/drape_tester_cotton_30.yaml", {"mesh.spacing=0.005"}},
+      {"drape2.6", "configs/fv/drape_tester_cotton_30.yaml", {"mesh.spacing=0.0026"}},
+      {"table", "configs/fv/square_table.yaml", {"mesh.nodes=[101,101]"}},
+      {"sphere", "configs/fv/sphere.yaml", {"mesh.nodes=[101,101]"}},
+      {"sheet50", "configs/hard/two_corner_sheet.yaml", {"mesh.nodes=[50,50]"}},
+      {"sheet100", "configs/hard/two_corner_sheet.yaml", {"mesh.nodes=[100,100]"}},
+      {"sheet256", "configs/hard/two_corner_sheet.yaml", {"mesh.nodes=[256,256]"}},
+  };
+  return scenes;
+}
+
+// What one `drape solve` run reported in its summary.json, and its peak memory.
+struct SolveRun {
+  bool ran = false, converged = false, capped = false;
+  int nodes = 0, iterations = 0, folds = -1;
+  double wall = 0, assembly = 0, factorization = 0, factorizations = 0, peak_mb = 0;
+  double drape_coefficient = -1, energy = 0;
+};
+
+// Runs `binary solve` on the scene in a child process with the time limit `cap` (s), writing only
+// summary.json into a fresh folder, and reads that summary back.
+SolveRun RunDrape(const std::string& binary, const BenchScene& scene, double cap,
+                  const std::string& out) {
+  std::vector<std::string> args = {binary, "solve", scene.file, "--out", out};
+  std::vector<std::string> sets = scene.overrides;
+  sets.push_back("solver.time_limit=" + std::to_string(cap));
+  sets.push_back("solver.max_iterations=100000");
+  sets.push_back("output.write=[summary]");
+  for (const auto& set : sets) {
+    args.push_back("--set");
+    args.push_back(set);
+  }
+  SolveRun run;
+  std::system(("rm -rf '" + out + "'").c_str());
+  std::fflush(stdout);  // or the child's copy of the buffer is printed twice
+  const pid_t child = fork();
+  if (child == 0) {
+    std::vector<char*> argv;
+    for (auto& arg : args) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    if (!freopen("/dev/null", "w", stdout)) _exit(127);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  struct rusage usage {};
+  wait4(child, &status, 0, &usage);
+  run.peak_mb = usage.ru_maxrss / 1024.0;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) > 1) return run;
+  YAML::Node summary;
+  try {
+    summary = YAML::LoadFile(out + "/summary.json");  // JSON is YAML
+  } catch (const std::exception&) {
+    return run;
+  }
+  run.ran = true;
+  run.converged = summary["converged"].as<bool>();
+  run.nodes = summary["nodes"].as<int>();
+  run.iterations = summary["iterations"].as<int>();
+  run.wall = summary["wall_time_s"].as<double>();
+  run.capped = !run.converged && run.wall >= 0.98 * cap;
+  run.energy = summary["energy"]["total"].as<double>();
+  if (summary["drape_coefficient"])
+    run.drape_coefficient = summary["drape_coefficient"].as<double>();
+  if (summary["drape"] && summary["drape"]["folds"])
+    run.folds = summary["drape"]["folds"].as<int>();
+  const YAML::Node statistics = summary["statistics"];
+  auto statistic = [&statistics](const char* key) {
+    return statistics && statistics[key] ? statistics[key].as<double>() : 0.0;
+  };
+  run.assembly = statistic("assembly_s");
+  run.factorization = statistic("factorization_s");
+  run.factorizations = statistic("factorizations");
+  return run;
+}
+
+// One assembly (energy, gradient, Hessian, projection) and one numeric factorisation of the same
+// Hessian, timed in this process at a perturbed flat state, as the median of `repeats`.
+struct AssemblyProbe {
+  int nodes = 0, terms = 0;
+  double assembly = 0, factorization = 0;          // wall s
+  double assembly_cpu = 0, factorization_cpu = 0;  // CPU s (all threads)
+  // CPU s of the terms' local derivatives alone, one thread: EnergyHessian (the fast path where a
+  // functor has one) and ReferenceHessian (nested Jets over every whole functor, as before).
+  double derivatives_cpu = 0, reference_cpu = 0;
+};
+
+double CpuSeconds(clockid_t clock) {
+  timespec time{};
+  clock_gettime(clock, &time);
+  return time.tv_sec + 1e-9 * time.tv_nsec;
+}
+
+// One-thread CPU time of every term's local energy, gradient and Hessian.
+double LocalDerivativesCpu(const Model& model, bool reference) {
+  std::vector<double> gradient(64), hessian(64 * 64);
+  double energy = 0.0;
+  const double start = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+  for (const auto& term : model.terms) {
+    const int n = term->num_coordinates();
+    gradient.resize(n);
+    hessian.resize(n * n);
+    if (reference) {
+      term->ReferenceHessian(model.positions.data(), &energy, gradient.data(), hessian.data());
+    } else {
+      term->EnergyHessian(model.positions.data(), &energy, gradient.data(), hessian.data());
+    }
+  }
+  return CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - start;
+}
+
+double Median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+AssemblyProbe ProbeAssembly(const BenchScene& scene, int repeats) {
+  const Scene loaded = LoadScene(scene.file, scene.overrides);
+  Model model = BuildModel(loaded);
+  const DofMap dofs(model);
+  // A fixed pseudo-random displacement of every free coordinate by up to ±1 mm, so that no term
+  // sits at its rest state (where some second-derivative parts vanish).
+  unsigned state = 12345u;
+  for (int k = 0; k < dofs.num_free(); ++k) {
+    state = state * 1664525u + 1013904223u;
+    model.positions[dofs.free_to_global()[k]] += 1e-3 * (2.0 * (state >> 8) / 16777216.0 - 1.0);
+  }
+  FreeHessian hessian(model, dofs);
+  SparseCholesky cholesky(hessian);
+  AssemblyProbe probe;
+  probe.nodes = static_cast<int>(model.positions.size() / 3);
+  probe.terms = static_cast<int>(model.terms.size());
+  FreeHessian::Assembly assembly;
+  std::vector<double> gradient;
+  std::vector<double> assembly_times, factorization_times, assembly_cpu, factorization_cpu;
+  std::vector<double> derivatives_cpu, reference_cpu;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
+    if (!hessian.Assemble(model.positions.data(), true, &assembly, &gradient)) {
+      std::fprintf(stderr, "%s: assembly failed at the probe state\n", scene.name.c_str());
+      return probe;
+    }
+    assembly_cpu.push_back(CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu_start);
+    assembly_times.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    derivatives_cpu.push_back(LocalDerivativesCpu(model, false));
+    reference_cpu.push_back(LocalDerivativesCpu(model, true));
+    double largest = 0.0;
+    for (int d : hessian.diagonal()) largest = std::max(largest, hessian.projected_values()[d]);
+    std::vector<double> shift(hessian.size(), 1e-6 * largest);
+    double factorization_start = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
+    while (!cholesky.Factorize(hessian.projected_values(), &shift)) {
+      for (double& s : shift) s *= 10.0;
+      factorization_start = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
+    }
+    factorization_cpu.push_back(CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - factorization_start);
+    factorization_times.push_back(cholesky.last_factorization_seconds());
+  }
+  probe.assembly = Median(assembly_times);
+  probe.factorization = Median(factorization_times);
+  probe.assembly_cpu = Median(assembly_cpu);
+  probe.factorization_cpu = Median(factorization_cpu);
+  probe.derivatives_cpu = Median(derivatives_cpu);
+  probe.reference_cpu = Median(reference_cpu);
+  return probe;
+}
+
+std::string Ratio(double mine, double theirs, bool lower_bound) {
+  if (!(mine > 0.0) || !(theirs > 0.0)) return "";
+  char text[32];
+  std::snprintf(text, sizeof text, "%s%.1f", lower_bound ? "> " : "", theirs / mine);
+  return text;
+}
+
+std::string OrBlank(double value, const char* format) {
+  if (value < 0.0) return "";
+  char text[32];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+void PrintRun(const BenchScene& scene, const char* binary, const SolveRun& run,
+              const std::string& ratios) {
+  if (!run.ran) {
+    std::printf("| %s | %s | failed to run | | | | | | | | | %.0f | |\n", scene.name.c_str(),
+                binary, run.peak_mb);
+    return;
+  }
+  const double iterations = std::max(1, run.iterations);
+  const double per_factorization = run.factorization / std::max(1.0, run.factorizations);
+  std::printf(
+      "| %s | %s | %d | %d | %.2f%s | %s | %.4f | %.4f | %s | %s | %s | %.0f | %s |\n",
+      scene.name.c_str(), binary, run.nodes, run.iterations, run.wall,
+      run.converged ? "" : (run.capped ? " (cap)" : " (not converged)"),
+      run.converged ? "yes" : "no", run.assembly / iterations, per_factorization,
+      OrBlank(per_factorization > 0 ? run.assembly / iterations / per_factorization : -1, "%.2f")
+          .c_str(),
+      OrBlank(run.drape_coefficient, "%.4f").c_str(),
+      run.folds >= 0 ? std::to_string(run.folds).c_str() : "", run.peak_mb, ratios.c_str());
+  std::fflush(stdout);
+}
+
+int ScenesMain(int argc, char** argv) {
+  std::vector<std::string> names = {"drape10", "drape5",  "drape2.6", "table",
+                                    "sphere",  "sheet50", "sheet100", "sheet256"};
+  double cap = 1200.0, baseline_cap = 300.0;
+  int repeats = 5;
+  std::string drape = "build/drape", baseline;
+  bool probe_only = false;
+  for (int a = 1; a < argc; ++a) {
+    const std::string key = argv[a];
+    if (key == "--probe-only") {
+      probe_only = true;
+      continue;
+    }
+    if (a + 1 >= argc) {
+      std::fprintf(stderr, "%s needs a value\n", key.c_str());
+      return 2;
+    }
+    const std::string value = argv[++a];
+    if (key == "--scenes") {
+      names = Split(value);
+    } else if (key == "--cap") {
+      cap = std::atof(value.c_str());
+    } else if (key == "--baseline") {
+      baseline = value;
+    } else if (key == "--baseline-cap") {
+      baseline_cap = std::atof(value.c_str());
+    } else if (key == "--drape") {
+      drape = value;
+    } else if (key == "--repeats") {
+      repeats = std::max(1, std::atoi(value.c_str()));
+    } else {
+      std::fprintf(stderr,
+                   "usage: benchmark [--scenes a,b] [--cap s] [--baseline BINARY] "
+                   "[--baseline-cap s] [--drape build/drape] [--repeats n] [--probe-only]\n"
+                   "       benchmark solvers [--sizes 50,100] [--solvers a,b] [--cap s] ...\n");
+      return 2;
+    }
+  }
+  std::vector<BenchScene> scenes;
+  for (const auto& name : names) {
+    const auto& all = AllScenes();
+    const auto it = std::find_if(all.begin(), all.end(),
+                                 [&name](const BenchScene& s) { return s.name == name; });
+    if (it == all.end()) {
+      std::fprintf(stderr, "unknown scene %s\n", name.c_str());
+      return 2;
+    }
+    scenes.push_back(*it);
+  }
+  std::printf("Assembly probe (this build, %u hardware threads; median of %d):\n\n",
+              std::thread::hardware_concurrency(), repeats);
+  std::printf(
+      "| scene | nodes | terms | assembly wall s | factorisation wall s | assembly ÷ "
+      "factorisation, wall | same, CPU | assembly CPU µs per node | local derivatives CPU µs "
+      "per node: this path | nested Jets |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& scene : scenes) {
+    const AssemblyProbe probe = ProbeAssembly(scene, repeats);
+    std::printf("| %s | %d | %d | %.4f | %.4f | %.2f | %.2f | %.2f | %.2f | %.2f |\n",
+                scene.name.c_str(), probe.nodes, probe.terms, probe.assembly, probe.factorization,
+                probe.assembly / probe.factorization, probe.assembly_cpu / probe.factorization_cpu,
+                1e6 * probe.assembly_cpu / probe.nodes, 1e6 * probe.derivatives_cpu / probe.nodes,
+                1e6 * probe.reference_cpu / probe.nodes);
+    std::fflush(stdout);
+  }
+  if (probe_only) return 0;
+  std::printf(
+      "\nSolves (`drape solve`, cap %.0f s%s):\n\n| scene | binary | nodes | iterations | wall s | "
+      "converged | assembly s/iteration | s/factorisation | assembly ÷ factorisation | drape "
+      "coefficient | folds | peak MB | baseline ÷ this: time, iterations |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+      cap,
+      baseline.empty() ? ""
+                       : (", baseline cap " + std::to_string(int(baseline_cap)) + " s").c_str());
+  const std::string out = "/tmp/drape_benchmark_" + std::to_string(getpid());
+  for (const auto& scene : scenes) {
+    const SolveRun run = RunDrape(drape, scene, cap, out);
+    PrintRun(scene, "this", run, "");
+    if (baseline.empty()) continue;
+    const SolveRun old = RunDrape(baseline, scene, baseline_cap, out);
+    std::string ratios;
+    if (run.ran && old.ran && run.converged) {
+      ratios = Ratio(run.wall, old.wall, !old.converged) + ", " +
+               Ratio(run.iterations, old.iterations, !old.converged);
+    }
+    PrintRun(scene, "baseline", old, ratios);
+  }
+  std::system(("rm -rf '" + out + "'").c_str());
+  return 0;
+}
+
 }  // namespace
 }  // namespace drape
 
-int main(int argc, char** argv) { return drape::Main(argc, argv); }
+int main(int argc, char** argv) {
+  drape::RunLibrariesOnOneThread();  // as drape does (src/numerics/library_threads.h)
+  if (argc > 1 && std::string(argv[1]) == "solvers") {
+    return drape::SolverComparisonMain(argc - 1, argv + 1);
+  }
+  return drape::ScenesMain(argc, argv);
+}

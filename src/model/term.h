@@ -1,6 +1,8 @@
 // One energy term of the model: a cost functor from costs/ bound to the nodes it acts on.
 // Energy, gradient and Hessian are all derived from the functor by automatic differentiation
-// (ceres::Jet, nested for the Hessian), so the physics is written once, in costs/.
+// (ceres::Jet, nested for the Hessian; for the finite-volume bending functors, nested Jets on each
+// of the functor's stages chained together, src/model/fast_hessian.h), so the physics is written
+// once, in costs/.
 //
 // A functor declares
 //   static constexpr int kNumNodes;      // nodes it reads, 3 coordinates each
@@ -30,6 +32,7 @@
 #include <vector>
 
 #include "costs/energy_form.h"
+#include "src/model/fast_hessian.h"
 
 namespace drape {
 
@@ -50,6 +53,10 @@ class Term {
   virtual bool EnergyGradient(const double* positions, double* energy, double* gradient) const = 0;
   virtual bool EnergyHessian(const double* positions, double* energy, double* gradient,
                              double* hessian) const = 0;
+  // The same by nested Jets over the whole functor, whatever EnergyHessian uses: the reference
+  // that every faster derivative path is checked against (tests/term_checks.h).
+  virtual bool ReferenceHessian(const double* positions, double* energy, double* gradient,
+                                double* hessian) const = 0;
 
   // A residual block for ceres::Problem whose ½|r|² equals this energy, up to a constant for
   // potentials (see ShiftedPotential). Parameter blocks: one per node, in nodes() order.
@@ -214,8 +221,22 @@ class AutoDiffTerm : public Term {
     return std::isfinite(e.a) && e.v.allFinite();
   }
 
+  // By the functor's staged chain rule where it has one (src/model/fast_hessian.h), else by
+  // nested Jets.
   bool EnergyHessian(const double* positions, double* energy, double* gradient,
                      double* hessian) const override {
+    const double* x[kN];
+    for (int a = 0; a < kN; ++a) x[a] = positions + 3 * nodes()[a];
+    if constexpr (internal::FastHessian<Functor>::kAvailable) {
+      return internal::FastHessian<Functor>::Evaluate(functor_, x, energy, gradient, hessian);
+    } else {
+      return internal::NestedJetHessian<internal::TranslationInvariant<Functor>::value>(
+          functor_, x, energy, gradient, hessian);
+    }
+  }
+
+  bool ReferenceHessian(const double* positions, double* energy, double* gradient,
+                        double* hessian) const override {
     const double* x[kN];
     for (int a = 0; a < kN; ++a) x[a] = positions + 3 * nodes()[a];
     return internal::NestedJetHessian<internal::TranslationInvariant<Functor>::value>(

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <new>
+#include <thread>
 
 #include "src/numerics/library_threads.h"
 
@@ -138,36 +139,96 @@ void FreeHessian::BuildDestinations() {
   }
 }
 
+namespace {
+
+// Runs work(begin, end) over [0, count) split into `threads` contiguous parts, one per thread (the
+// calling thread takes the first). Which thread computes a part does not change any result.
+template <typename Work>
+void ParallelFor(int count, int threads, const Work& work) {
+  threads = std::max(1, std::min(threads, count));
+  if (threads == 1) {
+    work(0, count);
+    return;
+  }
+  std::vector<std::thread> pool;
+  pool.reserve(threads - 1);
+  for (int k = 1; k < threads; ++k) {
+    pool.emplace_back(work, static_cast<int>(static_cast<long>(count) * k / threads),
+                      static_cast<int>(static_cast<long>(count) * (k + 1) / threads));
+  }
+  work(0, static_cast<int>(static_cast<long>(count) / threads));
+  for (auto& thread : pool) thread.join();
+}
+
+constexpr int kTermsPerBlock = 8192;  // local results held at once: a few MB
+
+}  // namespace
+
+int DefaultAssemblyThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+// Terms are taken in blocks: the local energies, gradients and (projected) Hessians of a block's
+// terms are computed in parallel into per-term storage, then added into the global arrays by one
+// thread in term order, so that every sum is made in the same order whatever the thread count.
 bool FreeHessian::Assemble(const double* positions, bool project, Assembly* assembly,
                            std::vector<double>* gradient) {
   *assembly = Assembly();
   gradient->assign(model_.num_dofs(), 0.0);
   std::fill(values_.begin(), values_.end(), 0.0);
   if (project) std::fill(projected_.begin(), projected_.end(), 0.0);
-  std::vector<double> local_gradient, local_hessian;
-  for (size_t t = 0; t < model_.terms.size(); ++t) {
-    const Term& term = *model_.terms[t];
-    const int n = term.num_coordinates();
-    local_gradient.resize(n);
-    local_hessian.resize(n * n);
-    double energy = 0.0;
-    if (!term.EnergyHessian(positions, &energy, local_gradient.data(), local_hessian.data())) {
-      return false;
+  const int num_terms = static_cast<int>(model_.terms.size());
+  for (int first = 0; first < num_terms; first += kTermsPerBlock) {
+    const int last = std::min(num_terms, first + kTermsPerBlock);
+    const int count = last - first;
+    block_energy_.resize(count);
+    block_status_.resize(count);
+    block_gradient_offsets_.resize(count + 1);
+    block_gradient_offsets_[0] = 0;
+    for (int t = first; t < last; ++t) {
+      block_gradient_offsets_[t - first + 1] =
+          block_gradient_offsets_[t - first] + model_.terms[t]->num_coordinates();
     }
-    assembly->energy += energy;
-    assembly->energy_magnitude += std::abs(energy);
-    const auto& nodes = term.nodes();
-    for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
-    const int* destination = destinations_.data() + term_offsets_[t];
-    for (int k = 0; k < n * n; ++k) {
-      if (destination[k] >= 0) values_[destination[k]] += local_hessian[k];
-    }
-    if (!project) continue;
-    if (ProjectToPositiveSemidefinite(filter_, n, local_hessian.data())) {
-      ++assembly->projected_terms;
-    }
-    for (int k = 0; k < n * n; ++k) {
-      if (destination[k] >= 0) projected_[destination[k]] += local_hessian[k];
+    const int base = term_offsets_[first];
+    block_gradient_.resize(block_gradient_offsets_[count]);
+    block_hessian_.resize(term_offsets_[last] - base);
+    if (project) block_projected_.resize(block_hessian_.size());
+    ParallelFor(count, threads_, [&](int begin, int end) {
+      for (int i = begin; i < end; ++i) {
+        const int t = first + i;
+        const Term& term = *model_.terms[t];
+        const int n = term.num_coordinates();
+        double* hessian = block_hessian_.data() + term_offsets_[t] - base;
+        block_status_[i] =
+            term.EnergyHessian(positions, &block_energy_[i],
+                               block_gradient_.data() + block_gradient_offsets_[i], hessian)
+                ? kEvaluated
+                : kFailed;
+        if (!project || block_status_[i] == kFailed) continue;
+        double* projected = block_projected_.data() + term_offsets_[t] - base;
+        std::copy(hessian, hessian + n * n, projected);
+        if (ProjectToPositiveSemidefinite(filter_, n, projected)) block_status_[i] = kProjected;
+      }
+    });
+    for (int i = 0; i < count; ++i) {
+      if (block_status_[i] == kFailed) return false;
+      const int t = first + i;
+      const Term& term = *model_.terms[t];
+      const int n = term.num_coordinates();
+      assembly->energy += block_energy_[i];
+      assembly->energy_magnitude += std::abs(block_energy_[i]);
+      const auto& nodes = term.nodes();
+      const double* local_gradient = block_gradient_.data() + block_gradient_offsets_[i];
+      for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
+      const int* destination = destinations_.data() + term_offsets_[t];
+      const double* local_hessian = block_hessian_.data() + term_offsets_[t] - base;
+      for (int k = 0; k < n * n; ++k) {
+        if (destination[k] >= 0) values_[destination[k]] += local_hessian[k];
+      }
+      if (!project) continue;
+      if (block_status_[i] == kProjected) ++assembly->projected_terms;
+      const double* local_projected = block_projected_.data() + term_offsets_[t] - base;
+      for (int k = 0; k < n * n; ++k) {
+        if (destination[k] >= 0) projected_[destination[k]] += local_projected[k];
+      }
     }
   }
   return std::isfinite(assembly->energy);

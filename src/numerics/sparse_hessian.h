@@ -1,12 +1,15 @@
 // The Hessian of a model's energy over its free coordinates, and its Cholesky factorisation.
 //
 // FreeHessian assembles, term by term, the exact second derivatives that Term::EnergyHessian
-// derives from the cost functors (nested Jets), into a sparse pattern built once: the upper
+// derives from the cost functors (nested Jets, or their staged chain rule), into a sparse pattern
+// built once: the upper
 // triangle in compressed columns, with the destination of every local entry of every term
 // precomputed, so that each assembly only adds numbers. It keeps two sets of values over the
 // same pattern: the true Hessian, and the Hessian whose every term is first projected to
 // positive semidefinite (negative eigenvalues of the small local matrix set to zero, or to their
-// magnitude: EigenvalueFilter).
+// magnitude: EigenvalueFilter). The terms' local derivatives and projections are computed on
+// several threads (std::thread: drape's OpenMP is switched off for CHOLMOD's sake) and summed by
+// one thread in term order, so the values do not depend on the thread count.
 //
 // SparseCholesky factorises a matrix of that pattern with CHOLMOD's supernodal Cholesky: the
 // symbolic analysis (fill-reducing ordering, supernodes) once, the numeric factorisation per
@@ -28,6 +31,9 @@ namespace drape {
 // sign (a compressed spring then resists sideways motion as much as a stretched one would).
 enum class EigenvalueFilter { kClamp, kAbsolute };
 
+// The number of hardware threads (at least 1): FreeHessian's default for its assembly.
+int DefaultAssemblyThreads();
+
 class FreeHessian {
  public:
   // Builds the pattern of the model's terms over the free coordinates of `dofs`. Both must
@@ -46,6 +52,10 @@ class FreeHessian {
                 std::vector<double>* gradient);
 
   void set_eigenvalue_filter(EigenvalueFilter filter) { filter_ = filter; }
+  // Threads that compute the terms' local derivatives (default: the machine's hardware threads).
+  // The results are bit-for-bit the same for every count.
+  void set_threads(int threads) { threads_ = threads > 0 ? threads : 1; }
+  int threads() const { return threads_; }
 
   int size() const { return dofs_.num_free(); }
   int num_nonzeros() const { return static_cast<int>(rows_.size()); }
@@ -71,6 +81,12 @@ class FreeHessian {
   std::vector<int> term_offsets_, destinations_;
   std::vector<double> values_, projected_;
   EigenvalueFilter filter_ = EigenvalueFilter::kClamp;
+  int threads_ = DefaultAssemblyThreads();
+  // One block of terms' local results (Assemble), reused between calls.
+  enum TermStatus : char { kEvaluated, kProjected, kFailed };
+  std::vector<double> block_energy_, block_gradient_, block_hessian_, block_projected_;
+  std::vector<int> block_gradient_offsets_;
+  std::vector<TermStatus> block_status_;
 };
 
 class SparseCholesky {

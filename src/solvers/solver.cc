@@ -49,6 +49,27 @@ void IterationMonitor::Stop(const std::string& termination) {
   summary_->wall_time_s = ElapsedSeconds();
 }
 
+void IterationMonitor::StopStalled(double relative_residual, const std::string& termination) {
+  const double floor = RelativeResidualFloor(model_, model_.positions.data());
+  if (std::isfinite(relative_residual) && relative_residual <= kFloorFactor * floor) {
+    summary_->residual_floor = floor;
+    ConvergeAtFloor(relative_residual);
+    summary_->wall_time_s = ElapsedSeconds();
+    return;
+  }
+  Stop(termination);
+}
+
+void IterationMonitor::ConvergeAtFloor(double relative_residual) {
+  summary_->converged = true;
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "at the round-off floor (≈ %.3g); tolerance %.3g is below what double precision "
+                "can certify (relative residual %.3g)",
+                summary_->residual_floor, options_.tolerance, relative_residual);
+  summary_->termination = text;
+}
+
 bool IterationMonitor::AtRoundOffFloor(int iteration, double relative_residual) {
   if (relative_residual < 0.5 * stagnation_mark_ || iteration == 0) {
     stagnation_mark_ = relative_residual;
@@ -82,12 +103,7 @@ bool IterationMonitor::Record(int iteration, double energy, double relative_resi
   }
   if (may_converge && std::isfinite(relative_residual) &&
       AtRoundOffFloor(iteration, relative_residual)) {
-    summary_->converged = true;
-    std::snprintf(text, sizeof text,
-                  "at the round-off floor (≈ %.3g); tolerance %.3g is below what double precision "
-                  "can certify (relative residual %.3g)",
-                  summary_->residual_floor, options_.tolerance, relative_residual);
-    summary_->termination = text;
+    ConvergeAtFloor(relative_residual);
     return true;
   }
   if (!caller_continues) {

@@ -94,11 +94,16 @@ class IterationMonitor {
   double ElapsedSeconds() const;
   // For a method that stops for its own reason (a line search failing, a non-finite step).
   void Stop(const std::string& termination);
+  // For a method that can make no more progress: converged at the round-off floor if the
+  // residual is within kFloorFactor of it (measured here), else Stop(termination).
+  void StopStalled(double relative_residual, const std::string& termination);
 
  private:
   const Model& model_;
   const SolverOptions& options_;
   bool AtRoundOffFloor(int iteration, double relative_residual);
+  // Marks the summary converged at the floor summary_->residual_floor, saying so.
+  void ConvergeAtFloor(double relative_residual);
 
   SolverSummary* summary_;
   std::chrono::steady_clock::time_point start_;

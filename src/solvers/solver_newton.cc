@@ -249,7 +249,7 @@ bool NewtonIteration::Step(double residual) {
     mu_ = std::max(mu_ * 10.0, 1e-6);
     if (mu_ > settings_.max_regularization) {
       if (EscapeSaddle()) return true;
-      monitor_.Stop("no step decreases the energy (regularisation limit reached)");
+      monitor_.StopStalled(residual, "no step decreases the energy (regularisation limit reached)");
       return false;
     }
   }
