@@ -14,8 +14,9 @@ namespace drape {
 // Curvature binormal of the polyline a → p → b with arms e0 = p − a, e1 = b − p:
 //   κb = 2 e0×e1 / (|e0||e1| + e0·e1),   |κb| = 2 tan(φ/2) = 2 cot(θ/2)
 // for the turning angle φ (θ = π − φ the angle between the arms, Hu/Teng eq. 9.1). Smooth at the
-// straight (flat) state φ = 0, where acos-based formulas have NaN derivatives (docs/architecture.md,
-// fact 5); undefined only when an arm has zero length or the arms fold back (φ = π).
+// straight (flat) state φ = 0, where acos-based formulas have NaN derivatives
+// (docs/architecture.md, fact 5); undefined only when an arm has zero length or the arms fold back
+// (φ = π).
 template <typename T>
 void CurvatureBinormal(const T* a, const T* p, const T* b, T* binormal) {
   const T e0[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};

@@ -18,8 +18,8 @@ namespace drape {
 //   E12 = ν_warp E_weft/(1 − ν_warp ν_weft),
 // A_q = l_PA l_PB / 4 the quarter's area (faces midway between grid nodes). The shear angle is
 // exact: γ = asin(u·v/(|u||v|)) for the arms u, v — smooth wherever the arms are not parallel
-// (at rest γ = 0 and asin' = 1), so no acos at the flat state (docs/architecture.md, fact 5). The rest
-// grid is orthogonal (γ = 0 at rest). Residuals, the Cholesky factor of the form, × √A_q:
+// (at rest γ = 0 and asin' = 1), so no acos at the flat state (docs/architecture.md, fact 5). The
+// rest grid is orthogonal (γ = 0 at rest). Residuals, the Cholesky factor of the form, × √A_q:
 //   r0 = √E1 ε1 + E12/√E1 ε2,   r1 = √(E2 − E12²/E1) ε2,   r2 = √G γ.
 // Needs E1 > 0 and E1 E2 ≥ E12². Units: E, G in N/m (rigidity per unit width), lengths in m,
 // U in J. Invariant under rigid motions; zero force at rest.

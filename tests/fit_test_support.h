@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "src/model/equilibrium.h"
 #include "src/fit/fit_file.h"
+#include "src/model/equilibrium.h"
 #include "src/model/model.h"
-#include "src/solvers/run.h"
 #include "src/scene/scene_loader.h"
+#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape::testing {

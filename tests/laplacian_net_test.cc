@@ -74,7 +74,8 @@ TEST(LaplacianNet, CeresLbfgsSolvesTheDiscreteLaplacian) {
 }
 
 // Least squares carries the loads as shifted square roots; the cost's roundoff limits it to a
-// relative residual near 1e-9 here (src/solvers/solver_ceres_least_squares.cc), so it is asked for 1e-8.
+// relative residual near 1e-9 here (src/solvers/solver_ceres_least_squares.cc), so it is asked for
+// 1e-8.
 TEST(LaplacianNet, CeresLevenbergMarquardtSolvesTheDiscreteLaplacian) {
   const auto solved = testing::SolveConfig("configs/validation/laplacian_net.yaml", "ceres-lm",
                                            {"solver.tolerance=1e-8"});

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "src/analysis/drape_analysis.h"
-#include "src/solvers/run.h"
 #include "src/scene/scene_loader.h"
+#include "src/solvers/run.h"
 
 namespace drape {
 namespace {

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "src/analysis/drape_analysis.h"
-#include "src/solvers/run.h"
-#include "src/scene/scene_loader.h"
 #include "src/model/stretch_limit.h"
+#include "src/scene/scene_loader.h"
+#include "src/solvers/run.h"
 
 namespace drape {
 namespace {

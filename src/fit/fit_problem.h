@@ -19,12 +19,12 @@
 //
 // Derivatives by implicit differentiation through the equilibrium g(x*(θ), θ) = 0:
 //   dx*/du = −H⁻¹ ∂g/∂u,
-// H the exact Hessian over the free coordinates at x* (src/numerics/sparse_hessian.h, assembled once and
-// factorised once with CHOLMOD per equilibrium, one back-solve per parameter), ∂g/∂u by central
-// differences of the energy gradient at fixed x* between models built at u ± 1e-4 (the energies
-// are linear in the stiffnesses, so these differences are exact up to roundoff). The residuals'
-// dependence on x is then differentiated along each direction dx*/du_j by a central difference of
-// the measurement function alone (no re-solve).
+// H the exact Hessian over the free coordinates at x* (src/numerics/sparse_hessian.h, assembled
+// once and factorised once with CHOLMOD per equilibrium, one back-solve per parameter), ∂g/∂u by
+// central differences of the energy gradient at fixed x* between models built at u ± 1e-4 (the
+// energies are linear in the stiffnesses, so these differences are exact up to roundoff). The
+// residuals' dependence on x is then differentiated along each direction dx*/du_j by a central
+// difference of the measurement function alone (no re-solve).
 #ifndef DRAPE_SRC_FIT_FIT_PROBLEM_H_
 #define DRAPE_SRC_FIT_FIT_PROBLEM_H_
 

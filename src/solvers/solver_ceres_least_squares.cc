@@ -3,11 +3,11 @@
 // Elastic terms are sums of squares already (E = ½|r|²). A linear potential E = −f·(x − x_ref)
 // (gravity, applied loads) is not; it enters as r = sqrt(2 (E + C)) with C = |f| × 2 × the
 // model's size, so ½r² = E + C has the exact gradient, at the price of a small fake Gauss–Newton
-// stiffness f fᵀ / (2(E + C)) (docs/architecture.md, fact 1). Gauss–Newton drops the geometric stiffness
-// (T/l)(I − uuᵀ) of taut springs, so on drapes these methods stall; they are kept as alternatives
-// and their failures reported as such. Precision: the cost is a sum of shifts (~|f| × size per
-// loaded node) and Ceres accepts a step by its cost change, so these methods stop when the change
-// falls under the cost's roundoff — measured at relative residuals of 1e-9 to 1e-6.
+// stiffness f fᵀ / (2(E + C)) (docs/architecture.md, fact 1). Gauss–Newton drops the geometric
+// stiffness (T/l)(I − uuᵀ) of taut springs, so on drapes these methods stall; they are kept as
+// alternatives and their failures reported as such. Precision: the cost is a sum of shifts (~|f| ×
+// size per loaded node) and Ceres accepts a step by its cost change, so these methods stop when the
+// change falls under the cost's roundoff — measured at relative residuals of 1e-9 to 1e-6.
 #include <ceres/iteration_callback.h>
 #include <ceres/problem.h>
 #include <ceres/solver.h>
