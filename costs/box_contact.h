@@ -23,11 +23,11 @@ struct BoxContact {
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kPotential;
 
-  BoxContact(const double min[3], const double max[3], double clearance, double stiffness)
+  BoxContact(const double min[3], const double max[3], double clearance_in, double stiffness_in)
       : center{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])},
         half{0.5 * (max[0] - min[0]), 0.5 * (max[1] - min[1]), 0.5 * (max[2] - min[2])},
-        clearance(clearance),
-        stiffness(stiffness) {}
+        clearance(clearance_in),
+        stiffness(stiffness_in) {}
 
   template <typename T>
   T Distance(const T* const x) const {

@@ -14,8 +14,9 @@ struct ConstantForcePotential {
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kPotential;
 
-  ConstantForcePotential(const double force[3], const double reference[3])
-      : force{force[0], force[1], force[2]}, reference{reference[0], reference[1], reference[2]} {}
+  ConstantForcePotential(const double force_in[3], const double reference_in[3])
+      : force{force_in[0], force_in[1], force_in[2]},
+        reference{reference_in[0], reference_in[1], reference_in[2]} {}
 
   template <typename T>
   bool operator()(const T* const x, T* energy) const {

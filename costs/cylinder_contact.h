@@ -23,13 +23,13 @@ struct CylinderContact {
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kPotential;
 
-  CylinderContact(const double center[3], double radius, double height, double clearance,
-                  double stiffness)
-      : center{center[0], center[1], center[2]},
-        radius(radius),
-        height(height),
-        clearance(clearance),
-        stiffness(stiffness) {}
+  CylinderContact(const double center_in[3], double radius_in, double height_in,
+                  double clearance_in, double stiffness_in)
+      : center{center_in[0], center_in[1], center_in[2]},
+        radius(radius_in),
+        height(height_in),
+        clearance(clearance_in),
+        stiffness(stiffness_in) {}
 
   template <typename T>
   T Distance(const T* const x) const {

@@ -22,11 +22,11 @@ struct DiskContact {
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kPotential;
 
-  DiskContact(const double center[3], double radius, double clearance, double stiffness)
-      : center{center[0], center[1], center[2]},
-        radius(radius),
-        clearance(clearance),
-        stiffness(stiffness) {}
+  DiskContact(const double center_in[3], double radius_in, double clearance_in, double stiffness_in)
+      : center{center_in[0], center_in[1], center_in[2]},
+        radius(radius_in),
+        clearance(clearance_in),
+        stiffness(stiffness_in) {}
 
   template <typename T>
   T Distance(const T* const x) const {

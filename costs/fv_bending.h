@@ -101,9 +101,9 @@ struct FvBending {
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
   static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
-  FvBending(double d1, double d2, double d12, double size1, double size2, double area)
-      : size1(size1),
-        size2(size2),
+  FvBending(double d1, double d2, double d12, double size1_in, double size2_in, double area)
+      : size1(size1_in),
+        size2(size2_in),
         coupling(d1, d12, d2, area),
         off1(std::sqrt(d1 * area)),
         off2(std::sqrt(d2 * area)) {

@@ -30,11 +30,11 @@ struct FvMembrane {
   static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
   // e1, e2, e12: E1, E2, E12 as above (N/m); g: G (N/m); rest arm lengths l_PA, l_PB (m).
-  FvMembrane(double e1, double e2, double e12, double g, double rest_a, double rest_b)
-      : rest_a(rest_a),
-        rest_b(rest_b),
-        stretch(e1, e12, e2, rest_a * rest_b / 4.0),
-        shear_factor(std::sqrt(g * rest_a * rest_b / 4.0)) {
+  FvMembrane(double e1, double e2, double e12, double g, double rest_a_in, double rest_b_in)
+      : rest_a(rest_a_in),
+        rest_b(rest_b_in),
+        stretch(e1, e12, e2, rest_a_in * rest_b_in / 4.0),
+        shear_factor(std::sqrt(g * rest_a_in * rest_b_in / 4.0)) {
     assert(e1 > 0.0 && e2 * e1 >= e12 * e12 && g >= 0.0 && rest_a > 0.0 && rest_b > 0.0);
   }
 

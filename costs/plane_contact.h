@@ -14,11 +14,12 @@ struct PlaneContact {
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kPotential;
 
-  PlaneContact(const double point[3], const double normal[3], double clearance, double stiffness)
-      : point{point[0], point[1], point[2]},
-        normal{normal[0], normal[1], normal[2]},
-        clearance(clearance),
-        stiffness(stiffness) {}
+  PlaneContact(const double point_in[3], const double normal_in[3], double clearance_in,
+               double stiffness_in)
+      : point{point_in[0], point_in[1], point_in[2]},
+        normal{normal_in[0], normal_in[1], normal_in[2]},
+        clearance(clearance_in),
+        stiffness(stiffness_in) {}
 
   template <typename T>
   T Distance(const T* const x) const {

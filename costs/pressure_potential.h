@@ -20,8 +20,8 @@ struct PressurePotential {
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kPotential;
 
-  PressurePotential(double pressure, double centre_x, double centre_z)
-      : pressure(pressure), centre_x(centre_x), centre_z(centre_z) {}
+  PressurePotential(double pressure_in, double centre_x_in, double centre_z_in)
+      : pressure(pressure_in), centre_x(centre_x_in), centre_z(centre_z_in) {}
 
   template <typename T>
   bool operator()(const T* const xi, const T* const xj, T* energy) const {

@@ -19,8 +19,8 @@ struct SpringStretch {
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
   static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
-  SpringStretch(double stiffness, double rest_length)
-      : sqrt_stiffness(std::sqrt(stiffness)), rest_length(rest_length) {}
+  SpringStretch(double stiffness, double rest_length_in)
+      : sqrt_stiffness(std::sqrt(stiffness)), rest_length(rest_length_in) {}
 
   template <typename T>
   bool operator()(const T* const xi, const T* const xj, T* residual) const {

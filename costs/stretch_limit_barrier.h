@@ -24,8 +24,8 @@ struct StretchLimitBarrier {
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
   static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
-  StretchLimitBarrier(double stiffness, double limit_length)
-      : sqrt_stiffness(std::sqrt(stiffness)), limit_length(limit_length) {}
+  StretchLimitBarrier(double stiffness, double limit_length_in)
+      : sqrt_stiffness(std::sqrt(stiffness)), limit_length(limit_length_in) {}
 
   template <typename T>
   bool operator()(const T* const xi, const T* const xj, T* residual) const {

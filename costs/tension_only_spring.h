@@ -18,8 +18,8 @@ struct TensionOnlySpring {
   static constexpr EnergyForm kForm = EnergyForm::kSquares;
   static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
-  TensionOnlySpring(double stiffness, double rest_length)
-      : sqrt_stiffness(std::sqrt(stiffness)), rest_length(rest_length) {}
+  TensionOnlySpring(double stiffness, double rest_length_in)
+      : sqrt_stiffness(std::sqrt(stiffness)), rest_length(rest_length_in) {}
 
   template <typename T>
   bool operator()(const T* const xi, const T* const xj, T* residual) const {

@@ -163,7 +163,7 @@ TEST_P(BadSceneFileTest, IsRejectedWithALocatedMessageAndNothingWritten) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BadInput, BadSceneFileTest, ::testing::ValuesIn(BadScenes()),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& test) { return test.param; });
 
 TEST(BadInput, EveryKindOfBadInputHasAFixture) {
   const auto names = BadScenes();

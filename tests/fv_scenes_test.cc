@@ -80,8 +80,8 @@ TEST_P(FvSceneCoarse, NewtonSolvesItToAStableEquilibrium) {
 }
 
 INSTANTIATE_TEST_SUITE_P(FvScenes, FvSceneCoarse, ::testing::ValuesIn(CoarseScenes()),
-                         [](const auto& info) {
-                           std::string name = info.param.file;
+                         [](const auto& test) {
+                           std::string name = test.param.file;
                            name = name.substr(0, name.find('.'));
                            for (char& ch : name) {
                              if (ch == '-') ch = '_';

@@ -79,8 +79,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Coarse{"disc_quadrangular.yaml", {"mesh.spacing=0.03"}, true},
                       Coarse{"disc_triangular.yaml", {"mesh.spacing=0.03"}, false},
                       Coarse{"disc_arc.yaml", {"mesh.rings=5", "mesh.spokes=16"}, false}),
-    [](const auto& info) {
-      std::string name = info.param.file;
+    [](const auto& test) {
+      std::string name = test.param.file;
       return name.substr(0, name.find('.'));
     });
 

@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(
                       UniqueCase{"pulled_border_3d", {"solver.newton.escape_saddles=0"}},
                       UniqueCase{"pulled_corner_3d", {"solver.newton.escape_saddles=0"}},
                       UniqueCase{"hammock_3d", {"mesh.nodes=[7,7]"}}),
-    [](const ::testing::TestParamInfo<UniqueCase>& info) { return info.param.name; });
+    [](const ::testing::TestParamInfo<UniqueCase>& test) { return test.param.name; });
 
 // Tension-only springs: slack springs leave zero-stiffness directions, so the equilibrium need
 // not be unique; both methods must reach it with the same energy.

@@ -675,7 +675,7 @@ TEST_P(BadSceneTest, IsRejectedWithALocatedMessage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SceneLoader, BadSceneTest, ::testing::ValuesIn(BadScenes()),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& test) { return std::string(test.param.name); });
 
 TEST_F(SceneLoaderTest, UnreadableSceneFileSaysSo) {
   const std::string missing = (folder_ / "missing.yaml").string();
@@ -820,7 +820,7 @@ TEST_P(FabricParameterBadSceneTest, IsRejectedWithALocatedMessage) {
 
 INSTANTIATE_TEST_SUITE_P(SceneLoader, FabricParameterBadSceneTest,
                          ::testing::ValuesIn(FabricParameterBadScenes()),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& test) { return std::string(test.param.name); });
 
 }  // namespace
 }  // namespace drape

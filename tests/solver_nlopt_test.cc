@@ -31,8 +31,8 @@ TEST_P(NloptOnChain, ReachesRelativeResidual1e8AndNewtonsShape) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllMethods, NloptOnChain, ::testing::ValuesIn(kNloptSolvers),
-                         [](const auto& info) {
-                           std::string name = info.param;
+                         [](const auto& test) {
+                           std::string name = test.param;
                            for (char& c : name) c = c == '-' ? '_' : c;
                            return name;
                          });

@@ -17,9 +17,9 @@ std::vector<SpringLink> ModelSprings(const Model& model) {
     if (const auto* spring = FunctorOf<SpringStretch>(*term)) {
       root = spring->sqrt_stiffness;
       rest = spring->rest_length;
-    } else if (const auto* spring = FunctorOf<TensionOnlySpring>(*term)) {
-      root = spring->sqrt_stiffness;
-      rest = spring->rest_length;
+    } else if (const auto* tension_only = FunctorOf<TensionOnlySpring>(*term)) {
+      root = tension_only->sqrt_stiffness;
+      rest = tension_only->rest_length;
     } else {
       continue;
     }

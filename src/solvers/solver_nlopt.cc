@@ -57,8 +57,8 @@ double Option(const std::string& name, const SolverOptions& options, const char*
 
 // What the objective callback needs: the model, the stop rule and the opt to stop.
 struct Objective {
-  Objective(Model& model, const DofMap& dofs, IterationMonitor& monitor)
-      : model(model), dofs(dofs), monitor(monitor) {}
+  Objective(Model& the_model, const DofMap& the_dofs, IterationMonitor& the_monitor)
+      : model(the_model), dofs(the_dofs), monitor(the_monitor) {}
 
   Model& model;  // evaluated in place, so the monitor's callback sees the current point
   const DofMap& dofs;
