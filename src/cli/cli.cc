@@ -77,6 +77,13 @@ struct Arguments {
   bool help = false;
 };
 
+void AssignFlag(const std::string& flag, const std::string& value, Arguments* parsed) {
+  if (flag == "--solver") parsed->solver = value;
+  if (flag == "--out") parsed->out = value;
+  if (flag == "--set") parsed->overrides.push_back(value);
+  if (flag == "--method") parsed->method = value;
+}
+
 // Parses `args` after the subcommand. `flags`: the options this subcommand accepts, each taking a
 // value, given as `--flag value` or `--flag=value`.
 Arguments ParseArguments(const std::vector<std::string>& args, const std::set<std::string>& flags) {
@@ -88,7 +95,7 @@ Arguments ParseArguments(const std::vector<std::string>& args, const std::set<st
       parsed.help = true;
       continue;
     }
-    if (arg.rfind("-", 0) != 0 || arg == "-") {
+    if (arg.rfind('-', 0) != 0 || arg == "-") {
       positional.push_back(arg);
       continue;
     }
@@ -103,10 +110,7 @@ Arguments ParseArguments(const std::vector<std::string>& args, const std::set<st
     } else {
       throw UsageError("option " + flag + " needs a value");
     }
-    if (flag == "--solver") parsed.solver = value;
-    if (flag == "--out") parsed.out = value;
-    if (flag == "--set") parsed.overrides.push_back(value);
-    if (flag == "--method") parsed.method = value;
+    AssignFlag(flag, value, &parsed);
   }
   if (parsed.help) return parsed;
   if (positional.empty()) {

@@ -285,7 +285,7 @@ void ComputeIdentifiability(const FitProblem& problem, FitResult* result) {
   const int p = static_cast<int>(jacobian.cols());
   Identifiability& out = result->identifiability;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeFullV);
-  const Eigen::VectorXd s = svd.singularValues();
+  const Eigen::VectorXd& s = svd.singularValues();
   const double largest = s.size() > 0 ? s[0] : 0.0;
   out.identifiable.assign(p, true);
   for (int j = 0; j < p; ++j) out.parameter_sensitivity.push_back(jacobian.col(j).norm());
@@ -335,7 +335,7 @@ void ComputeStatistics(const FitProblem& problem, FitResult* result) {
   // Gauss–Newton covariance in u: s² (JᵀJ)⁺ over the identifiable directions; a parameter with
   // weight in a flat direction has an unbounded error.
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeFullV);
-  const Eigen::VectorXd s = svd.singularValues();
+  const Eigen::VectorXd& s = svd.singularValues();
   Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(p, p);
   for (int k = 0; k < s.size(); ++k) {
     if (s[k] <= 1e-12 * (s.size() ? s[0] : 1.0)) continue;

@@ -176,6 +176,7 @@ std::vector<Eigen::Vector3d> ChainPoints(const MeshSpec& spec) {
   if (spec.chain_nodes < 2) throw InputError(spec.where, "a chain needs at least 2 nodes");
   const Eigen::Vector3d step = spec.direction / norm * (spec.length / (spec.chain_nodes - 1));
   std::vector<Eigen::Vector3d> points;
+  points.reserve(spec.chain_nodes);
   for (int k = 0; k < spec.chain_nodes; ++k) points.push_back(spec.origin + k * step);
   return points;
 }

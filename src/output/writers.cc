@@ -44,6 +44,7 @@ std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& m
 template <typename Map, typename Format>
 std::string JsonMap(const Map& map, int depth, Format format) {
   std::vector<std::pair<std::string, std::string>> members;
+  members.reserve(map.size());
   for (const auto& [key, value] : map) members.emplace_back(key, format(value));
   return JsonObject(members, depth);
 }

@@ -332,6 +332,7 @@ SpringsSpec ReadSprings(const YamlValue& value) {
 
 // One model parameter that may be given in SI under its own key or converted from a measurement
 // (finite_volume.kes.*, finite_volume.bending_length.*): exactly one way must be used.
+// NOLINTNEXTLINE(bugprone-exception-escape): YamlValue's assignment may throw (yaml_reader.h).
 struct ParameterWay {
   std::string key;                 // as the user writes it below material.finite_volume
   std::optional<YamlValue> value;  // the given value, if any

@@ -143,7 +143,7 @@ void YamlMap::Read(const std::vector<std::string>* allowed) {
       throw InputError(value.origins->Locate(key_node.Mark(), key_origin, value.where.key),
                        "a key must be a plain name, got " + Describe(key_node));
     }
-    const std::string key = key_node.Scalar();
+    const std::string& key = key_node.Scalar();
     const std::string path = ChildKey(value.where.key, key);
     const Location key_where = value.origins->Locate(key_node.Mark(), key_origin, path);
     if (allowed && std::find(allowed->begin(), allowed->end(), key) == allowed->end()) {
