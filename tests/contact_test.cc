@@ -21,17 +21,19 @@ namespace {
 
 ObstacleSpec Sphere(const Eigen::Vector3d& center, double radius) {
   ObstacleSpec sphere;
-  sphere.kind = ObstacleSpec::Kind::kSphere;
+  sphere.kind = "sphere";
   sphere.center = center;
   sphere.radius = radius;
+  sphere.given = {{"center", {}}, {"radius", {}}};
   return sphere;
 }
 
 ObstacleSpec Floor(double z) {
   ObstacleSpec plane;
-  plane.kind = ObstacleSpec::Kind::kPlane;
+  plane.kind = "plane";
   plane.center = {0, 0, z};
   plane.normal = {0, 0, 1};
+  plane.given = {{"point", {}}, {"normal", {}}};
   return plane;
 }
 
@@ -76,8 +78,9 @@ TEST(Contact, AnchoredFabricMeetsOnlyObstaclesWithinReach) {
   EXPECT_EQ(CountType(model, "plane_contact"), 23);
   model.terms.clear();
   ObstacleSpec pin;
-  pin.kind = ObstacleSpec::Kind::kPin;
+  pin.kind = "pin";
   pin.center = {0.1, 0.1, -0.01};
+  pin.given = {{"position", {}}};
   AddContactTerms({pin}, ContactSpec{}, &model);
   EXPECT_EQ(CountType(model, "pin_contact"), 23);
 }
@@ -168,10 +171,10 @@ TEST(ObstacleStepLimit, StopsANodeBeforeItJumpsOverAPinOrThroughADiskOrAPlane) {
   model.num_nodes = 1;
   model.contact.thickness = 0.001;
   ObstacleSpec pin;
-  pin.kind = ObstacleSpec::Kind::kPin;
+  pin.kind = "pin";
   pin.center = {0, 0, 0};
   ObstacleSpec disk = pin;
-  disk.kind = ObstacleSpec::Kind::kDisk;
+  disk.kind = "disk";
   disk.radius = 0.001;
   for (const ObstacleSpec& obstacle : {pin, disk, Floor(0.0)}) {
     model.obstacles = {obstacle};

@@ -54,6 +54,12 @@ Model SmallSheet() {
   return model;
 }
 
+// WriteOutputs of a state already solved.
+void WriteReported(const Scene& scene, const Model& model, const RunResult& result,
+                   const std::string& directory) {
+  WriteOutputs(scene, model, ReportOf(scene, model, result), directory);
+}
+
 RunResult ResultOf(const Model& model) {
   RunResult result;
   result.certificate = ComputeCertificate(model, model.positions.data());
@@ -125,7 +131,7 @@ TEST_F(WritersTest, SummaryJsonReadsBackWithTheValuesOfTheResult) {
   const Model model = SmallSheet();
   const RunResult result = ResultOf(model);
   const Scene scene = SceneWriting({"summary"});
-  WriteOutputs(scene, model, result, directory_.string());
+  WriteReported(scene, model, result, directory_.string());
 
   const YAML::Node summary = YAML::LoadFile(Path("summary.json"));
   EXPECT_EQ(summary["scene"].as<std::string>(), scene.name);
@@ -160,7 +166,7 @@ TEST_F(WritersTest, NonFiniteNumbersAndUnknownStabilityAreNull) {
   result.summary.wall_time_s = NAN;
   result.certificate.energy = INFINITY;
   result.stability = Stability{};  // not computed
-  WriteOutputs(SceneWriting({"summary"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"summary"}), model, result, directory_.string());
 
   const YAML::Node summary = YAML::LoadFile(Path("summary.json"));
   EXPECT_TRUE(summary["wall_time_s"].IsNull());
@@ -173,7 +179,7 @@ TEST_F(WritersTest, NonFiniteNumbersAndUnknownStabilityAreNull) {
 TEST_F(WritersTest, NodesCsvHasOneFullPrecisionRowPerNode) {
   const Model model = SmallSheet();
   const RunResult result = ResultOf(model);
-  WriteOutputs(SceneWriting({"nodes"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"nodes"}), model, result, directory_.string());
 
   const auto lines = Lines(Path("nodes.csv"));
   ASSERT_EQ(lines.size(), 1u + model.num_nodes);
@@ -196,7 +202,7 @@ TEST_F(WritersTest, NodesCsvHasOneFullPrecisionRowPerNode) {
 TEST_F(WritersTest, HistoryCsvHasOneRowPerRecordedIteration) {
   const Model model = SmallSheet();
   const RunResult result = ResultOf(model);
-  WriteOutputs(SceneWriting({"history"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"history"}), model, result, directory_.string());
 
   const auto lines = Lines(Path("history.csv"));
   ASSERT_EQ(lines.size(), 1 + result.summary.history.size());
@@ -218,7 +224,7 @@ TEST_F(WritersTest, TraceOfADynamicMethodGoesToKineticCsv) {
   RunResult result = ResultOf(model);
   result.summary.trace_columns = {"step", "t", "w_c"};
   result.summary.trace = {{0, 0.0, 1.5}, {1, 0.01, 0.75}};
-  WriteOutputs(SceneWriting({"history"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"history"}), model, result, directory_.string());
 
   const auto lines = Lines(Path("kinetic.csv"));
   ASSERT_EQ(lines.size(), 3u);
@@ -230,7 +236,7 @@ TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
   Model model = SmallSheet();
   model.edges = {{0, 1}};
   const RunResult result = ResultOf(model);
-  WriteOutputs(SceneWriting({"vtk", "obj"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"vtk", "obj"}), model, result, directory_.string());
 
   const auto vtk = Lines(Path("mesh.vtk"));
   ASSERT_GT(vtk.size(), 4u);
@@ -284,13 +290,13 @@ TEST_F(WritersTest, CreatesTheFolderAndLeavesNoTemporaryFile) {
   const Model model = SmallSheet();
   const RunResult result = ResultOf(model);
   directory_ /= "nested/deeper";
-  WriteOutputs(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
-               directory_.string());
+  WriteReported(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
+                directory_.string());
   EXPECT_EQ(Files(), (std::set<std::string>{"summary.json", "nodes.csv", "history.csv", "mesh.vtk",
                                             "mesh.obj"}));
   // Writing again replaces the files in place.
-  WriteOutputs(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
-               directory_.string());
+  WriteReported(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
+                directory_.string());
   EXPECT_EQ(Files().size(), 5u);
   directory_ = directory_.parent_path().parent_path();  // TearDown removes the whole tree
 }
@@ -326,7 +332,7 @@ Picture ReadPng(const std::string& path) {
 Scene DrapeScene(const std::vector<std::string>& write) {
   Scene scene = SceneWriting(write);
   ObstacleSpec disk;
-  disk.kind = ObstacleSpec::Kind::kDisk;
+  disk.kind = "disk";
   disk.radius = 0.09;
   scene.obstacles.push_back(disk);
   return scene;
@@ -346,8 +352,8 @@ RunResult Finished() {
 
 TEST_F(WritersTest, DrawsTheSheetInThreeDimensions) {
   const Model model = SmallSheet();
-  WriteOutputs(SceneWriting({"png", "profile", "shadow"}), model, ResultOf(model),
-               directory_.string());
+  WriteReported(SceneWriting({"png", "profile", "shadow"}), model, ResultOf(model),
+                directory_.string());
   // No drape coefficient for a sheet: no profile, no shadow view.
   ASSERT_EQ(Files(), std::set<std::string>{"drape.png"});
   const Picture picture = ReadPng(Path("drape.png"));
@@ -369,7 +375,7 @@ TEST_F(WritersTest, DrawsAChainFromTheFront) {
   model.mass.assign(5, 0.1);
   model.applied.assign(15, 0.0);
   model.grid_index.assign(5, {-1, -1});
-  WriteOutputs(SceneWriting({"png"}), model, Finished(), directory_.string());
+  WriteReported(SceneWriting({"png"}), model, Finished(), directory_.string());
   const Picture picture = ReadPng(Path("drape.png"));
   EXPECT_EQ(picture.width, 900);
   EXPECT_GT(picture.inked, 0.005);
@@ -377,7 +383,7 @@ TEST_F(WritersTest, DrawsAChainFromTheFront) {
 
 TEST_F(WritersTest, DrapeSceneGetsItsProfileFoldsAndPictures) {
   const Model model = SevenFolds();
-  WriteOutputs(DrapeScene({"summary", "profile", "png"}), model, Finished(), directory_.string());
+  WriteReported(DrapeScene({"summary", "profile", "png"}), model, Finished(), directory_.string());
   EXPECT_EQ(Files(),
             (std::set<std::string>{"summary.json", "profile.csv", "drape.png", "shadow.png"}));
 
@@ -411,7 +417,7 @@ TEST_F(WritersTest, DrapeSceneGetsItsProfileFoldsAndPictures) {
 }
 
 TEST_F(WritersTest, ShadowAloneWritesOnlyTheTopView) {
-  WriteOutputs(DrapeScene({"shadow"}), SevenFolds(), Finished(), directory_.string());
+  WriteReported(DrapeScene({"shadow"}), SevenFolds(), Finished(), directory_.string());
   EXPECT_EQ(Files(), std::set<std::string>{"shadow.png"});
 }
 

@@ -234,21 +234,18 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     on_iteration = [&progress](const IterationRecord& record) { return progress.Update(record); };
   }
   EnableInterrupt();
-  LevelsReport levels;
-  const bool multilevel = scene.solver.levels > 1;
-  const RunResult result = multilevel
-                               ? RunLevels(scene, model, scene.solver.method, on_iteration, &levels)
-                               : RunSolve(scene, model, scene.solver.method, on_iteration);
+  const SolveReport report = SolveAndReport(scene, model, scene.solver.method, on_iteration);
   progress.Clear();
 
   try {
-    WriteOutputs(scene, model, result, directory, multilevel ? &levels : nullptr);
+    WriteOutputs(scene, model, report, directory);
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;
   }
-  out << ResultLine(result, directory) << (multilevel ? LevelsLine(levels) : "") << std::endl;
-  return ExitStatus(result);
+  out << ResultLine(report.result, directory) << (report.levels ? LevelsLine(*report.levels) : "")
+      << std::endl;
+  return ExitStatus(report.result);
 }
 
 int Check(const Arguments& arguments, std::ostream& out) {

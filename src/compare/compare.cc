@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/analysis/drape_analysis.h"
+#include "src/analysis/solve_report.h"
 #include "src/compare/compare_report.h"
 #include "src/model/equilibrium.h"
 #include "src/scene/scene_loader.h"
@@ -78,13 +78,6 @@ struct TimedSolve {
   double drape_coefficient = std::nan("");  // at the final positions; NaN where there is none
 };
 
-// The DC a comparison compares: Cusick's with a disk obstacle, else A_shadow/A_flat.
-double SceneDrapeCoefficient(const Scene& scene, const Model& model) {
-  if (!HasDrapeCoefficient(scene, model)) return std::nan("");
-  const DrapeCoefficient dc = ComputeDrapeCoefficient(model, DiscRadius(scene));
-  return DiscRadius(scene) > 0.0 ? dc.cusick : dc.ratio;
-}
-
 TimedSolve Solve(const Scene& scene, const std::string& method, const SceneReference* reference) {
   Model model = BuildModel(scene);
   TimedSolve timed;
@@ -112,7 +105,7 @@ TimedSolve Solve(const Scene& scene, const std::string& method, const SceneRefer
   const long resident_kb = ReadStatusKb("VmRSS");
   const bool peak_reset = ResetPeakResidentSize();
   timed.result = RunSolve(scene, model, method, on_iteration);
-  timed.drape_coefficient = SceneDrapeCoefficient(scene, model);
+  timed.drape_coefficient = ReportedDrapeCoefficient(ReportOf(scene, model, timed.result));
   const long peak_kb = ReadStatusKb("VmHWM");
   if (peak_reset && resident_kb >= 0 && peak_kb >= 0) {
     timed.peak_memory_mb = std::max(0L, peak_kb - resident_kb) / 1024.0;

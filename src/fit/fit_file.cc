@@ -347,15 +347,13 @@ void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
   try {
     scene = LoadScene(specimen.scene_file, overrides);
   } catch (const InputError& error) {
-    const std::string message = error.what();
-    if (message.rfind("--set:", 0) != 0) throw;
-    // Locate a bad key at the parameter that names it.
-    const int index = std::atoi(message.c_str() + 6) - 1;
-    const size_t text = message.find(": ", 6);
-    const FitParameter& parameter = spec.parameters.at(std::max(0, index));
-    throw InputError(parameter.where,
-                     "not a numeric key of " + specimen.scene_file + ": " +
-                         (text == std::string::npos ? message : message.substr(text + 2)));
+    if (error.where().file != "--set") throw;
+    // Locate a bad key at the parameter that names it (the overrides are the parameters, in order).
+    const int index = std::clamp(error.where().line - 1, 0, int(spec.parameters.size()) - 1);
+    const std::string& key = error.where().key;
+    throw InputError(spec.parameters[index].where, "not a numeric key of " + specimen.scene_file +
+                                                       ": " + (key.empty() ? "" : key + ": ") +
+                                                       error.problem());
   }
   const Model model = BuildModel(scene);
   for (const auto& measurement : specimen.measurements) {

@@ -5,55 +5,11 @@
 #include <memory>
 #include <string>
 
-#include "costs/box_contact.h"
-#include "costs/cylinder_contact.h"
-#include "costs/disk_contact.h"
-#include "costs/plane_contact.h"
-#include "costs/sphere_contact.h"
+#include "src/model/obstacle_kinds.h"
 
 namespace drape {
 
 namespace {
-
-const char* KindName(ObstacleSpec::Kind kind) {
-  switch (kind) {
-    case ObstacleSpec::Kind::kSphere:
-      return "sphere";
-    case ObstacleSpec::Kind::kDisk:
-      return "disk";
-    case ObstacleSpec::Kind::kCylinder:
-      return "cylinder";
-    case ObstacleSpec::Kind::kBox:
-      return "box";
-    case ObstacleSpec::Kind::kPlane:
-      return "plane";
-    case ObstacleSpec::Kind::kPin:
-      return "pin";
-  }
-  return "obstacle";
-}
-
-// Calls `visit` with the obstacle's contact functor.
-template <typename Visitor>
-auto WithFunctor(const ObstacleSpec& o, double clearance, double stiffness, Visitor visit) {
-  switch (o.kind) {
-    case ObstacleSpec::Kind::kSphere:
-    case ObstacleSpec::Kind::kPin:  // a point support: a sphere of radius 0 (see sphere_contact.h)
-      return visit(SphereContact::Create(o.center.data(),
-                                         o.kind == ObstacleSpec::Kind::kPin ? 0.0 : o.radius,
-                                         clearance, stiffness));
-    case ObstacleSpec::Kind::kDisk:
-      return visit(DiskContact::Create(o.center.data(), o.radius, clearance, stiffness));
-    case ObstacleSpec::Kind::kCylinder:
-      return visit(
-          CylinderContact::Create(o.center.data(), o.radius, o.height, clearance, stiffness));
-    case ObstacleSpec::Kind::kBox:
-      return visit(BoxContact::Create(o.min.data(), o.max.data(), clearance, stiffness));
-    case ObstacleSpec::Kind::kPlane:
-      break;
-  }
-  return visit(PlaneContact::Create(o.center.data(), o.normal.data(), clearance, stiffness));
-}
 
 bool FullyFixed(const Model& model, int node) {
   return model.fixed[3 * node] && model.fixed[3 * node + 1] && model.fixed[3 * node + 2];
@@ -61,6 +17,7 @@ bool FullyFixed(const Model& model, int node) {
 
 void CheckContactInput(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact) {
   for (const ObstacleSpec& obstacle : obstacles) {
+    CheckedObstacleKind(obstacle);
     if (obstacle.friction > 0.0) {
       throw InputError(obstacle.where, "friction is not supported yet: obstacles are frictionless");
     }
@@ -86,7 +43,7 @@ double ContactStiffness(const ContactSpec& contact, const Model& model) {
 }
 
 double ObstacleDistance(const ObstacleSpec& obstacle, const double* x) {
-  return WithFunctor(obstacle, 0.0, 0.0, [x](const auto& functor) { return functor.Distance(x); });
+  return ObstacleKindOf(obstacle).distance(obstacle, x);
 }
 
 void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
@@ -104,17 +61,14 @@ void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSp
   const double shift = stiffness * std::pow(contact.thickness, 3) / 3.0;
   for (size_t index = 0; index < obstacles.size(); ++index) {
     const ObstacleSpec& obstacle = obstacles[index];
-    const std::string type = std::string(KindName(obstacle.kind)) + "_contact";
+    const ObstacleKind& kind = ObstacleKindOf(obstacle);
     for (int k = 0; k < model->num_nodes; ++k) {
       if (FullyFixed(*model, k)) continue;
       const double* x = model->positions.data() + 3 * k;
       if (anchored && ObstacleDistance(obstacle, x) - contact.thickness > reach) continue;
-      WithFunctor(obstacle, contact.thickness, stiffness, [&](const auto& functor) {
-        model->contact_terms.push_back(
-            {static_cast<int>(model->terms.size()), static_cast<int>(index)});
-        model->terms.push_back(MakeTerm(type, {k}, functor, shift));
-        return 0;
-      });
+      model->contact_terms.push_back(
+          {static_cast<int>(model->terms.size()), static_cast<int>(index)});
+      model->terms.push_back(kind.make_term(obstacle, k, contact.thickness, stiffness, shift));
     }
   }
 }

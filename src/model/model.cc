@@ -183,11 +183,11 @@ void AddSprings(const SpringsSpec& springs, const Mesh& mesh, Model* model) {
 void AddConstantForce(const std::string& type, int node, const Eigen::Vector3d& force,
                       Model* model) {
   if (force.norm() == 0.0) return;
-  const double* reference = model->positions.data() + 3 * node;
+  const double* reference = model->position(node).data();
   const double shift = force.norm() * 2.0 * model->size;
   model->terms.push_back(
       MakeTerm(type, {node}, ConstantForcePotential::Create(force.data(), reference), shift));
-  for (int c = 0; c < 3; ++c) model->applied[3 * node + c] += force[c];
+  NodeAt(model->applied, node) += force;
 }
 
 // The place of each selected node along the selection, from 0 at its first node (lowest id) to 1
@@ -296,7 +296,7 @@ bool SomeObstacleOnThePath(const Scene& scene, const Model& model,
   constexpr int kMaxSteps = 400;
   for (const ObstacleSpec& obstacle : scene.obstacles) {
     for (int k = 0; k < model.num_nodes; ++k) {
-      const Eigen::Vector3d start = Eigen::Map<const Eigen::Vector3d>(&model.positions[3 * k]);
+      const Eigen::Vector3d start = model.position(k);
       const double reach = 1e3 * (model.size + std::abs(ObstacleDistance(obstacle, start.data())));
       double travelled = 0.0;
       for (int step = 0; step < kMaxSteps && travelled <= reach; ++step) {
@@ -315,7 +315,7 @@ bool SomeObstacleOnThePath(const Scene& scene, const Model& model,
 void CheckNoNodeStartsInside(const Scene& scene, const Model& model) {
   for (const ObstacleSpec& obstacle : scene.obstacles) {
     for (int k = 0; k < model.num_nodes; ++k) {
-      const double distance = ObstacleDistance(obstacle, &model.positions[3 * k]);
+      const double distance = ObstacleDistance(obstacle, model.position(k).data());
       if (distance < -1e-9 * model.size) {
         std::ostringstream text;
         text << "node " << k << " starts inside this obstacle (" << -distance
@@ -381,7 +381,7 @@ Model BuildModel(const Scene& scene) {
   model.num_nodes = static_cast<int>(mesh.nodes.size());
   model.positions.resize(model.num_dofs());
   for (int k = 0; k < model.num_nodes; ++k) {
-    for (int c = 0; c < 3; ++c) model.positions[3 * k + c] = mesh.nodes[k][c];
+    model.position(k) = Eigen::Vector3d(mesh.nodes[k][0], mesh.nodes[k][1], mesh.nodes[k][2]);
   }
   model.fixed.assign(model.num_dofs(), 0);
   model.applied.assign(model.num_dofs(), 0.0);

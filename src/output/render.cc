@@ -11,6 +11,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "src/model/obstacle_kinds.h"
+
 namespace drape {
 
 namespace {
@@ -207,48 +209,46 @@ void AddBox(const Vec3& lo, const Vec3& hi, Rgb colour, std::vector<Primitive>* 
   AddPatch(lo + ex, ey, ez, cells, colour, out);
 }
 
-// The obstacles as shaded polygons. Unbounded or support-like parts are sized from the fabric's
-// bounding box `fabric`: a plane is a square patch 1.4 × its extent around the point of the plane
-// nearest the fabric's centre; a disk is drawn on a stem (a tenth of its radius) down to the
-// fabric's lowest point, a pin as a thin stem.
+// A plane as a square patch 1.4 × the fabric's extent around the point of the plane nearest the
+// fabric's centre, drawn behind everything.
+void AddPlanePatch(const Vec3& point, const Vec3& normal, const Box3& fabric,
+                   std::vector<Primitive>* out) {
+  const double extent = std::max(fabric.Extent(), 1e-9);
+  const Vec3 foot = fabric.Centre() - (fabric.Centre() - point).dot(normal) * normal;
+  const Vec3 a =
+      (std::abs(normal.z()) < 0.9 ? normal.cross(Vec3::UnitZ()) : normal.cross(Vec3::UnitX()))
+          .normalized() *
+      1.4 * extent;
+  const Vec3 b = normal.cross(a);
+  const size_t first = out->size();
+  AddPatch(foot - 0.5 * a - 0.5 * b, a, b, 10, kFloor, out);
+  for (size_t k = first; k < out->size(); ++k) (*out)[k].background = true;
+}
+
+void AddPart(const ObstaclePart& part, const Box3& fabric, std::vector<Primitive>* out) {
+  switch (part.shape) {
+    case ObstaclePart::Shape::kSphere:
+      AddSphere(part.a, part.radius, kObstacle, out);
+      break;
+    case ObstaclePart::Shape::kCylinder:
+      AddCylinder(part.a, part.radius, part.height, part.capped, kObstacle, out);
+      break;
+    case ObstaclePart::Shape::kBox:
+      AddBox(part.a, part.b, kObstacle, out);
+      break;
+    case ObstaclePart::Shape::kPlane:
+      AddPlanePatch(part.a, part.b, fabric, out);
+      break;
+  }
+}
+
+// The obstacles as shaded polygons, each drawn as its kind says (src/model/obstacle_kinds.h),
+// unbounded or support-like parts sized from the fabric's bounding box `fabric`.
 void AddObstacles(const std::vector<ObstacleSpec>& obstacles, const Box3& fabric, double floor_z,
                   std::vector<Primitive>* out) {
-  const double extent = std::max(fabric.Extent(), 1e-9);
+  const DrawingFrame frame{std::max(fabric.Extent(), 1e-9), floor_z};
   for (const ObstacleSpec& o : obstacles) {
-    switch (o.kind) {
-      case ObstacleSpec::Kind::kSphere:
-        AddSphere(o.center, o.radius, kObstacle, out);
-        break;
-      case ObstacleSpec::Kind::kDisk: {
-        AddCylinder(o.center, o.radius, 0.02 * o.radius, true, kObstacle, out);
-        const double stem = std::max(o.center.z() - floor_z, 0.02 * o.radius);
-        AddCylinder(o.center, 0.1 * o.radius, stem, false, kObstacle, out);
-        break;
-      }
-      case ObstacleSpec::Kind::kCylinder:
-        AddCylinder(o.center, o.radius, o.height, true, kObstacle, out);
-        break;
-      case ObstacleSpec::Kind::kBox:
-        AddBox(o.min, o.max, kObstacle, out);
-        break;
-      case ObstacleSpec::Kind::kPin: {
-        const double stem = std::max(o.center.z() - floor_z, 0.05 * extent);
-        AddCylinder(o.center, 0.006 * extent, stem, true, kObstacle, out);
-        break;
-      }
-      case ObstacleSpec::Kind::kPlane: {
-        const Vec3 n = o.normal.normalized();
-        const Vec3 foot = fabric.Centre() - (fabric.Centre() - o.center).dot(n) * n;
-        const Vec3 a =
-            (std::abs(n.z()) < 0.9 ? n.cross(Vec3::UnitZ()) : n.cross(Vec3::UnitX())).normalized() *
-            1.4 * extent;
-        const Vec3 b = n.cross(a);
-        const size_t first = out->size();
-        AddPatch(foot - 0.5 * a - 0.5 * b, a, b, 10, kFloor, out);
-        for (size_t k = first; k < out->size(); ++k) (*out)[k].background = true;
-        break;
-      }
-    }
+    for (const ObstaclePart& part : ObstacleKindOf(o).draw(o, frame)) AddPart(part, fabric, out);
   }
 }
 
@@ -298,18 +298,17 @@ void Frame(const std::vector<Primitive>& primitives, const Box3& fabric, int wid
 // lower: its shadow would float beside it.
 double FloorHeight(const std::vector<ObstacleSpec>& obstacles, const Box3& fabric) {
   for (const ObstacleSpec& o : obstacles) {
-    if (o.kind == ObstacleSpec::Kind::kPlane && o.normal.normalized().z() > 0.999 &&
-        o.center.z() <= fabric.min.z()) {
-      return o.center.z();
+    for (const ObstaclePart& part : ObstacleKindOf(o).draw(o, DrawingFrame{})) {
+      if (part.shape == ObstaclePart::Shape::kPlane && part.b.z() > 0.999 &&
+          part.a.z() <= fabric.min.z()) {
+        return part.a.z();
+      }
     }
   }
   const double z = fabric.min.z() - 0.05 * fabric.Extent();
   for (const ObstacleSpec& o : obstacles) {
-    double bottom = std::numeric_limits<double>::infinity();
-    if (o.kind == ObstacleSpec::Kind::kBox) bottom = o.min.z();
-    if (o.kind == ObstacleSpec::Kind::kCylinder) bottom = o.center.z() - o.height;
-    if (o.kind == ObstacleSpec::Kind::kSphere) bottom = o.center.z() - o.radius;
-    if (bottom < z) return std::numeric_limits<double>::quiet_NaN();
+    const double bottom = ObstacleKindOf(o).lowest_z(o);
+    if (std::isfinite(bottom) && bottom < z) return std::numeric_limits<double>::quiet_NaN();
   }
   return z;
 }

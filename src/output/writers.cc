@@ -105,11 +105,11 @@ std::string JsonVector(const Eigen::Vector3d& v) {
 
 // How deep the fabric sits in the obstacles' clearance layer (the contact penalty's accuracy), and
 // the force the obstacles exert on it, in total and per obstacle (in the scene's order), N.
-void AddContactMembers(const Scene& scene, const Model& model, const Certificate& certificate,
+void AddContactMembers(const Scene& scene, const RunResult& result,
                        std::vector<std::pair<std::string, std::string>>* members) {
   if (scene.obstacles.empty()) return;
-  const ContactReport contact =
-      MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
+  const ContactReport& contact = result.contact;
+  const Certificate& certificate = result.certificate;
   std::string by_obstacle = "[";
   for (size_t k = 0; k < certificate.contact_sum_by_obstacle.size(); ++k) {
     by_obstacle += (k ? ", " : "") + JsonVector(certificate.contact_sum_by_obstacle[k]);
@@ -217,7 +217,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
     members.emplace_back("state_problem", JsonString(certificate.unsound));
   }
   if (drape) AddDrapeMembers(*drape, &members);
-  AddContactMembers(scene, model, certificate, &members);
+  AddContactMembers(scene, result, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics",
                        JsonMap(summary.statistics, 1, [](double v) { return JsonNumber(v); }));
@@ -384,12 +384,13 @@ void CheckOutputWritable(const std::string& directory) {
   }
 }
 
-void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
-                  const std::string& directory, const LevelsReport* levels) {
+void WriteOutputs(const Scene& scene, const Model& model, const SolveReport& report,
+                  const std::string& directory) {
   ResultFolder result_folder(directory);  // the files go to its staging folder, then move in
   const fs::path& folder = result_folder.staging();
-  std::optional<DrapeAnalysis> drape;
-  if (HasDrapeCoefficient(scene, model)) drape = AnalyseDrape(scene, model);
+  const RunResult& result = report.result;
+  const std::optional<DrapeAnalysis>& drape = report.drape;
+  const LevelsReport* levels = report.levels ? &*report.levels : nullptr;
   if (Requested(scene, "summary")) {
     WriteAtomically(folder / "summary.json", [&](std::ostream& out) {
       WriteSummary(scene, model, result, drape, levels, out);

@@ -6,10 +6,9 @@
 
 #include <string>
 
-#include "src/analysis/levels.h"
+#include "src/analysis/solve_report.h"
 #include "src/model/model.h"
 #include "src/scene/scene.h"
-#include "src/solvers/run.h"
 
 namespace drape {
 
@@ -19,10 +18,10 @@ void CheckOutputWritable(const std::string& directory);
 
 // Writes what scene.output.write asks for into `directory` (created if needed), as a whole
 // (src/output/result_folder.h): files of an earlier run that this one does not write are removed.
-// `levels` (of a `solver.levels` run, else null) adds the `levels` and `extrapolation` members to
+// A `solver.levels` run's figures (report.levels) add the `levels` and `extrapolation` members to
 // summary.json.
-void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
-                  const std::string& directory, const LevelsReport* levels = nullptr);
+void WriteOutputs(const Scene& scene, const Model& model, const SolveReport& report,
+                  const std::string& directory);
 
 }  // namespace drape
 

@@ -65,6 +65,7 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
       result.summary.constraint_forces.empty() ? nullptr : &result.summary.constraint_forces;
   result.certificate = ComputeCertificate(model, model.positions.data(), constraint);
   RequireFinite(scene, model, result, method);
+  result.contact = MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
   result.residual_floor = RelativeResidualFloor(model, model.positions.data());
   if (result.certificate.unsound.empty()) {
     result.stability = AnalyseStability(model, model.positions.data());

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
 #include "src/numerics/round_off_floor.h"
@@ -18,6 +19,7 @@ struct RunResult {
   SolverSummary summary;    // what the solver says
   Certificate certificate;  // recomputed at the final positions
   Stability stability;      // stable = false whenever certificate.unsound says why
+  ContactReport contact;    // the penetration into the obstacles' clearance (with obstacles)
   bool converged = false;   // the solver's claim, confirmed by the certificate
   // The relative residual's round-off floor at the final positions (src/numerics/round_off_floor.h)
   // and whether the solve stopped there above the tolerance (then converged: the tolerance is
