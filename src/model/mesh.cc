@@ -292,6 +292,19 @@ void AddCircleCellArea(const std::array<int, 4>& corners, double x0, double y0, 
   }
 }
 
+// The springs from lattice node (i, j) of a circle mesh (`at`: lattice (i, j) to node id, -1
+// outside the disc).
+template <typename At>
+void AddCircleLinks(int i, int j, const At& at, Mesh* mesh) {
+  const int a = at(i, j);
+  if (a >= 0 && at(i + 1, j) >= 0) mesh->warp.push_back({a, at(i + 1, j)});
+  if (a >= 0 && at(i, j + 1) >= 0) mesh->weft.push_back({a, at(i, j + 1)});
+  if (a >= 0 && at(i + 2, j) >= 0) mesh->flexion_warp.push_back({a, at(i + 2, j)});
+  if (a >= 0 && at(i, j + 2) >= 0) mesh->flexion_weft.push_back({a, at(i, j + 2)});
+  if (a >= 0 && at(i + 1, j + 1) >= 0) mesh->shear.push_back({a, at(i + 1, j + 1)});
+  if (at(i + 1, j) >= 0 && at(i, j + 1) >= 0) mesh->shear.push_back({at(i + 1, j), at(i, j + 1)});
+}
+
 Mesh BuildCircle(const MeshSpec& spec) {
   if (!(spec.radius > 0.0) || !(spec.spacing > 0.0)) {
     throw InputError(spec.where, "a circle mesh needs a positive radius and spacing");
@@ -321,15 +334,8 @@ Mesh BuildCircle(const MeshSpec& spec) {
   mesh.area.assign(mesh.nodes.size(), 0.0);
   for (int j = 0; j < side; ++j) {
     for (int i = 0; i < side; ++i) {
-      const int a = at(i, j);
-      if (a >= 0 && at(i + 1, j) >= 0) mesh.warp.push_back({a, at(i + 1, j)});
-      if (a >= 0 && at(i, j + 1) >= 0) mesh.weft.push_back({a, at(i, j + 1)});
-      if (a >= 0 && at(i + 2, j) >= 0) mesh.flexion_warp.push_back({a, at(i + 2, j)});
-      if (a >= 0 && at(i, j + 2) >= 0) mesh.flexion_weft.push_back({a, at(i, j + 2)});
-      if (a >= 0 && at(i + 1, j + 1) >= 0) mesh.shear.push_back({a, at(i + 1, j + 1)});
-      if (at(i + 1, j) >= 0 && at(i, j + 1) >= 0)
-        mesh.shear.push_back({at(i + 1, j), at(i, j + 1)});
-      AddCircleCellTriangles(a, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), &mesh);
+      AddCircleLinks(i, j, at, &mesh);
+      AddCircleCellTriangles(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), &mesh);
     }
   }
   // Cells from one step outside the lattice's first row and column: the disc reaches past it.
