@@ -1,7 +1,9 @@
 // The `drape` command, run as a process (DRAPE_BINARY): subcommands, exit status, what is written
 // and what is not.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
@@ -367,6 +369,27 @@ TEST_F(CliTest, StabilityIsOnTheResultLineAndASaddleExitsThree) {
   const YAML::Node summary = Summary(directory_ / "curtain");
   EXPECT_TRUE(summary["saddle"].as<bool>());
   EXPECT_LT(summary["min_eigenvalue"].as<double>(), 0.0);
+}
+
+// A second run into a folder another run holds is refused before it solves (exit 2, "nothing
+// solved"), and the holder's files are untouched. Before, the lock covered only the writing: the
+// second run solved in full, then failed to write ("cannot write the results").
+TEST_F(CliTest, ASecondRunIntoAHeldFolderIsRefusedBeforeItSolves) {
+  fs::create_directories(out_);
+  std::ofstream(out_ / "summary.json") << "{\"scene\": \"the other run\"}\n";
+  const int other = ::open((out_ / ".drape.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(other, 0);
+  ASSERT_EQ(::flock(other, LOCK_EX | LOCK_NB), 0);  // as the other run holds it
+  const Outcome refused = Drape({"solve", WriteScene()});
+  ::close(other);
+  EXPECT_EQ(refused.exit_status, 2);
+  EXPECT_NE(refused.err.find("another drape run"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("nothing solved"), std::string::npos) << refused.err;
+  EXPECT_EQ(refused.out, "");
+  EXPECT_EQ(Summary(out_)["scene"].as<std::string>(), "the other run");
+  EXPECT_FALSE(fs::exists(out_ / "nodes.csv"));
+  const Outcome after = Drape({"solve", WriteScene()});  // the lock released: a run goes through
+  EXPECT_EQ(after.exit_status, 0) << after.err;
 }
 
 }  // namespace

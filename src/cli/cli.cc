@@ -21,6 +21,7 @@
 #include "src/fit/fit_writer.h"
 #include "src/model/model.h"
 #include "src/numerics/library_threads.h"
+#include "src/output/result_folder.h"
 #include "src/output/writers.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
@@ -226,6 +227,16 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     return kExitBadInput;
   }
   Model model = BuildModel(scene);
+  // The folder's lock is held from before the solve to the end of the writing: a second run into
+  // the same folder is refused here, before it solves, and nothing of either run is lost. A run
+  // that fails before writing removes the folder if the lock created it.
+  std::optional<ResultFolderLock> lock;
+  try {
+    lock.emplace(directory, /*remove_if_unused=*/true);
+  } catch (const std::exception& error) {
+    err << "drape: " << error.what() << "; nothing solved\n";
+    return kExitBadInput;
+  }
 
   const bool plain = !options.show_progress && options.plain_progress_interval_s > 0.0;
   ProgressLine progress(err, plain ? options.plain_progress_interval_s : 0.2, plain);
@@ -239,6 +250,7 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
 
   try {
     WriteOutputs(scene, model, report, directory);
+    lock->KeepFolder();
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;

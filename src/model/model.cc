@@ -24,7 +24,9 @@
 #include "src/model/model.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "costs/constant_force_potential.h"
@@ -37,6 +39,7 @@
 #include "src/model/mesh.h"
 #include "src/model/selection.h"
 #include "src/model/stretch_limit.h"
+#include "src/scene/solver_methods.h"
 
 namespace drape {
 
@@ -55,6 +58,39 @@ std::map<std::string, int> Model::TermCounts() const {
 namespace {
 
 const char* const kAxisNames[3] = {"x", "y", "z"};
+
+// The run's time limit bounds the build of the model too (solver.time_limit, else the method's
+// default): Check, called between the stages, stops a build past it with an InputError located at
+// the solver section (a huge mesh under a short limit stops near the limit, not minutes later).
+class BuildClock {
+ public:
+  explicit BuildClock(const Scene& scene)
+      : scene_(scene),
+        limit_(FindSolverMethod(scene.solver.method)
+                   ? EffectiveTimeLimit(scene.solver, scene.solver.method)
+                   : scene.solver.time_limit.value_or(std::numeric_limits<double>::infinity())),
+        start_(std::chrono::steady_clock::now()) {}
+
+  // `done`: what has been built so far, for the message.
+  void Check(const std::string& done) const {
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (!(elapsed > limit_)) return;
+    std::ostringstream text;
+    text.precision(3);
+    text << "building the model took " << elapsed << " s (" << done
+         << "), more than the time limit " << limit_ << " s (solver.time_limit"
+         << (scene_.solver.time_limit ? "" : ", the method's default")
+         << "): raise the time limit or use a coarser mesh (mesh.nodes, mesh.spacing)";
+    const Location& where = scene_.solver.where.line > 0 ? scene_.solver.where : scene_.mesh.where;
+    throw InputError(where, text.str());
+  }
+
+ private:
+  const Scene& scene_;
+  const double limit_;
+  const std::chrono::steady_clock::time_point start_;
+};
 
 void RejectUnsupported(const Scene& scene) {
   const MaterialSpec& material = scene.material;
@@ -373,8 +409,11 @@ void CheckPressureHeld(const Scene& scene, const Model& model) {
 }  // namespace
 
 Model BuildModel(const Scene& scene) {
+  const BuildClock clock(scene);
   RejectUnsupported(scene);
   const Mesh mesh = BuildMesh(scene.mesh);
+  const std::string nodes = std::to_string(mesh.nodes.size()) + " nodes";
+  clock.Check("the mesh of " + nodes);
   CheckPlanarFor2d(scene, mesh);
   Model model;
   model.dimension = scene.dimension;
@@ -407,12 +446,15 @@ Model BuildModel(const Scene& scene) {
       AddStretchLimitTerms(*scene.material.springs.stretch_limit, &model);
     }
   }
+  clock.Check("the elastic terms of " + nodes);
   AddLoads(scene, mesh, &model);
   if (!scene.obstacles.empty()) AddContactTerms(scene.obstacles, scene.contact, &model);
+  clock.Check("the loads and contact terms of " + nodes);
   CheckNoNodeStartsInside(scene, model);
   CheckHasMinimum(scene, model);
   CheckPressureHeld(scene, model);
   ValidateModel(model);
+  clock.Check("the checks of the model of " + nodes);
   return model;
 }
 
