@@ -332,10 +332,9 @@ std::vector<FitMeasurement> ReadMeasurements(const YamlValue& value, const std::
 // Checks a specimen's scene with every parameter at its initial value, and each measurement
 // against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
 void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
-  std::vector<std::string> overrides;
-  for (const auto& parameter : spec.parameters) {
-    overrides.push_back(parameter.key + "=" + FormatNumber(parameter.initial));
-  }
+  std::vector<double> initial;
+  for (const auto& parameter : spec.parameters) initial.push_back(parameter.initial);
+  const std::vector<std::string> overrides = SceneOverrides(spec, initial);
   std::error_code missing;
   if (!std::filesystem::is_regular_file(specimen.scene_file, missing)) {
     throw InputError(specimen.where,
@@ -349,8 +348,10 @@ void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
   } catch (const InputError& error) {
     const std::string message = error.what();
     if (message.rfind("--set:", 0) != 0) throw;
-    // Locate a bad key at the parameter that names it.
-    const int index = std::atoi(message.c_str() + 6) - 1;
+    // Locate a bad key at the parameter that names it (a bad `--set` of the command stays as is).
+    const int index =
+        std::atoi(message.c_str() + 6) - 1 - static_cast<int>(spec.scene_overrides.size());
+    if (index < 0) throw;
     const size_t text = message.find(": ", 6);
     const FitParameter& parameter = spec.parameters.at(std::max(0, index));
     throw InputError(parameter.where,
@@ -466,9 +467,18 @@ ReactionData ReadReactionFile(const std::string& path, const Location& where) {
   return data;
 }
 
-FitSpec LoadFitFile(const std::string& path) {
+std::vector<std::string> SceneOverrides(const FitSpec& spec, const std::vector<double>& theta) {
+  std::vector<std::string> overrides = spec.scene_overrides;
+  for (size_t j = 0; j < theta.size(); ++j) {
+    overrides.push_back(spec.parameters[j].key + "=" + FormatNumber(theta[j]));
+  }
+  return overrides;
+}
+
+FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& scene_overrides) {
   FitSpec spec;
   spec.file = path;
+  spec.scene_overrides = scene_overrides;
   spec.name = fs::path(path).stem().string();
   spec.root = Location{path, 1, 1, ""};
   const YAML::Node document = ReadYamlFile(path, "fit file");
