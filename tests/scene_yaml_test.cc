@@ -43,7 +43,7 @@ Scene RoundTrip(const Scene& scene, const std::string& tag) {
 TEST(SceneYaml, EveryConfigRoundTrips) {
   int count = 0;
   for (const auto& entry : fs::recursive_directory_iterator(testing::SourcePath("configs"))) {
-    const fs::path path = entry.path();
+    const fs::path& path = entry.path();
     if (path.extension() != ".yaml" || path.filename().string().rfind("fit", 0) == 0) continue;
     SCOPED_TRACE(path.string());
     const Scene scene = LoadScene(path.string());

@@ -310,8 +310,12 @@ TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
     if (line.rfind("f ", 0) == 0 && faces == 1) {
       EXPECT_EQ(line, "f 1/1/1 2/2/2 4/4/4");  // 1-based vertex/texture/normal
     }
-    if (line.rfind("vt ", 0) == 0 && textures == 4) EXPECT_EQ(line, "vt 1 1");   // the flat pattern
-    if (line.rfind("vn ", 0) == 0 && normals == 3) EXPECT_EQ(line, "vn 0 0 1");  // flat corner
+    if (line.rfind("vt ", 0) == 0 && textures == 4) {
+      EXPECT_EQ(line, "vt 1 1");  // the flat pattern
+    }
+    if (line.rfind("vn ", 0) == 0 && normals == 3) {
+      EXPECT_EQ(line, "vn 0 0 1");  // node 2's normal: the sheet is flat there
+    }
   }
   EXPECT_EQ(vertices, 4);
   EXPECT_EQ(textures, 4);
@@ -329,8 +333,8 @@ bool PythonHas(const std::string& module) {
 std::string RunPython(const fs::path& folder, const std::string& script) {
   const fs::path file = folder / "check.py", log = folder / "check.log";
   std::ofstream(file) << script;
-  const std::string command = "cd '" + folder.string() + "' && /usr/bin/python3 " +
-                              file.string() + " > " + log.string() + " 2>&1";
+  const std::string command = "cd '" + folder.string() + "' && /usr/bin/python3 " + file.string() +
+                              " > " + log.string() + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);
   std::stringstream text;

@@ -282,7 +282,7 @@ FitSpecimen ReadSpecimen(const YamlMap& item, const std::string& directory) {
       Fail(*measurements, "give the measurements inside scene: {file, measurements}");
     const YamlMap map(scene, {"file", "measurements"});
     specimen.scene_file = Resolve(directory, ReadString(map.Get("file")));
-    measurements = map.Get("measurements");
+    measurements.emplace(map.Get("measurements"));  // not operator= (clang-tidy: it may throw)
   } else {
     specimen.scene_file = Resolve(directory, ReadString(scene));
     if (!measurements) {
@@ -329,12 +329,11 @@ std::vector<FitMeasurement> ReadMeasurements(const YamlValue& value, const std::
   return measurements;
 }
 
-// Checks a specimen's scene with every parameter at its initial value, and each measurement
-// against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
-void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
+// The specimen's scene with every parameter at its initial value. A bad key named by a fitted
+// parameter is located at that parameter (a bad `--set` of the command stays as it is).
+Scene LoadSpecimenScene(const FitSpec& spec, const FitSpecimen& specimen) {
   std::vector<double> initial;
   for (const auto& parameter : spec.parameters) initial.push_back(parameter.initial);
-  const std::vector<std::string> overrides = SceneOverrides(spec, initial);
   std::error_code missing;
   if (!std::filesystem::is_regular_file(specimen.scene_file, missing)) {
     throw InputError(specimen.where,
@@ -342,22 +341,26 @@ void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
                          (std::filesystem::exists(specimen.scene_file, missing) ? "it is not a file"
                                                                                 : "no such file"));
   }
-  Scene scene;
   try {
-    scene = LoadScene(specimen.scene_file, overrides);
+    return LoadScene(specimen.scene_file, SceneOverrides(spec, initial));
   } catch (const InputError& error) {
     const std::string message = error.what();
     if (message.rfind("--set:", 0) != 0) throw;
-    // Locate a bad key at the parameter that names it (a bad `--set` of the command stays as is).
     const int index =
         std::atoi(message.c_str() + 6) - 1 - static_cast<int>(spec.scene_overrides.size());
     if (index < 0) throw;
     const size_t text = message.find(": ", 6);
-    const FitParameter& parameter = spec.parameters.at(std::max(0, index));
+    const FitParameter& parameter = spec.parameters.at(index);
     throw InputError(parameter.where,
                      "not a numeric key of " + specimen.scene_file + ": " +
                          (text == std::string::npos ? message : message.substr(text + 2)));
   }
+}
+
+// Checks a specimen's scene with every parameter at its initial value, and each measurement
+// against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
+void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
+  const Scene scene = LoadSpecimenScene(spec, specimen);
   const Model model = BuildModel(scene);
   for (const auto& measurement : specimen.measurements) {
     using Kind = FitMeasurement::Kind;

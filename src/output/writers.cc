@@ -327,6 +327,7 @@ double TriangleArea(const std::vector<double>& x, const std::array<int, 3>& t) {
 // element; 0 where the start is degenerate.
 std::vector<double> CellStrains(const Model& model) {
   std::vector<double> strains;
+  strains.reserve(model.triangles.size() + model.edges.size());
   const bool known = model.initial.size() == model.positions.size();
   for (const auto& t : model.triangles) {
     const double rest = known ? TriangleArea(model.initial, t) : 0.0;
@@ -419,6 +420,7 @@ std::vector<std::array<double, 2>> PatternCoordinates(const Model& model) {
   const int u = narrowest == 0 ? 1 : 0, v = narrowest == 2 ? 1 : 2;
   const double scale = std::max({extent[u], extent[v], 1e-300});
   std::vector<std::array<double, 2>> uv;
+  uv.reserve(model.num_nodes);
   for (int node = 0; node < model.num_nodes; ++node) {
     uv.push_back({(start[3 * node + u] - low[u]) / scale, (start[3 * node + v] - low[v]) / scale});
   }
@@ -505,6 +507,7 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
       {"structural", &material.springs.structural},
       {"shear", &material.springs.shear},
       {"flexion", &material.springs.flexion}};
+  values.reserve(values.size() + 2 * std::size(families));
   for (const auto& [name, family] : families) {
     if (!family->present) continue;
     values.push_back({std::string(name) + ".warp", family->warp, "N/m"});
