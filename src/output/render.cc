@@ -482,6 +482,56 @@ void SplitObstacles(const std::vector<Primitive>& obstacles, double edge,
 
 }  // namespace
 
+namespace {
+
+// The key of drape.png's colours and marks, top right: the fabric's two faces (or a chain), the
+// fixed nodes (filled: every direction held; hollow: some) and the obstacles, as far as drawn.
+void PaintLegend(cairo_t* cr, const Scene& scene, const Model& model, int width) {
+  struct Entry {
+    std::string text;
+    Rgb colour;
+    int mark;  // 0 swatch, 1 line, 2 filled square, 3 hollow square
+  };
+  std::vector<Entry> entries;
+  if (!model.triangles.empty()) {
+    entries.push_back({"upper face (as it lay flat)", kFabricFront, 0});
+    entries.push_back({"lower face", kFabricBack, 0});
+  }
+  if (!model.edges.empty()) entries.push_back({"chain", kChain, 1});
+  bool fully = false, partly = false;
+  for (int k = 0; k < model.num_nodes; ++k) {
+    const int held = HeldCoordinates(model, k);
+    fully = fully || held == (model.dimension != 2 ? 3 : 2);
+    partly = partly || (held > 0 && held < (model.dimension != 2 ? 3 : 2));
+  }
+  if (fully) entries.push_back({"fixed node", {0, 0, 0}, 2});
+  if (partly) entries.push_back({"partly fixed node", {0, 0, 0}, 3});
+  if (!scene.obstacles.empty()) entries.push_back({"obstacle", kObstacle, 0});
+  const double x = width - 210.0;
+  for (size_t k = 0; k < entries.size(); ++k) {
+    const Entry& entry = entries[k];
+    const double y = 24.0 + 18.0 * k;
+    cairo_set_source_rgb(cr, entry.colour.r, entry.colour.g, entry.colour.b);
+    if (entry.mark == 1) {
+      cairo_move_to(cr, x, y - 4);
+      cairo_line_to(cr, x + 14, y - 4);
+      cairo_set_line_width(cr, 2.5);
+      cairo_stroke(cr);
+    } else if (entry.mark == 3) {
+      cairo_rectangle(cr, x + 3.5, y - 7.5, 7, 7);
+      cairo_set_line_width(cr, 1.5);
+      cairo_stroke(cr);
+    } else {
+      const double side = entry.mark == 2 ? 7.0 : 12.0;
+      cairo_rectangle(cr, x + 7 - side / 2, y - 4 - side / 2, side, side);
+      cairo_fill(cr);
+    }
+    Text(cr, x + 22, y, entry.text, 12);
+  }
+}
+
+}  // namespace
+
 void DrawDrapeView(const Scene& scene, const Model& model, std::ostream& png,
                    const DrapeViewOptions& options) {
   assert(model.num_nodes > 0);
@@ -535,6 +585,7 @@ void DrawDrapeView(const Scene& scene, const Model& model, std::ostream& png,
   for (size_t k = 0; k < options.caption.size(); ++k) {
     Text(cr, 20, 70 + 20.0 * k, options.caption[k], 13);
   }
+  PaintLegend(cr, scene, model, options.width);
   PaintAxes(cr, camera, 45, options.height - 35);
   ScaleBar(cr, options.width - 200, options.height - 25, camera.scale, 140);
   WritePng(surface.get(), png);

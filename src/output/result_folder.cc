@@ -71,9 +71,18 @@ void Rename(const fs::path& from, const fs::path& to) {
 }  // namespace
 
 const std::vector<std::string>& ResultFileNames() {
-  static const std::vector<std::string> names = {"summary.json", "nodes.csv", "history.csv",
-                                                 "kinetic.csv",  "mesh.vtk",  "mesh.obj",
-                                                 "profile.csv",  "drape.png", "shadow.png"};
+  static const std::vector<std::string> names = {"summary.json",
+                                                 "nodes.csv",
+                                                 "history.csv",
+                                                 "kinetic.csv",
+                                                 "mesh.vtk",
+                                                 "mesh.obj",
+                                                 "profile.csv",
+                                                 "drape.png",
+                                                 "shadow.png",
+                                                 "scene.yaml",
+                                                 "kinetic_explicit-euler.csv",
+                                                 "kinetic_puiseux-dynamic.csv"};  // TraceFileName
   return names;
 }
 
