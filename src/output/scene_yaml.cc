@@ -6,8 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "src/model/obstacle_kinds.h"
 #include "src/output/json.h"
+#include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 
 namespace drape {
@@ -303,43 +306,22 @@ void WriteLoads(const LoadsSpec& loads, YAML::Emitter& out) {
   out << YAML::EndMap;
 }
 
+// The kind's keys (src/model/obstacle_kinds.h) and friction, with the values the loader read.
 void WriteObstacle(const ObstacleSpec& obstacle, YAML::Emitter& out) {
-  static const char* const kinds[] = {"sphere", "disk", "cylinder", "box", "plane", "pin"};
   out << YAML::BeginMap;
-  Key(out, kinds[static_cast<int>(obstacle.kind)]);
+  Key(out, obstacle.kind);
   out << YAML::Value << YAML::BeginMap;
-  switch (obstacle.kind) {
-    case ObstacleSpec::Kind::kSphere:
-    case ObstacleSpec::Kind::kDisk:
-    case ObstacleSpec::Kind::kCylinder:
-      Key(out, "center");
-      Vector3(out, obstacle.center);
-      Key(out, "radius");
-      Number(out, obstacle.radius);
-      if (obstacle.kind == ObstacleSpec::Kind::kCylinder) {
-        Key(out, "height");
-        Number(out, obstacle.height);
-      }
-      break;
-    case ObstacleSpec::Kind::kBox:
-      Key(out, "min");
-      Vector3(out, obstacle.min);
-      Key(out, "max");
-      Vector3(out, obstacle.max);
-      break;
-    case ObstacleSpec::Kind::kPlane:
-      Key(out, "point");
-      Vector3(out, obstacle.center);
-      Key(out, "normal");
-      Vector3(out, obstacle.normal);
-      break;
-    case ObstacleSpec::Kind::kPin:
-      Key(out, "position");
-      Vector3(out, obstacle.center);
-      break;
+  std::vector<std::string> keys = ObstacleKindOf(obstacle).keys;
+  keys.push_back("friction");
+  for (const std::string& key : keys) {
+    Key(out, key);
+    const std::vector<double> value = ObstacleKeyValue(obstacle, key);
+    if (value.size() == 3) {
+      Vector3(out, Eigen::Vector3d(value[0], value[1], value[2]));
+    } else {
+      Number(out, value.at(0));
+    }
   }
-  Key(out, "friction");
-  Number(out, obstacle.friction);
   out << YAML::EndMap << YAML::EndMap;
 }
 

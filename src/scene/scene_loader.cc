@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -902,6 +903,18 @@ Scene LoadScene(const std::string& path, const std::vector<std::string>& overrid
   ApplyOverrides(document, overrides, &origins);
   ReadScene(YamlRoot(document, origins), &scene);
   return scene;
+}
+
+std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::string& key) {
+  auto three = [](const Eigen::Vector3d& v) { return std::vector<double>{v.x(), v.y(), v.z()}; };
+  if (key == "center" || key == "position" || key == "point") return three(obstacle.center);
+  if (key == "min") return three(obstacle.min);
+  if (key == "max") return three(obstacle.max);
+  if (key == "normal") return three(obstacle.normal);
+  if (key == "radius") return {obstacle.radius};
+  if (key == "height") return {obstacle.height};
+  assert(key == "friction" && "an obstacle key ReadObstacleKey does not read");
+  return {obstacle.friction};
 }
 
 }  // namespace drape
