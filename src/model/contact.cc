@@ -11,10 +11,6 @@ namespace drape {
 
 namespace {
 
-bool FullyFixed(const Model& model, int node) {
-  return model.fixed[3 * node] && model.fixed[3 * node + 1] && model.fixed[3 * node + 2];
-}
-
 void CheckContactInput(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact) {
   for (const ObstacleSpec& obstacle : obstacles) {
     CheckedObstacleKind(obstacle);
@@ -33,9 +29,7 @@ void CheckContactInput(const std::vector<ObstacleSpec>& obstacles, const Contact
 double ContactStiffness(const ContactSpec& contact, const Model& model) {
   double reference = 0.0;
   for (int k = 0; k < model.num_nodes; ++k) {
-    reference += std::sqrt(model.applied[3 * k] * model.applied[3 * k] +
-                           model.applied[3 * k + 1] * model.applied[3 * k + 1] +
-                           model.applied[3 * k + 2] * model.applied[3 * k + 2]);
+    reference += model.applied_force(k).norm();
   }
   if (!(reference > 0.0)) reference = 1.0;
   const double allowed = kAllowedPenetration * contact.thickness;
@@ -54,7 +48,7 @@ void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSp
   model->contact = contact;
   const double stiffness = ContactStiffness(contact, *model);
   bool anchored = false;
-  for (int k = 0; k < model->num_nodes; ++k) anchored = anchored || FullyFixed(*model, k);
+  for (int k = 0; k < model->num_nodes; ++k) anchored = anchored || model->fully_fixed(k);
   const double reach = kReachFactor * model->size;
   // Least-squares shift of the potential (src/model/term.h): the energy at a full clearance's
   // depth.
@@ -63,8 +57,8 @@ void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSp
     const ObstacleSpec& obstacle = obstacles[index];
     const ObstacleKind& kind = ObstacleKindOf(obstacle);
     for (int k = 0; k < model->num_nodes; ++k) {
-      if (FullyFixed(*model, k)) continue;
-      const double* x = model->positions.data() + 3 * k;
+      if (model->fully_fixed(k)) continue;
+      const double* x = model->position(k).data();
       if (anchored && ObstacleDistance(obstacle, x) - contact.thickness > reach) continue;
       model->contact_terms.push_back(
           {static_cast<int>(model->terms.size()), static_cast<int>(index)});
@@ -90,8 +84,8 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
   for (int k = 0; k < model.num_nodes; ++k) {
     double deepest = 0.0;
     for (const ObstacleSpec& obstacle : obstacles) {
-      deepest =
-          std::max(deepest, contact.thickness - ObstacleDistance(obstacle, positions + 3 * k));
+      deepest = std::max(
+          deepest, contact.thickness - ObstacleDistance(obstacle, NodeAt(positions, k).data()));
     }
     if (deepest > 0.0) ++report.nodes_in_contact;
     report.max_penetration = std::max(report.max_penetration, deepest);

@@ -135,9 +135,7 @@ const double kDash[] = {6.0, 4.0};
 const Rgb kFabricFront{0.33, 0.56, 0.90}, kFabricBack{0.96, 0.76, 0.50};
 const Rgb kObstacle{0.62, 0.62, 0.60}, kFloor{0.86, 0.86, 0.84}, kChain{0.12, 0.25, 0.55};
 
-Vec3 Node(const Model& model, int k) {
-  return {model.positions[3 * k], model.positions[3 * k + 1], model.positions[3 * k + 2]};
-}
+Vec3 Node(const Model& model, int k) { return model.position(k); }
 
 struct Box3 {
   Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
@@ -318,7 +316,7 @@ void AddFloorShadow(const Model& model, double floor_z, std::vector<Primitive>* 
   for (const auto& t : model.triangles) {
     Primitive shadow{{}, kFloor, true};
     for (int v : t) {
-      shadow.points.push_back({model.positions[3 * v], model.positions[3 * v + 1], floor_z});
+      shadow.points.push_back({model.position(v).x(), model.position(v).y(), floor_z});
     }
     floor->push_back(shadow);
   }

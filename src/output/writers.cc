@@ -314,12 +314,11 @@ void WriteVectors(const std::string& name, const std::function<double(int)>& val
 }
 
 double Distance(const std::vector<double>& x, int a, int b) {
-  return std::sqrt(std::pow(x[3 * a] - x[3 * b], 2) + std::pow(x[3 * a + 1] - x[3 * b + 1], 2) +
-                   std::pow(x[3 * a + 2] - x[3 * b + 2], 2));
+  return (NodeAt(x, a) - NodeAt(x, b)).norm();
 }
 
 double TriangleArea(const std::vector<double>& x, const std::array<int, 3>& t) {
-  const Eigen::Vector3d a(&x[3 * t[0]]), b(&x[3 * t[1]]), c(&x[3 * t[2]]);
+  const Eigen::Vector3d a = NodeAt(x, t[0]), b = NodeAt(x, t[1]), c = NodeAt(x, t[2]);
   return 0.5 * (b - a).cross(c - a).norm();
 }
 
@@ -350,9 +349,8 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
       << title.substr(0, 250) << "\nASCII\nDATASET UNSTRUCTURED_GRID\n";
   out << "POINTS " << model.num_nodes << " double\n";
   for (int node = 0; node < model.num_nodes; ++node) {
-    out << FormatNumber(model.positions[3 * node]) << ' '
-        << FormatNumber(model.positions[3 * node + 1]) << ' '
-        << FormatNumber(model.positions[3 * node + 2]) << '\n';
+    const auto p = model.position(node);
+    out << FormatNumber(p.x()) << ' ' << FormatNumber(p.y()) << ' ' << FormatNumber(p.z()) << '\n';
   }
   const size_t cells = model.triangles.size() + model.edges.size();
   out << "CELLS " << cells << ' ' << 4 * model.triangles.size() + 3 * model.edges.size() << '\n';
@@ -392,8 +390,8 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
 std::vector<Eigen::Vector3d> VertexNormals(const Model& model) {
   std::vector<Eigen::Vector3d> normals(model.num_nodes, Eigen::Vector3d::Zero());
   for (const auto& t : model.triangles) {
-    const Eigen::Vector3d a(&model.positions[3 * t[0]]), b(&model.positions[3 * t[1]]),
-        c(&model.positions[3 * t[2]]);
+    const Eigen::Vector3d a = model.position(t[0]), b = model.position(t[1]),
+                          c = model.position(t[2]);
     const Eigen::Vector3d n = (b - a).cross(c - a);  // twice the area, along the normal
     for (int v : t) normals[v] += n;
   }
@@ -410,7 +408,7 @@ std::vector<std::array<double, 2>> PatternCoordinates(const Model& model) {
   const std::vector<double>& start = known ? model.initial : model.positions;
   Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
   for (int node = 0; node < model.num_nodes; ++node) {
-    const Eigen::Vector3d p(&start[3 * node]);
+    const Eigen::Vector3d p = NodeAt(start, node);
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }
@@ -422,7 +420,8 @@ std::vector<std::array<double, 2>> PatternCoordinates(const Model& model) {
   std::vector<std::array<double, 2>> uv;
   uv.reserve(model.num_nodes);
   for (int node = 0; node < model.num_nodes; ++node) {
-    uv.push_back({(start[3 * node + u] - low[u]) / scale, (start[3 * node + v] - low[v]) / scale});
+    const auto p = NodeAt(start, node);
+    uv.push_back({(p[u] - low[u]) / scale, (p[v] - low[v]) / scale});
   }
   return uv;
 }
@@ -432,9 +431,9 @@ std::vector<std::array<double, 2>> PatternCoordinates(const Model& model) {
 void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
   out << "# drape: " << scene.name << " (z up, m)\n";
   for (int node = 0; node < model.num_nodes; ++node) {
-    out << "v " << FormatNumber(model.positions[3 * node]) << ' '
-        << FormatNumber(model.positions[3 * node + 1]) << ' '
-        << FormatNumber(model.positions[3 * node + 2]) << '\n';
+    const auto p = model.position(node);
+    out << "v " << FormatNumber(p.x()) << ' ' << FormatNumber(p.y()) << ' ' << FormatNumber(p.z())
+        << '\n';
   }
   if (!model.triangles.empty()) {
     for (const auto& [u, v] : PatternCoordinates(model)) {
