@@ -238,10 +238,14 @@ TYPED_TEST(CostsTest, CeresGradientCheckerAcceptsTheResidualPath) {
   for (std::vector<double> state : Sample<TypeParam>::States()) {
     std::vector<const double*> blocks;
     for (int k = 0; k < TypeParam::kNumNodes; ++k) blocks.push_back(state.data() + 3 * k);
-    ceres::GradientChecker::ProbeResults results;
-    EXPECT_TRUE(checker.Probe(blocks.data(), kCeresTolerance, &results))
-        << "state " << ::testing::PrintToString(state) << "\n"
-        << results.error_log;
+    // No ProbeResults unless it fails: its inline destructor frees Eigen storage that Ceres
+    // allocated, which AddressSanitizer builds of this file read as a heap overflow (Eigen's
+    // alignment bookkeeping differs between this translation unit and Debian's libceres there).
+    if (!checker.Probe(blocks.data(), kCeresTolerance, nullptr)) {
+      ceres::GradientChecker::ProbeResults results;
+      checker.Probe(blocks.data(), kCeresTolerance, &results);
+      ADD_FAILURE() << "state " << ::testing::PrintToString(state) << "\n" << results.error_log;
+    }
   }
 }
 
