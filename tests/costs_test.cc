@@ -236,8 +236,8 @@ TYPED_TEST(CostsTest, CeresGradientCheckerAcceptsTheResidualPath) {
   const ceres::GradientChecker checker(
       cost.get(), static_cast<const std::vector<const ceres::Manifold*>*>(nullptr), difference);
   for (std::vector<double> state : Sample<TypeParam>::States()) {
-    std::vector<const double*> blocks;
-    for (int k = 0; k < TypeParam::kNumNodes; ++k) blocks.push_back(state.data() + 3 * k);
+    std::vector<const double*> blocks(TypeParam::kNumNodes);
+    for (int k = 0; k < TypeParam::kNumNodes; ++k) blocks[k] = state.data() + 3 * k;
     // No ProbeResults unless it fails: its inline destructor frees Eigen storage that Ceres
     // allocated, which AddressSanitizer builds of this file read as a heap overflow (Eigen's
     // alignment bookkeeping differs between this translation unit and Debian's libceres there).
