@@ -200,13 +200,14 @@ TEST(ObstacleStepLimit, StopsANodeBeforeItJumpsOverAPinOrThroughADiskOrAPlane) {
 // after 30,000 steps, residual 31); with it, it settles in ~124,000 steps (its default limit,
 // 200,000, is what the test allows).
 //
-// Four methods cannot finish this scene, and the test asserts their honest outcome instead:
-// nothing passed through, the state sound, "converged no". ceres-lm and ceres-dogleg: their
-// Gauss–Newton model has no geometric stiffness, the stiffness of the hanging sheet, so they creep
-// (measured: relative residual 1.09 after 3,000 iterations, 0.22 after 30,000, falling by ~7 % per
-// 1,000; the tolerance 1e-6 would take ~2e5 iterations); they do rest on the obstacle. nlopt-mma:
-// 0.005 (pin) and 0.015 (disk) after 30,000 evaluations. nlopt-slsqp: finds no lower energy than
-// the start (restarts until NLopt's forced stop after 1,745 evaluations, residual 1).
+// Three methods cannot finish this scene, and the test asserts their honest outcome instead: the
+// sheet resting on the obstacle, nothing passed through, the state sound, "converged no".
+// ceres-lm and ceres-dogleg: their Gauss–Newton model has no geometric stiffness, the stiffness of
+// the hanging sheet, so they creep (measured: relative residual 1.09 after 3,000 iterations, 0.22
+// after 30,000, falling by ~7 % per 1,000; the tolerance 1e-6 would take ~2e5 iterations).
+// nlopt-mma: 0.005 (pin) and 0.015 (disk) after 30,000 evaluations. nlopt-slsqp found no lower
+// energy than the start until its first step was scaled to the mesh (src/solvers/solver_nlopt.cc):
+// it now converges in ~750 evaluations.
 class DropOntoThinObstacle : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {
 };
 
@@ -214,7 +215,7 @@ bool GaussNewton(const std::string& method) {
   return method == "ceres-lm" || method == "ceres-dogleg";
 }
 bool CannotFinish(const std::string& method) {
-  return GaussNewton(method) || method == "nlopt-mma" || method == "nlopt-slsqp";
+  return GaussNewton(method) || method == "nlopt-mma";
 }
 
 Scene DropScene(const std::string& obstacle, const std::string& method) {
@@ -272,9 +273,9 @@ TEST_P(DropOntoThinObstacle, RestsOnIt) {
     if (GaussNewton(method)) {
       EXPECT_NE(result.summary.termination.find("iteration limit"), std::string::npos)
           << result.summary.termination;
-      EXPECT_LT(z, 0.0);  // resting in the clearance layer
-      EXPECT_GT(result.certificate.contact_sum.z(), -0.5 * weight);  // most of the weight
     }
+    EXPECT_LT(z, 0.0);                                             // resting in the clearance layer
+    EXPECT_GT(result.certificate.contact_sum.z(), -0.5 * weight);  // most of the weight
     return;
   }
   EXPECT_LT(z, 0.0);  // resting in the clearance layer
