@@ -22,6 +22,8 @@ namespace {
 constexpr long kMaxBuiltNodes = 20000;
 
 constexpr char kMeshMarker[] = "\n---mesh---\n";
+// The bytes after the marker, under each name a scene can give (src/model/mesh_file.h).
+constexpr const char* kMeshFiles[] = {"mesh.obj", "mesh.ply", "mesh.stl"};
 
 // A folder of this process's own for the scene and its mesh files.
 const std::filesystem::path& Folder() {
@@ -49,13 +51,13 @@ std::string WriteInput(const uint8_t* data, size_t size) {
   std::error_code ignored;
   if (marker == std::string::npos) {
     WriteBytes(scene, input.data(), input.size());
-    std::filesystem::remove(Folder() / "mesh.obj", ignored);
-    std::filesystem::remove(Folder() / "mesh.ply", ignored);
+    for (const char* name : kMeshFiles) std::filesystem::remove(Folder() / name, ignored);
   } else {
     WriteBytes(scene, input.data(), marker + 1);
     const size_t mesh = marker + sizeof(kMeshMarker) - 1;
-    WriteBytes(Folder() / "mesh.obj", input.data() + mesh, input.size() - mesh);
-    WriteBytes(Folder() / "mesh.ply", input.data() + mesh, input.size() - mesh);
+    for (const char* name : kMeshFiles) {
+      WriteBytes(Folder() / name, input.data() + mesh, input.size() - mesh);
+    }
   }
   return scene.string();
 }

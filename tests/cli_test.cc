@@ -156,6 +156,68 @@ TEST_F(CliTest, EveryCommandHasHelpThatExitsZero) {
   EXPECT_NE(Drape({"fit", "--help"}).out.find("--set"), std::string::npos);
 }
 
+// The first word of each line of `section` in a CLI11 help text (up to the next blank line).
+std::vector<std::string> SectionWords(const std::string& help, const std::string& section) {
+  std::vector<std::string> words;
+  std::istringstream lines(help);
+  bool inside = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind(section, 0) == 0) {
+      inside = true;
+      continue;
+    }
+    if (!inside) continue;
+    if (line.find_first_not_of(' ') == std::string::npos) break;
+    std::istringstream fields(line);
+    std::string first;
+    fields >> first;
+    words.push_back(first);
+  }
+  return words;
+}
+
+// The completion script is generated from the parser: every subcommand `drape --help` lists, and
+// every option its own --help lists, is offered; bash completes with it.
+TEST_F(CliTest, BashCompletionListsEverySubcommandAndOption) {
+  const Outcome script = Drape({"completion", "bash"});
+  ASSERT_EQ(script.exit_status, 0) << script.err;
+  const std::vector<std::string> commands = SectionWords(Drape({"--help"}).out, "Subcommands:");
+  ASSERT_GE(commands.size(), 7u);
+  for (const std::string& command : commands) {
+    const std::string start = "    " + command + ") words=\"";
+    const size_t branch = script.out.find(start);
+    ASSERT_NE(branch, std::string::npos) << command << "\n" << script.out;
+    const size_t first = branch + start.size();
+    const std::string words =
+        " " + script.out.substr(first, script.out.find('"', first) - first) + " ";
+    const std::vector<std::string> options =
+        SectionWords(Drape({command, "--help"}).out, "Options:");
+    ASSERT_FALSE(options.empty()) << command;
+    for (const std::string& listed : options) {  // "-h,--help" or "--out"
+      std::istringstream names(listed);
+      for (std::string name; std::getline(names, name, ',');) {
+        EXPECT_NE(words.find(" " + name + " "), std::string::npos) << command << ": " << name;
+      }
+    }
+  }
+  if (std::system("command -v bash > /dev/null") != 0) GTEST_SKIP() << "no bash";
+  const fs::path file = directory_ / "drape.bash";
+  std::ofstream(file) << script.out;
+  auto complete = [&](const std::string& words, int current) {
+    const fs::path out = directory_ / "reply.txt";
+    const std::string command = "bash -c 'source " + file.string() + "; COMP_WORDS=(" + words +
+                                "); COMP_CWORD=" + std::to_string(current) +
+                                "; _drape; echo \"${COMPREPLY[*]}\"' > " + out.string();
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return ReadFile(out);
+  };
+  EXPECT_EQ(complete("drape so", 1), "solve solvers\n");
+  EXPECT_EQ(complete("drape compare --no", 2), "--no-plots\n");
+  EXPECT_NE(complete("drape solve x.yaml --solver ceres-l", 4).find("ceres-lbfgs"),
+            std::string::npos);
+  EXPECT_EQ(Drape({"completion", "zsh"}).exit_status, 2);
+}
+
 TEST_F(CliTest, VersionExitsZeroWithTheProjectVersion) {
   const Outcome outcome = Drape({"--version"});
   EXPECT_EQ(outcome.exit_status, 0) << outcome.err;

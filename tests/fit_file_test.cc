@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "src/cli/cli.h"
 #include "tests/fit_test_support.h"
@@ -167,6 +170,47 @@ TEST(FitFileTest, LocatesBadInput) {
 }
 
 // Every example fit file of the repository loads (tests/configs_test.cc skips fit files).
+// A scan as a binary PLY (what scanners and meshio write) or an STL reads as the same cloud as
+// the ASCII PLY; a truncated one is refused at the measurement, naming the byte.
+TEST(FitFileTest, BinaryPlyAndStlScansAreClouds) {
+  const std::string folder = FitTempDir("binary_scan");
+  const std::vector<Eigen::Vector3f> points = {
+      {0.1f, 0.2f, 0.3f}, {0.0f, 0.0f, -0.1f}, {0.25f, 0.0f, 0.0f}};
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float "
+      "y\nproperty float z\nend_header\n";
+  std::string stl(80, ' ');
+  const std::uint32_t one = 1;
+  stl.append(reinterpret_cast<const char*>(&one), 4);  // x86 and arm64: little-endian
+  stl.append(12, '\0');                                // the normal
+  for (const Eigen::Vector3f& p : points) {
+    ply.append(reinterpret_cast<const char*>(p.data()), 12);
+    stl.append(reinterpret_cast<const char*>(p.data()), 12);
+  }
+  stl.append(2, '\0');
+  WriteTextFile(folder + "/scan.ply", ply);
+  WriteTextFile(folder + "/scan.stl", stl);
+  const Location where{folder + "/fit.yaml", 7, 5, "measurements[0].positions.file"};
+  for (const char* name : {"/scan.ply", "/scan.stl"}) {
+    const PositionData data = ReadPositionFile(folder + name, where);
+    EXPECT_TRUE(data.cloud) << name;
+    ASSERT_EQ(data.points.size(), 3u) << name;
+    for (size_t k = 0; k < points.size(); ++k) {
+      EXPECT_EQ(data.points[k], points[k].cast<double>()) << name << " point " << k;
+    }
+  }
+  WriteTextFile(folder + "/cut.ply", ply.substr(0, ply.size() - 5));
+  try {
+    ReadPositionFile(folder + "/cut.ply", where);
+    ADD_FAILURE() << "a truncated PLY was read";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("fit.yaml:7:5: "), std::string::npos) << message;
+    EXPECT_NE(message.find("cut.ply: byte "), std::string::npos) << message;
+    EXPECT_NE(message.find("the vertex data ends early"), std::string::npos) << message;
+  }
+}
+
 TEST(FitFileTest, LoadsEveryExampleFitFile) {
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(SourcePath("configs/fit"))) {

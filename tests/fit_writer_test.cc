@@ -2,6 +2,7 @@
 // the progress lines, and the sensitivity table against a closed-form reference.
 #include "src/fit/fit_writer.h"
 
+#include <cairo.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <sstream>
 
 #include "src/cli/cli.h"
+#include "src/output/json.h"
 #include "tests/fit_test_support.h"
 
 namespace drape::testing {
@@ -78,6 +80,55 @@ TEST(FitWriterTest, SensitivityUndoesTheScalingOfTheResiduals) {
   EXPECT_NEAR(table[0].per_parameter, 6.0 / std::sqrt(3.0) * 0.001 / 100.0, 1e-15);
   EXPECT_NEAR(table[0].per_log_parameter, table[0].per_parameter * 20.0, 1e-15);
   EXPECT_EQ(table[0].unit, "m");
+}
+
+TEST(FitWriterTest, AxisTicksAreRoundAndCoverTheRange) {
+  const std::vector<double> ticks = AxisTicks(-0.013, 0.25);  // a fifth: 0.0526 → step 0.1
+  ASSERT_EQ(ticks.size(), 3u);
+  EXPECT_EQ(ticks[0], 0.0);
+  EXPECT_NEAR(ticks[1], 0.1, 1e-15);
+  EXPECT_NEAR(ticks[2], 0.2, 1e-15);
+  const std::vector<double> fine = AxisTicks(1.0, 1.001);  // step 2e-4
+  ASSERT_EQ(fine.size(), 6u);
+  EXPECT_NEAR(fine.front(), 1.0, 1e-12);
+  EXPECT_NEAR(fine.back(), 1.001, 1e-12);
+}
+
+// fit.png says what was fitted: the caption holds each parameter's key, value and unit and the
+// final residual; the picture is as tall as its caption needs.
+TEST(FitWriterTest, FitPngShowsTheFittedValuesAndTheResidual) {
+  const std::string folder = FitTempDir("png");
+  const TrueSolve solved =
+      SolveTruth("configs/fit/sheet_springs.yaml", {"material.springs.structural=35"});
+  WriteNodePositions(solved.model, 0.0, 0, folder + "/nodes.csv");
+  WriteTextFile(folder + "/fit_png.yaml",
+                "scene: " + SourcePath("configs/fit/sheet_springs.yaml") +
+                    "\nparameters:\n  - {key: material.springs.structural, initial: 20, bounds: "
+                    "[1, 1000], log: true}\nmeasurements:\n  - positions: {file: nodes.csv}\n"
+                    "method: implicit-lm\n");
+  FitProblem problem(LoadFitFile(folder + "/fit_png.yaml"));
+  const FitResult result = RunFit(problem);
+  ASSERT_TRUE(result.converged) << result.termination;
+  const FitPlotText text = FitPlotTextOf(problem, result);
+  EXPECT_EQ(text.axis_labels[0], "x (m)");
+  EXPECT_EQ(text.axis_labels[2], "z (m)");
+  ASSERT_EQ(text.caption.size(), 3u);
+  EXPECT_EQ(text.caption[0].rfind("material.springs.structural = " +
+                                      JsonNumber(result.parameters[0], 6) + " N/m (standard error ",
+                                  0),
+            0u)
+      << text.caption[0];
+  EXPECT_NEAR(result.parameters[0], 35.0, 1e-3);
+  EXPECT_NE(text.caption[1].find("objective 1/2 sum r^2 = " + JsonNumber(result.objective, 6)),
+            std::string::npos)
+      << text.caption[1];
+  EXPECT_NE(text.caption[2].find("converged yes"), std::string::npos) << text.caption[2];
+
+  WriteFitOutputs(problem, result, folder + "/out");
+  cairo_surface_t* png = cairo_image_surface_create_from_png((folder + "/out/fit.png").c_str());
+  ASSERT_EQ(cairo_surface_status(png), CAIRO_STATUS_SUCCESS);
+  EXPECT_EQ(cairo_image_surface_get_height(png), 40 + 460 + 50 + 18 * 3 + 10);
+  cairo_surface_destroy(png);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // The fuzz target's input handling (fuzz/fuzz_input.h), on its committed corpus: no seed crashes,
-// and the mesh seeds reach the OBJ and PLY readers (the good ones build their mesh, the broken
-// ones are refused). Before, the target wrote every input as a scene only and never read a mesh
-// file.
+// and the mesh seeds reach the OBJ, PLY and STL readers, text and binary (the good ones build
+// their mesh, the broken ones — a truncated binary PLY and STL among them — are refused). Before,
+// the target wrote every input as a scene only and never read a mesh file.
 #include "fuzz/fuzz_input.h"
 
 #include <gtest/gtest.h>
@@ -26,9 +26,10 @@ int RunSeed(const std::string& name) {
 
 TEST(FuzzInput, MeshSeedsReachTheMeshReaders) {
   const std::map<std::string, int> expected = {
-      {"mesh_square_obj", 4},     {"mesh_square_ply", 4},     {"mesh_quad_obj", 4},
-      {"mesh_zero_area_obj", -1}, {"mesh_truncated_obj", -1}, {"mesh_bad_index_obj", -1},
-      {"mesh_nan_obj", -1},       {"mesh_binary_ply", -1}};
+      {"mesh_square_obj", 4},       {"mesh_square_ply", 4},        {"mesh_quad_obj", 4},
+      {"mesh_zero_area_obj", -1},   {"mesh_truncated_obj", -1},    {"mesh_bad_index_obj", -1},
+      {"mesh_nan_obj", -1},         {"mesh_binary_ply", -1},       {"mesh_square_binary_ply", 4},
+      {"mesh_square_ascii_stl", 4}, {"mesh_square_binary_stl", 4}, {"mesh_truncated_stl", -1}};
   for (const auto& [name, nodes] : expected) EXPECT_EQ(RunSeed(name), nodes) << name;
 }
 

@@ -121,6 +121,7 @@ TEST_F(SceneLoaderTest, MinimalSceneGetsTheDefaults) {
   EXPECT_TRUE(scene.solver.method_options.empty());
   EXPECT_EQ(scene.output.directory, (folder_ / "out" / "scene").string());
   EXPECT_EQ(scene.output.write, OutputSpec().write);
+  EXPECT_EQ(scene.output.obj_up, "z");
 }
 
 TEST_F(SceneLoaderTest, EveryKeyOfAGridScene) {
@@ -171,6 +172,7 @@ solver:
 output:
   directory: results/here
   write: [summary, nodes, history, vtk, obj, png, kinetic, profile, shadow]
+  obj_up: y
 )");
   EXPECT_EQ(scene.name, "every-key");
   EXPECT_EQ(scene.mesh.size, Eigen::Vector2d(2.0, 1.5));
@@ -227,6 +229,7 @@ output:
   EXPECT_EQ(scene.output.directory, (folder_ / "results" / "here").string());
   EXPECT_EQ(scene.output.write.size(), 9u);
   EXPECT_EQ(scene.output.write.back(), "shadow");
+  EXPECT_EQ(scene.output.obj_up, "y");
 }
 
 TEST_F(SceneLoaderTest, ExplicitGridCoordinatesSetNodesAndSize) {
@@ -643,6 +646,8 @@ const std::vector<BadScene>& BadScenes() {
        "8:3: material.finite_volume", "applies only when material.model is finite_volume"},
       {"UnknownOutput", std::string(kMinimal) + "output: {write: [summary, pdf]}\n",
        "8:27: output.write[1]", "unknown value 'pdf'"},
+      {"ObjUpX", std::string(kMinimal) + "output: {obj_up: x}\n", "8:18: output.obj_up",
+       "unknown value 'x'"},
       {"RepeatedOutput", std::string(kMinimal) + "output: {write: [vtk, vtk]}\n",
        "8:23: output.write[1]", "'vtk' is listed twice"},
       {"NameWithSlash", std::string(kMinimal) + "name: a/b\n", "8:7: name", "plain name"},

@@ -72,10 +72,19 @@ TEST(SceneYaml, HoldsTheSiValuesTheOverridesAndTheDefaults) {
   EXPECT_EQ(again.material.mass_value, KesArealDensity(12.0));
   EXPECT_EQ(again.mesh.spacing, 0.02);
   EXPECT_EQ(again.contact.thickness, 0.001);
+  EXPECT_EQ(again.output.obj_up, "z");
   const std::string text = SceneText(scene);
   EXPECT_EQ(text.find("kes"), std::string::npos) << text;
   EXPECT_NE(text.find("max_iterations: 2000"), std::string::npos) << text;
   EXPECT_NE(text.find("max_nodes:"), std::string::npos) << text;  // a default, filled in
+}
+
+// output.obj_up is recorded as chosen.
+TEST(SceneYaml, RecordsTheObjUpAxis) {
+  const Scene scene =
+      LoadScene(testing::SourcePath("configs/fv/drape_tester_cotton_24.yaml"), {"output.obj_up=y"});
+  EXPECT_NE(SceneText(scene).find("obj_up: y"), std::string::npos) << SceneText(scene);
+  EXPECT_EQ(RoundTrip(scene, "obj_up").output.obj_up, "y");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
+#include <Eigen/LU>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -26,6 +27,8 @@ namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr double kHalfPi = 1.57079632679489661923;
 
 // A 2×2 sheet (ids j*2 + i), top row fixed, node 0 held in z only, slightly off its start.
 Model SmallSheet() {
@@ -305,6 +308,18 @@ TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
   EXPECT_GE(find("CELL_DATA 3"), 0);
   // The line 0–1 was 1 m long and node 1 moved by (0, 0.01, -0.03).
   EXPECT_NEAR(std::stod(vtk[strain + 4]), std::sqrt(1 + 0.01 * 0.01 + 0.03 * 0.03) - 1, 1e-15);
+  // The yarn measures of triangle 0 (0, 1, 3) at node 1, where warp 1–0 meets weft 1–3.
+  const Eigen::Vector3d warp(-1.0, -0.01, 0.03), weft(0.0, 0.99, 0.03);
+  for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
+           {"strain_warp", warp.norm() - 1.0},
+           {"strain_weft", weft.norm() - 1.0},
+           {"shear_angle", kHalfPi - std::acos(warp.dot(weft) / (warp.norm() * weft.norm()))}}) {
+    const int array = find("SCALARS " + name + " double 1");
+    ASSERT_GE(array, 0) << name;
+    EXPECT_NEAR(std::stod(vtk[array + 2]), value, 1e-15) << name;
+    EXPECT_EQ(vtk[array + 3], "0") << name;  // triangle 1 (0, 3, 2) did not move
+    EXPECT_EQ(vtk[array + 4], "0") << name;  // the line element has no yarn measures
+  }
 
   int vertices = 0, textures = 0, normals = 0, faces = 0, lines = 0;
   for (const auto& line : Lines(Path("mesh.obj"))) {
@@ -328,6 +343,50 @@ TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
   EXPECT_EQ(normals, 4);
   EXPECT_EQ(faces, 2);
   EXPECT_EQ(lines, 1);
+}
+
+// The numbers after `prefix` on each line of `path` that starts with it.
+std::vector<Eigen::Vector3d> ObjVectors(const std::string& path, const std::string& prefix) {
+  std::vector<Eigen::Vector3d> vectors;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(prefix, 0) != 0) continue;
+    std::istringstream fields(line.substr(prefix.size()));
+    Eigen::Vector3d v;
+    fields >> v.x() >> v.y() >> v.z();
+    vectors.push_back(v);
+  }
+  return vectors;
+}
+
+TEST_F(WritersTest, ObjUpYIsTheZUpMeshTurnedAQuarterAboutX) {
+  const Model model = SmallSheet();
+  const RunResult result = ResultOf(model);
+  Scene scene = SceneWriting({"obj"});
+  WriteReported(scene, model, result, directory_.string());
+  const auto z_up = ObjVectors(Path("mesh.obj"), "v ");
+  const auto z_normals = ObjVectors(Path("mesh.obj"), "vn ");
+  scene.output.obj_up = "y";
+  WriteReported(scene, model, result, directory_.string());
+  const auto y_up = ObjVectors(Path("mesh.obj"), "v ");
+  const auto y_normals = ObjVectors(Path("mesh.obj"), "vn ");
+  ASSERT_EQ(z_up.size(), 4u);
+  ASSERT_EQ(y_up.size(), z_up.size());
+  ASSERT_EQ(z_normals.size(), 4u);
+  ASSERT_EQ(y_normals.size(), z_normals.size());
+  // (x, y, z) → (x, z, −y): a proper rotation (det +1) taking +z to +y.
+  Eigen::Matrix3d turn;
+  turn << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  ASSERT_EQ(turn.determinant(), 1.0);
+  ASSERT_EQ(turn * Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY());
+  for (size_t k = 0; k < z_up.size(); ++k) {
+    EXPECT_EQ(y_up[k], turn * z_up[k]) << "vertex " << k;
+    EXPECT_EQ(y_normals[k], turn * z_normals[k]) << "normal " << k;
+  }
+  // The flat sheet's normal was +z: it is +y now, so the drape stands upright in a y-up viewer.
+  EXPECT_EQ(y_normals[2], Eigen::Vector3d::UnitY());
+  // Node 1 hangs 3 cm down (z = −0.03): −0.03 along the file's y.
+  EXPECT_EQ(y_up[1].y(), model.positions[5]);
 }
 
 // Runs a Python check with Debian's python3 (the packages' modules are there); "" when it passed,
@@ -369,7 +428,9 @@ for name, shape in expected.items():
     assert shapes.get(name) == shape, (name, shapes)
 assert list(mesh.point_data["fixed"][0]) == [0, 0, 1]
 assert list(mesh.point_data["id"].ravel()) == [0, 1, 2, 3]
-assert "strain" in mesh.cell_data, mesh.cell_data.keys()
+for name in ["strain", "strain_warp", "strain_weft", "shear_angle"]:
+    assert name in mesh.cell_data, (name, mesh.cell_data.keys())
+    assert sum(len(block) for block in mesh.cell_data[name]) == 3, name
 )"),
             "");
 }
@@ -396,7 +457,10 @@ for name, components in [("id", 1), ("displacement", 3), ("reaction", 3), ("resi
     array = data.GetArray(name)
     assert array is not None, name
     assert array.GetNumberOfComponents() == components, (name, array.GetNumberOfComponents())
-assert grid.GetCellData().GetArray("strain") is not None
+for name in ["strain", "strain_warp", "strain_weft", "shear_angle"]:
+    array = grid.GetCellData().GetArray(name)
+    assert array is not None, name
+    assert array.GetNumberOfTuples() == 3, name
 )"),
             "");
 }

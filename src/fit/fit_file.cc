@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "src/fit/fit_methods.h"
+#include "src/model/mesh_file.h"
 #include "src/model/model.h"
 #include "src/output/json.h"
 #include "src/scene/scene_loader.h"
@@ -116,53 +117,20 @@ int RowId(const Rows& rows, size_t row, const std::string& path) {
   return static_cast<int>(id);
 }
 
-// An ASCII PLY file's vertices (the first three properties must be x, y, z).
-PositionData ReadPly(const std::string& path, const Location& where) {
-  std::ifstream in = OpenData(path, where);
-  std::string line;
-  int line_number = 0, vertices = -1;
-  std::vector<std::string> properties;
-  bool in_vertex = false;
-  while (std::getline(in, line)) {
-    ++line_number;
-    std::istringstream words(line);
-    std::string word;
-    words >> word;
-    if (line_number == 1 && word != "ply") {
-      throw InputError(Location{path, 1, 1, ""}, "expected 'ply' on the first line");
-    }
-    if (word == "format" && line.find("ascii") == std::string::npos) {
-      throw InputError(Location{path, line_number, 1, ""},
-                       "only ASCII PLY files are read; convert this one to ASCII");
-    }
-    if (word == "element") {
-      std::string name;
-      words >> name;
-      in_vertex = name == "vertex";
-      if (in_vertex) words >> vertices;
-    }
-    if (word == "property" && in_vertex) {
-      std::string type, name;
-      words >> type >> name;
-      properties.push_back(name);
-    }
-    if (word == "end_header") break;
+// The vertices of a mesh file (PLY, STL or OBJ; src/model/mesh_file.h) as a point cloud; the
+// faces are not needed. `lines` is 0 for each point: a cloud's errors never name a point.
+PositionData ReadMeshVertices(const std::string& path, const Location& where) {
+  MeshFileData mesh;
+  try {
+    mesh = ReadMeshFile(path);
+  } catch (const MeshFileError& error) {
+    throw InputError(where, error.what());
   }
-  if (vertices <= 0 || properties.size() < 3 || properties[0] != "x" || properties[1] != "y" ||
-      properties[2] != "z") {
-    throw InputError(Location{path, 1, 1, ""},
-                     "expected a vertex element whose first properties are x, y, z");
-  }
-  const Rows rows = ReadRows(in, path, line_number + 1, vertices, false);
-  if (static_cast<int>(rows.values.size()) < vertices) {
-    throw InputError(Location{path, line_number + 1, 1, ""},
-                     "the header announces " + std::to_string(vertices) + " vertices, found " +
-                         std::to_string(rows.values.size()));
-  }
+  if (mesh.vertices.empty()) throw InputError(where, "'" + path + "' holds no points");
   PositionData data;
   data.cloud = true;
-  for (const auto& row : rows.values) data.points.emplace_back(row[0], row[1], row[2]);
-  data.lines = rows.lines;
+  data.points = mesh.vertices;
+  data.lines.assign(mesh.vertices.size(), 0);
   return data;
 }
 
@@ -435,7 +403,9 @@ void ReadTop(const YamlValue& root, FitSpec* spec) {
 
 PositionData ReadPositionFile(const std::string& path, const Location& where) {
   const std::string extension = fs::path(path).extension().string();
-  if (extension == ".ply") return ReadPly(path, where);
+  if (extension == ".ply" || extension == ".stl" || extension == ".obj") {
+    return ReadMeshVertices(path, where);
+  }
   std::ifstream in = OpenData(path, where);
   const Rows rows = ReadRows(in, path, 1, -1, true);
   if (rows.values.empty()) throw InputError(where, "'" + path + "' holds no points");

@@ -1,7 +1,7 @@
 // The fit file of `drape fit` (issue 8): which scene keys to fit, to which measurements, by which
 // method. Read with located errors ("file:line:column: key.path: what is wrong"); measurement
-// data files (csv, xyz, ply) are read here too, so that every bad input is reported before a
-// single equilibrium is solved.
+// data files (csv, xyz, and ply/stl/obj through src/model/mesh_file.h) are read here too, so that
+// every bad input is reported before a single equilibrium is solved.
 #ifndef DRAPE_SRC_FIT_FIT_FILE_H_
 #define DRAPE_SRC_FIT_FIT_FILE_H_
 

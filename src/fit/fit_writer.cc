@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <cassert>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -15,6 +17,7 @@
 #include "src/fit/fit_measurements.h"
 #include "src/output/atomic_file.h"
 #include "src/output/json.h"
+#include "src/output/writers.h"
 
 namespace drape {
 namespace {
@@ -165,76 +168,177 @@ void WriteReport(const FitProblem& problem, const FitResult& result,
   for (const auto& statement : result.identifiability.statements) out << "- " << statement << "\n";
 }
 
-// fit.png: the fitted shape (blue mesh edges) over the measured points (red), side view (x–z)
-// and top view (x–y), drawn with cairo.
-void WritePng(const FitProblem& problem, const fs::path& path) {
-  const FitEquilibrium* first = nullptr;
-  for (const auto& candidate : problem.equilibria()) {
-    if (!first && candidate.model) first = &candidate;
+// The unit of a fitted scene key, from the material registry of summary.json's material_si
+// (src/output/writers.h): the value the key names (material.finite_volume.D_warp → D_warp), or
+// the family it sets as a whole (material.springs.structural → structural.warp and .weft, one
+// unit); "" for a key that is not a material value.
+std::string ParameterUnit(const std::string& key, const Scene& scene) {
+  const std::string prefix = "material.";
+  if (key.rfind(prefix, 0) != 0) return "";
+  const std::string rest = key.substr(prefix.size());
+  const std::string last = rest.substr(rest.find_last_of('.') + 1);
+  auto ends_with = [&rest](const std::string& name) {
+    return rest == name ||
+           (rest.size() > name.size() && rest[rest.size() - name.size() - 1] == '.' &&
+            rest.compare(rest.size() - name.size(), name.size(), name) == 0);
+  };
+  for (const MaterialValue& value : MaterialSiValues(scene.material)) {
+    if (ends_with(value.key) || value.key.rfind(last + ".", 0) == 0) return value.unit;
   }
-  const FitEquilibrium& equilibrium = *first;
-  const Model& model = *equilibrium.model;
-  const std::vector<double>& x = equilibrium.positions;
+  return "";
+}
+
+const FitEquilibrium& PlottedEquilibrium(const FitProblem& problem) {
+  for (const auto& candidate : problem.equilibria()) {
+    if (candidate.model) return candidate;
+  }
+  assert(false && "a fit has solved at least one equilibrium before writing");
+  return problem.equilibria().front();
+}
+
+// The plotted points' box: the fitted nodes and the measured points of the first specimen.
+void PlotBox(const std::vector<double>& x, const std::vector<Eigen::Vector3d>& measured,
+             Eigen::Vector3d* low, Eigen::Vector3d* high) {
+  *low = Eigen::Vector3d::Constant(1e300);
+  *high = -*low;
+  for (size_t k = 0; k + 2 < x.size(); k += 3) {
+    const Eigen::Vector3d p(x[k], x[k + 1], x[k + 2]);
+    *low = low->cwiseMin(p);
+    *high = high->cwiseMax(p);
+  }
+  for (const auto& p : measured) {
+    *low = low->cwiseMin(p);
+    *high = high->cwiseMax(p);
+  }
+}
+
+std::vector<Eigen::Vector3d> MeasuredPoints(const FitProblem& problem) {
   std::vector<Eigen::Vector3d> measured;
   for (const auto& measurement : problem.spec().specimens[0].measurements) {
     if (measurement.kind != FitMeasurement::Kind::kPositions) continue;
     measured.insert(measured.end(), measurement.positions.points.begin(),
                     measurement.positions.points.end());
   }
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(1e300), high = -low;
-  for (int k = 0; k < model.num_nodes; ++k) {
-    const Eigen::Vector3d p(x[3 * k], x[3 * k + 1], x[3 * k + 2]);
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
+  return measured;
+}
+
+// Draws one view: the frame, its ticks and their values, the axis names, the fitted mesh's edges
+// (blue) and the measured points (red). `axes` are the plotted coordinates (0 = x, 1 = y, 2 = z).
+struct ViewFrame {
+  double left = 0, top = 0, size = 0;  // pixels
+  Eigen::Vector3d low;                 // m, at the frame's lower left
+  double span = 1;                     // m across the frame
+  std::array<int, 2> axes{0, 2};
+};
+
+void DrawText(cairo_t* cr, double x, double y, const std::string& text, double align) {
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, text.c_str(), &extents);
+  cairo_move_to(cr, x - align * extents.x_advance, y);
+  cairo_show_text(cr, text.c_str());
+}
+
+void DrawAxes(cairo_t* cr, const ViewFrame& view, const std::array<std::string, 2>& names) {
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, 1.0);
+  cairo_rectangle(cr, view.left, view.top, view.size, view.size);
+  cairo_stroke(cr);
+  for (int a = 0; a < 2; ++a) {
+    const int axis = view.axes[a];
+    for (double tick : AxisTicks(view.low[axis], view.low[axis] + view.span)) {
+      const double at = (tick - view.low[axis]) / view.span * view.size;
+      const std::string label = JsonNumber(tick, 4);
+      if (a == 0) {
+        const double px = view.left + at, py = view.top + view.size;
+        cairo_move_to(cr, px, py);
+        cairo_line_to(cr, px, py + 5);
+        cairo_stroke(cr);
+        DrawText(cr, px, py + 17, label, 0.5);
+      } else {
+        const double px = view.left, py = view.top + view.size - at;
+        cairo_move_to(cr, px, py);
+        cairo_line_to(cr, px - 5, py);
+        cairo_stroke(cr);
+        DrawText(cr, px - 8, py + 4, label, 1.0);
+      }
+    }
   }
+  DrawText(cr, view.left + view.size / 2, view.top + view.size + 34, names[0], 0.5);
+  cairo_save(cr);
+  cairo_translate(cr, view.left - 52, view.top + view.size / 2);
+  cairo_rotate(cr, -M_PI / 2);
+  DrawText(cr, 0, 0, names[1], 0.5);
+  cairo_restore(cr);
+}
+
+void DrawShapes(cairo_t* cr, const ViewFrame& view, const Model& model,
+                const std::vector<double>& x, const std::vector<Eigen::Vector3d>& measured) {
+  auto to_screen = [&](const Eigen::Vector3d& p, double* sx, double* sy) {
+    *sx = view.left + (p[view.axes[0]] - view.low[view.axes[0]]) / view.span * view.size;
+    *sy = view.top + view.size - (p[view.axes[1]] - view.low[view.axes[1]]) / view.span * view.size;
+  };
+  cairo_set_source_rgb(cr, 0.1, 0.3, 0.8);
+  cairo_set_line_width(cr, 0.6);
+  auto line = [&](int a, int b) {
+    double ax, ay, bx, by;
+    to_screen(Eigen::Vector3d(x[3 * a], x[3 * a + 1], x[3 * a + 2]), &ax, &ay);
+    to_screen(Eigen::Vector3d(x[3 * b], x[3 * b + 1], x[3 * b + 2]), &bx, &by);
+    cairo_move_to(cr, ax, ay);
+    cairo_line_to(cr, bx, by);
+  };
+  for (const auto& t : model.triangles) {
+    line(t[0], t[1]);
+    line(t[1], t[2]);
+    line(t[2], t[0]);
+  }
+  for (const auto& e : model.edges) line(e[0], e[1]);
+  if (model.triangles.empty() && model.edges.empty()) {
+    for (int k = 0; k + 1 < model.num_nodes; ++k) line(k, k + 1);
+  }
+  cairo_stroke(cr);
+  cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
   for (const auto& p : measured) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
+    double sx, sy;
+    to_screen(p, &sx, &sy);
+    cairo_arc(cr, sx, sy, 1.8, 0, 2 * M_PI);
+    cairo_fill(cr);
   }
+}
+
+// fit.png: the fitted shape (blue mesh edges) over the measured points (red), side view (x–z)
+// and top view (x–y) on one scale, with axes in metres, and under them FitPlotTextOf's caption
+// (the fitted values and the final residual); drawn with cairo.
+void WritePng(const FitProblem& problem, const FitResult& result, const fs::path& path) {
+  const FitEquilibrium& equilibrium = PlottedEquilibrium(problem);
+  const std::vector<double>& x = equilibrium.positions;
+  const std::vector<Eigen::Vector3d> measured = MeasuredPoints(problem);
+  const FitPlotText text = FitPlotTextOf(problem, result);
+  Eigen::Vector3d low, high;
+  PlotBox(x, measured, &low, &high);
   const double span = std::max(1e-9, (high - low).maxCoeff());
-  const int panel = 500, margin = 30;
-  cairo_surface_t* surface =
-      cairo_image_surface_create(CAIRO_FORMAT_RGB24, 2 * panel + 3 * margin, panel + 2 * margin);
+  const int panel = 460, left = 80, gap = 90, top = 40, below = 50, line_height = 18;
+  const int width = left + 2 * panel + gap + 30;
+  const int height = top + panel + below + line_height * static_cast<int>(text.caption.size()) + 10;
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
   cairo_t* cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
-  for (int view = 0; view < 2; ++view) {
-    const int vertical = view == 0 ? 2 : 1;  // side view: z up; top view: y up
-    const double left = margin + view * (panel + margin);
-    auto to_screen = [&](const Eigen::Vector3d& p, double* sx, double* sy) {
-      *sx = left + (p.x() - low.x()) / span * panel;
-      *sy = margin + panel - (p[vertical] - low[vertical]) / span * panel;
-    };
-    cairo_set_source_rgb(cr, 0.1, 0.3, 0.8);
-    cairo_set_line_width(cr, 0.6);
-    auto line = [&](int a, int b) {
-      double ax, ay, bx, by;
-      to_screen(Eigen::Vector3d(x[3 * a], x[3 * a + 1], x[3 * a + 2]), &ax, &ay);
-      to_screen(Eigen::Vector3d(x[3 * b], x[3 * b + 1], x[3 * b + 2]), &bx, &by);
-      cairo_move_to(cr, ax, ay);
-      cairo_line_to(cr, bx, by);
-    };
-    for (const auto& t : model.triangles) {
-      line(t[0], t[1]);
-      line(t[1], t[2]);
-      line(t[2], t[0]);
-    }
-    for (const auto& e : model.edges) line(e[0], e[1]);
-    if (model.triangles.empty() && model.edges.empty()) {
-      for (int k = 0; k + 1 < model.num_nodes; ++k) line(k, k + 1);
-    }
-    cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
-    for (const auto& p : measured) {
-      double sx, sy;
-      to_screen(p, &sx, &sy);
-      cairo_arc(cr, sx, sy, 1.8, 0, 2 * M_PI);
-      cairo_fill(cr);
-    }
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_move_to(cr, left, margin - 10);
-    cairo_show_text(
-        cr, view == 0 ? "side view (x-z): fitted (blue), measured (red)" : "top view (x-y)");
+  cairo_set_font_size(cr, 12);
+  for (int v = 0; v < 2; ++v) {
+    ViewFrame view;
+    view.left = left + v * (panel + gap);
+    view.top = top;
+    view.size = panel;
+    view.low = low;
+    view.span = span;
+    view.axes = {0, v == 0 ? 2 : 1};
+    DrawShapes(cr, view, *equilibrium.model, x, measured);
+    DrawAxes(cr, view, {text.axis_labels[0], text.axis_labels[v == 0 ? 2 : 1]});
+    DrawText(cr, view.left, top - 12, text.titles[v], 0.0);
+  }
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  for (size_t k = 0; k < text.caption.size(); ++k) {
+    DrawText(cr, left, top + panel + below + line_height * (k + 0.5), text.caption[k], 0.0);
   }
   cairo_destroy(cr);
   const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
@@ -269,6 +373,60 @@ std::vector<Sensitivity> SensitivityTable(const FitProblem& problem, const FitRe
   return table;
 }
 
+std::vector<double> AxisTicks(double low, double high) {
+  assert(high > low && "an axis of positive length");
+  const double raw = (high - low) / 5.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10.0 * decade;
+  for (double factor : {1.0, 2.0, 5.0}) {
+    if (factor * decade >= raw) {
+      step = factor * decade;
+      break;
+    }
+  }
+  std::vector<double> ticks;
+  for (double k = std::ceil(low / step - 1e-9); k * step <= high + 1e-9 * step; k += 1.0) {
+    ticks.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);  // no "-0"
+  }
+  return ticks;
+}
+
+FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result) {
+  FitPlotText text;
+  text.titles = {"side view: fitted shape (blue), measured points (red)", "top view"};
+  text.axis_labels = {"x (m)", "y (m)", "z (m)"};
+  const auto& parameters = problem.spec().parameters;
+  const auto& equilibria = problem.equilibria();
+  const auto solved = std::find_if(equilibria.begin(), equilibria.end(),
+                                   [](const FitEquilibrium& e) { return e.model != nullptr; });
+  for (size_t j = 0; j < parameters.size() && j < result.parameters.size(); ++j) {
+    const std::string unit =
+        solved == equilibria.end() ? "" : ParameterUnit(parameters[j].key, solved->scene);
+    std::string line = parameters[j].key + " = " + JsonNumber(result.parameters[j], 6);
+    if (!unit.empty() && unit != "1") line += " " + unit;
+    if (j < result.standard_errors.size()) {
+      const double error = result.standard_errors[j];
+      line += std::isfinite(error) ? " (standard error " + JsonNumber(error, 3) + ")"
+                                   : " (not identifiable)";
+    }
+    text.caption.push_back(line);
+  }
+  const Eigen::Index residuals = result.jacobian.rows();
+  std::string residual =
+      "final residual: objective 1/2 sum r^2 = " + JsonNumber(result.objective, 6) +
+      " (r = (model - measured) / sigma)";
+  if (residuals > 0) {
+    residual += ", RMS r = " +
+                JsonNumber(std::sqrt(2.0 * result.objective / static_cast<double>(residuals)), 4) +
+                " over " + std::to_string(residuals) + " residuals";
+  }
+  text.caption.push_back(residual);
+  text.caption.push_back(std::string("converged ") + (result.converged ? "yes" : "no") + ", " +
+                         std::to_string(result.evaluations) + " evaluations (" +
+                         problem.spec().method + ")");
+  return text;
+}
+
 void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
                      const std::string& directory) {
   const fs::path folder(directory);
@@ -281,7 +439,8 @@ void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
                   [&](std::ostream& out) { WriteSensitivity(table, out); });
   WriteAtomically(folder / "report.md",
                   [&](std::ostream& out) { WriteReport(problem, result, table, out); });
-  WriteFileAtomically(folder / "fit.png", [&](const fs::path& path) { WritePng(problem, path); });
+  WriteFileAtomically(folder / "fit.png",
+                      [&](const fs::path& path) { WritePng(problem, result, path); });
 }
 
 }  // namespace drape

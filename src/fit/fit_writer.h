@@ -4,7 +4,9 @@
 #define DRAPE_SRC_FIT_FIT_WRITER_H_
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
+#include <vector>
 
 #include "src/fit/fit_problem.h"
 #include "src/fit/fit_solver.h"
@@ -19,6 +21,22 @@ struct Sensitivity {
   double per_log_parameter = 0.0;  // ∂measurement/∂ln θ = θ ∂measurement/∂θ
 };
 std::vector<Sensitivity> SensitivityTable(const FitProblem& problem, const FitResult& result);
+
+// The words and numbers fit.png shows: the two views' titles, the axis names with their unit
+// (index 0 = x, 1 = y, 2 = z), and the caption under the views: one line per fitted parameter
+// (its key, value at the optimum, unit — known for material keys, from the solved scene — and
+// standard error), then the final residual (the
+// objective ½Σr² of the normalised residuals and their RMS) and whether the fit converged.
+struct FitPlotText {
+  std::array<std::string, 2> titles;
+  std::array<std::string, 3> axis_labels;
+  std::vector<std::string> caption;
+};
+FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result);
+
+// The tick values of an axis over [low, high] (high > low): the multiples in it of the smallest
+// step of 1, 2 or 5 × 10^k that is at least a fifth of the range (2 to 6 ticks).
+std::vector<double> AxisTicks(double low, double high);
 
 void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
                      const std::string& directory);

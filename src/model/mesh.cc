@@ -14,22 +14,22 @@
 //   part of the disc beyond the lattice's staircase outline): they add up to πR², so the
 //   specimen's mass is πR²ρ at every spacing (the triangles still cover the staircase polygon).
 // - arc: node 0 is the centre, then ring r = 1..rings, spoke k: id 1 + (r-1)*spokes + k.
-// - file: OBJ or ASCII PLY; node ids are the vertex order, from 0 (OBJ counts from 1).
+// - file: OBJ, PLY (ASCII or binary) or STL (ASCII or binary), read by src/model/mesh_file.h;
+//   node ids are the vertex order, from 0 (OBJ counts from 1; STL: in order of first appearance,
+//   exactly equal vertices merged).
 #include "src/model/mesh.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cassert>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <unordered_map>
+
+#include "src/model/mesh_file.h"
 
 namespace drape {
 
@@ -404,146 +404,12 @@ Mesh BuildArc(const MeshSpec& spec) {
 // ---------------------------------------------------------------------------------------------
 // file
 
-struct SurfaceData {
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<std::vector<int>> faces;  // 0-based vertex ids, not yet range-checked
-  std::vector<int> face_lines;          // line of each face in the file, for errors
-};
-
-std::string Lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
-[[noreturn]] void FileError(const MeshSpec& spec, int line, const std::string& what) {
-  std::string where = spec.path;
-  if (line > 0) where += ":" + std::to_string(line);
-  throw InputError(spec.where, where + ": " + what);
-}
-
-// OBJ: `v x y z` and `f a b c ...` lines (a may be `a/t/n`, `a//n`, or negative = relative);
-// every other statement (vn, vt, o, g, s, usemtl, comments) is ignored.
-SurfaceData ReadObj(std::istream& in, const MeshSpec& spec) {
-  SurfaceData data;
-  std::string text;
-  for (int line = 1; std::getline(in, text); ++line) {
-    std::istringstream fields(text);
-    std::string keyword;
-    if (!(fields >> keyword)) continue;
-    if (keyword == "v") {
-      Eigen::Vector3d p;
-      if (!(fields >> p.x() >> p.y() >> p.z()) || !p.allFinite()) {
-        FileError(spec, line, "a vertex needs three finite coordinates");
-      }
-      data.vertices.push_back(p);
-    } else if (keyword == "f") {
-      std::vector<int> face;
-      std::string token;
-      while (fields >> token) {
-        const std::string number = token.substr(0, token.find('/'));
-        std::size_t used = 0;
-        int index = 0;
-        try {
-          index = std::stoi(number, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used == 0 || used != number.size() || index == 0) {
-          FileError(spec, line, "bad face vertex '" + token + "'");
-        }
-        face.push_back(index > 0 ? index - 1 : static_cast<int>(data.vertices.size()) + index);
-      }
-      data.faces.push_back(face);
-      data.face_lines.push_back(line);
-    }
-  }
-  return data;
-}
-
-struct PlyElement {
-  std::string name;
-  long count = 0;
-  std::vector<std::string> properties;  // names; lists marked with a leading '*'
-};
-
-// Reads one element row of `element`: the scalar values by property name, and the first list.
-void ReadPlyRow(std::istream& in, const PlyElement& element, std::map<std::string, double>* values,
-                std::vector<int>* list) {
-  for (const auto& property : element.properties) {
-    if (property[0] == '*') {
-      long count = 0;
-      in >> count;
-      for (long k = 0; k < count && in; ++k) {
-        double index = 0;
-        in >> index;
-        if (list) list->push_back(static_cast<int>(index));
-      }
-      list = nullptr;  // only the first list is the face's vertex indices
-    } else {
-      double value = 0;
-      in >> value;
-      (*values)[property] = value;
-    }
-  }
-}
-
-// ASCII PLY: the `vertex` element's x, y, z and the `face` element's vertex index list.
-SurfaceData ReadPly(std::istream& in, const MeshSpec& spec) {
-  std::string text;
-  std::vector<PlyElement> elements;
-  int line = 1;
-  if (!std::getline(in, text) || text.rfind("ply", 0) != 0) FileError(spec, 1, "not a PLY file");
-  for (++line; std::getline(in, text); ++line) {
-    std::istringstream fields(text);
-    std::string keyword;
-    fields >> keyword;
-    if (keyword == "format") {
-      std::string format;
-      fields >> format;
-      if (format != "ascii") {
-        FileError(spec, line, "only ASCII PLY is supported (this one is " + format + ")");
-      }
-    } else if (keyword == "element") {
-      PlyElement element;
-      fields >> element.name >> element.count;
-      elements.push_back(element);
-    } else if (keyword == "property" && !elements.empty()) {
-      std::string type, name;
-      fields >> type;
-      if (type == "list") {
-        std::string count_type, item_type;
-        fields >> count_type >> item_type >> name;
-        name = "*" + name;
-      } else {
-        fields >> name;
-      }
-      elements.back().properties.push_back(name);
-    } else if (keyword == "end_header") {
-      break;
-    }
-  }
-  SurfaceData data;
-  for (const auto& element : elements) {
-    for (long row = 0; row < element.count; ++row) {
-      std::map<std::string, double> values;
-      std::vector<int> list;
-      ReadPlyRow(in, element, &values, &list);
-      if (!in) FileError(spec, 0, "the " + element.name + " data ends early");
-      if (element.name == "vertex") {
-        const Eigen::Vector3d p(values["x"], values["y"], values["z"]);
-        if (!p.allFinite()) FileError(spec, 0, "a vertex has a non-finite coordinate");
-        data.vertices.push_back(p);
-      } else if (element.name == "face") {
-        data.faces.push_back(list);
-        data.face_lines.push_back(0);
-      }
-    }
-  }
-  return data;
+[[noreturn]] void FileError(const MeshSpec& spec, const FilePlace& place, const std::string& what) {
+  throw InputError(spec.where, PlaceText(spec.path, place) + ": " + what);
 }
 
 // A face of zero area gives its nodes no mass and no membrane: an error, located at its line.
-void CheckFaceAreas(const SurfaceData& data, const Mesh& mesh, const MeshSpec& spec) {
+void CheckFaceAreas(const MeshFileData& data, const Mesh& mesh, const MeshSpec& spec) {
   const double size = BoundingDiagonal(AsColumns(mesh.nodes));
   for (size_t f = 0; f < data.faces.size(); ++f) {
     const auto& face = data.faces[f];
@@ -553,29 +419,29 @@ void CheckFaceAreas(const SurfaceData& data, const Mesh& mesh, const MeshSpec& s
       twice_area += (mesh.nodes[face[k]] - first).cross(mesh.nodes[face[k + 1]] - first);
     }
     if (!(twice_area.norm() > 1e-12 * size * size)) {
-      FileError(spec, data.face_lines[f], "a face has zero area (its vertices are collinear)");
+      FileError(spec, data.face_places[f], "a face has zero area (its vertices are collinear)");
     }
   }
 }
 
 // Triangulates the faces (fans), checking every index; fills nodes, triangles, springs, areas.
-Mesh SurfaceMesh(const SurfaceData& data, const MeshSpec& spec) {
+Mesh SurfaceMesh(const MeshFileData& data, const MeshSpec& spec) {
   if (data.vertices.size() > static_cast<size_t>(spec.max_nodes)) {
-    FileError(spec, 0,
+    FileError(spec, {},
               "the file has " + std::to_string(data.vertices.size()) +
                   " vertices, above the limit of " + std::to_string(spec.max_nodes) +
                   " nodes; raise mesh.max_nodes to build it anyway");
   }
   const int n = static_cast<int>(data.vertices.size());
-  if (n == 0) FileError(spec, 0, "the file has no vertices");
-  if (data.faces.empty()) FileError(spec, 0, "the file has no faces (springs follow face edges)");
+  if (n == 0) FileError(spec, {}, "the file has no vertices");
+  if (data.faces.empty()) FileError(spec, {}, "the file has no faces (springs follow face edges)");
   Mesh mesh;
   mesh.nodes = data.vertices;
   mesh.grid_index.assign(n, {-1, -1});
   std::vector<char> used(n, 0);
   for (size_t f = 0; f < data.faces.size(); ++f) {
     const auto& face = data.faces[f];
-    const int line = data.face_lines[f];
+    const FilePlace& line = data.face_places[f];
     if (face.size() < 3) FileError(spec, line, "a face needs at least 3 vertices");
     std::set<int> distinct;
     for (int v : face) {
@@ -595,7 +461,7 @@ Mesh SurfaceMesh(const SurfaceData& data, const MeshSpec& spec) {
   }
   for (int v = 0; v < n; ++v) {
     if (!used[v]) {
-      FileError(spec, 0,
+      FileError(spec, {},
                 "vertex " + std::to_string(v + 1) + " belongs to no face (it would float free)");
     }
   }
@@ -620,17 +486,11 @@ Mesh SurfaceMesh(const SurfaceData& data, const MeshSpec& spec) {
 }
 
 Mesh BuildFromFile(const MeshSpec& spec) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(spec.path, error)) {
-    FileError(spec, 0,
-              "cannot read the mesh file: not a regular file (a folder, a device or missing)");
+  try {
+    return SurfaceMesh(ReadMeshFile(spec.path), spec);
+  } catch (const MeshFileError& error) {
+    throw InputError(spec.where, error.what());
   }
-  std::ifstream in(spec.path);
-  if (!in) FileError(spec, 0, "cannot read the mesh file");
-  const std::string extension = Lowercase(spec.path.substr(spec.path.find_last_of('.') + 1));
-  if (extension == "obj") return SurfaceMesh(ReadObj(in, spec), spec);
-  if (extension == "ply") return SurfaceMesh(ReadPly(in, spec), spec);
-  FileError(spec, 0, "unknown mesh file format (use .obj or .ply)");
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -23,10 +23,6 @@ using Vec3 = Eigen::Vector3d;
 using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
 
-struct Rgb {
-  double r, g, b;
-};
-
 // ---- shared drawing helpers ---------------------------------------------------------------------
 
 cairo_status_t WriteToStream(void* closure, const unsigned char* data, unsigned int length) {
@@ -132,8 +128,14 @@ struct Primitive {
 };
 
 const double kDash[] = {6.0, 4.0};
-const Rgb kFabricFront{0.33, 0.56, 0.90}, kFabricBack{0.96, 0.76, 0.50};
-const Rgb kObstacle{0.62, 0.62, 0.60}, kFloor{0.86, 0.86, 0.84}, kChain{0.12, 0.25, 0.55};
+const Rgb kFloor{0.86, 0.86, 0.84};
+// The legend: its marks' left edge this far from the picture's right edge; entry k's text baseline.
+constexpr double kLegendInset = 210.0;
+double LegendRow(int k) { return 24.0 + 18.0 * k; }
+const Rgb& kFabricFront = StyleOf(DrawnKind::kUpperFace).colour;
+const Rgb& kFabricBack = StyleOf(DrawnKind::kLowerFace).colour;
+const Rgb& kObstacle = StyleOf(DrawnKind::kObstacle).colour;
+const Rgb& kChain = StyleOf(DrawnKind::kChain).colour;
 
 Vec3 Node(const Model& model, int k) { return model.position(k); }
 
@@ -424,7 +426,8 @@ void PaintFixedNodes(cairo_t* cr, const Camera& camera, const Model& model) {
       continue;
     }
     cairo_rectangle(cr, p.x() - 3.5, p.y() - 3.5, 7, 7);
-    cairo_set_source_rgb(cr, 0, 0, 0);
+    const Rgb& black = StyleOf(fully ? DrawnKind::kFixedNode : DrawnKind::kPartlyFixedNode).colour;
+    cairo_set_source_rgb(cr, black.r, black.g, black.b);
     if (fully) {
       cairo_fill(cr);
     } else {
@@ -482,53 +485,83 @@ void SplitObstacles(const std::vector<Primitive>& obstacles, double edge,
 
 namespace {
 
-// The key of drape.png's colours and marks, top right: the fabric's two faces (or a chain), the
-// fixed nodes (filled: every direction held; hollow: some) and the obstacles, as far as drawn.
+// The key of drape.png's colours and marks, top right (DrapeLegend).
 void PaintLegend(cairo_t* cr, const Scene& scene, const Model& model, int width) {
-  struct Entry {
-    std::string text;
-    Rgb colour;
-    int mark;  // 0 swatch, 1 line, 2 filled square, 3 hollow square
-  };
-  std::vector<Entry> entries;
-  if (!model.triangles.empty()) {
-    entries.push_back({"upper face (as it lay flat)", kFabricFront, 0});
-    entries.push_back({"lower face", kFabricBack, 0});
-  }
-  if (!model.edges.empty()) entries.push_back({"chain", kChain, 1});
-  bool fully = false, partly = false;
-  for (int k = 0; k < model.num_nodes; ++k) {
-    const int held = HeldCoordinates(model, k);
-    fully = fully || held == (model.dimension != 2 ? 3 : 2);
-    partly = partly || (held > 0 && held < (model.dimension != 2 ? 3 : 2));
-  }
-  if (fully) entries.push_back({"fixed node", {0, 0, 0}, 2});
-  if (partly) entries.push_back({"partly fixed node", {0, 0, 0}, 3});
-  if (!scene.obstacles.empty()) entries.push_back({"obstacle", kObstacle, 0});
-  const double x = width - 210.0;
-  for (size_t k = 0; k < entries.size(); ++k) {
-    const Entry& entry = entries[k];
-    const double y = 24.0 + 18.0 * k;
+  const std::vector<DrawnKind> kinds = DrapeLegend(scene, model);
+  const double x = width - kLegendInset;
+  for (size_t k = 0; k < kinds.size(); ++k) {
+    const DrawnStyle& entry = StyleOf(kinds[k]);
+    const double y = LegendRow(static_cast<int>(k));
     cairo_set_source_rgb(cr, entry.colour.r, entry.colour.g, entry.colour.b);
-    if (entry.mark == 1) {
+    if (entry.mark == LegendMark::kLine) {
       cairo_move_to(cr, x, y - 4);
       cairo_line_to(cr, x + 14, y - 4);
       cairo_set_line_width(cr, 2.5);
       cairo_stroke(cr);
-    } else if (entry.mark == 3) {
+    } else if (entry.mark == LegendMark::kHollowSquare) {
       cairo_rectangle(cr, x + 3.5, y - 7.5, 7, 7);
       cairo_set_line_width(cr, 1.5);
       cairo_stroke(cr);
     } else {
-      const double side = entry.mark == 2 ? 7.0 : 12.0;
+      const double side = entry.mark == LegendMark::kFilledSquare ? 7.0 : 12.0;
       cairo_rectangle(cr, x + 7 - side / 2, y - 4 - side / 2, side, side);
       cairo_fill(cr);
     }
-    Text(cr, x + 22, y, entry.text, 12);
+    Text(cr, x + 22, y, entry.label, 12);
   }
 }
 
 }  // namespace
+
+const std::vector<DrawnStyle>& DrawnStyles() {
+  static const std::vector<DrawnStyle> styles = {
+      {DrawnKind::kUpperFace,
+       "upper face (as it lay flat)",
+       {0.33, 0.56, 0.90},
+       LegendMark::kSwatch},
+      {DrawnKind::kLowerFace, "lower face", {0.96, 0.76, 0.50}, LegendMark::kSwatch},
+      {DrawnKind::kChain, "chain", {0.12, 0.25, 0.55}, LegendMark::kLine},
+      {DrawnKind::kFixedNode, "fixed node", {0, 0, 0}, LegendMark::kFilledSquare},
+      {DrawnKind::kPartlyFixedNode, "partly fixed node", {0, 0, 0}, LegendMark::kHollowSquare},
+      {DrawnKind::kObstacle, "obstacle", {0.62, 0.62, 0.60}, LegendMark::kSwatch}};
+  return styles;
+}
+
+const DrawnStyle& StyleOf(DrawnKind kind) {
+  for (const DrawnStyle& style : DrawnStyles()) {
+    if (style.kind == kind) return style;
+  }
+  assert(false && "every DrawnKind has a row in DrawnStyles");
+  return DrawnStyles().front();
+}
+
+std::vector<DrawnKind> DrapeLegend(const Scene& scene, const Model& model) {
+  bool fully = false, partly = false;
+  const int all = model.dimension != 2 ? 3 : 2;
+  for (int k = 0; k < model.num_nodes; ++k) {
+    const int held = HeldCoordinates(model, k);
+    fully = fully || held == all;
+    partly = partly || (held > 0 && held < all);
+  }
+  std::vector<DrawnKind> kinds;
+  for (const DrawnStyle& style : DrawnStyles()) {
+    const DrawnKind kind = style.kind;
+    const bool drawn = ((kind == DrawnKind::kUpperFace || kind == DrawnKind::kLowerFace) &&
+                        !model.triangles.empty()) ||
+                       (kind == DrawnKind::kChain && !model.edges.empty()) ||
+                       (kind == DrawnKind::kFixedNode && fully) ||
+                       (kind == DrawnKind::kPartlyFixedNode && partly) ||
+                       (kind == DrawnKind::kObstacle && !scene.obstacles.empty());
+    if (drawn) kinds.push_back(kind);
+  }
+  return kinds;
+}
+
+std::array<int, 2> LegendMarkPixel(int index, LegendMark mark, int width) {
+  const int x = width - static_cast<int>(kLegendInset), y = static_cast<int>(LegendRow(index));
+  // The hollow square's left side is 1.5 px wide from x + 2.75; every other mark covers x + 7.
+  return {x + (mark == LegendMark::kHollowSquare ? 3 : 7), y - 5};
+}
 
 void DrawDrapeView(const Scene& scene, const Model& model, std::ostream& png,
                    const DrapeViewOptions& options) {

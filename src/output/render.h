@@ -4,6 +4,7 @@
 #ifndef DRAPE_SRC_OUTPUT_RENDER_H_
 #define DRAPE_SRC_OUTPUT_RENDER_H_
 
+#include <array>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -29,6 +30,33 @@ namespace drape {
 // projection of the fabric is drawn in grey on a floor (3-D views): 5% of the fabric's extent
 // below its lowest point, or on a horizontal plane obstacle under it; none when a box, cylinder or
 // sphere reaches lower. A scale bar gives lengths in the picture plane.
+struct DrapeViewOptions;
+
+// What drape.png draws, and in which style: the one table its painting and its legend read, so
+// that the legend cannot name a colour the picture does not use.
+enum class DrawnKind { kUpperFace, kLowerFace, kChain, kFixedNode, kPartlyFixedNode, kObstacle };
+enum class LegendMark { kSwatch, kLine, kFilledSquare, kHollowSquare };
+struct Rgb {
+  double r, g, b;
+};
+struct DrawnStyle {
+  DrawnKind kind;
+  std::string label;  // the legend's words
+  Rgb colour;
+  LegendMark mark;  // how the legend shows it
+};
+const std::vector<DrawnStyle>& DrawnStyles();  // one row per DrawnKind, in legend order
+const DrawnStyle& StyleOf(DrawnKind kind);
+
+// drape.png's legend for `scene` and `model`: the kinds the picture draws, once each, in table
+// order (the fabric's faces for a surface, the chain for line elements, fully and partly fixed
+// nodes where there are any, the obstacles where there are any).
+std::vector<DrawnKind> DrapeLegend(const Scene& scene, const Model& model);
+
+// A pixel (column, row) that the legend's entry `index` paints wholly in its colour, in a
+// picture `width` pixels wide (the legend is top right, one entry per 18-pixel row).
+std::array<int, 2> LegendMarkPixel(int index, LegendMark mark, int width);
+
 struct DrapeViewOptions {
   int width = 900, height = 700;  // pixels
   double azimuth_deg = -60.0, elevation_deg = 30.0;

@@ -390,6 +390,8 @@ void WriteSceneYaml(const Scene& scene, std::ostream& stream) {
   out << YAML::Value << Absolute(scene.output.directory);
   Key(out, "write");
   out << YAML::Value << YAML::Flow << scene.output.write;
+  Key(out, "obj_up");
+  out << YAML::Value << scene.output.obj_up;
   out << YAML::EndMap;
   out << YAML::EndMap;
   stream << "# drape: the scene as solved (--set overrides applied, defaults filled in, SI units)\n"

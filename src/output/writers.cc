@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cassert>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -339,9 +340,73 @@ std::vector<double> CellStrains(const Model& model) {
   return strains;
 }
 
+// The yarn measures of the cells of a woven lattice (grid and circle meshes: every triangle has a
+// corner where a warp link, along i, meets a weft link, along j), from that corner's two arms:
+// the warp and weft strains L/L₀ − 1 and the shear angle γ = θ₀ − θ, rad (the closing of the angle
+// between the yarns, positive when it closes, as fv_membrane's γ = π/2 − θ from a square start).
+// Line elements: 0 for all three. Empty when some triangle has no such corner or the start is
+// unknown.
+struct YarnCellMeasures {
+  std::vector<double> warp_strain, weft_strain, shear_angle;
+};
+
+// The corner of triangle t whose arms are a warp and a weft link (its index in t), or -1.
+int YarnCorner(const Model& model, const std::array<int, 3>& t) {
+  if (model.grid_index.size() != static_cast<size_t>(model.num_nodes)) return -1;
+  for (int c = 0; c < 3; ++c) {
+    const auto& here = model.grid_index[t[c]];
+    const auto& a = model.grid_index[t[(c + 1) % 3]];
+    const auto& b = model.grid_index[t[(c + 2) % 3]];
+    if (here[0] < 0 || a[0] < 0 || b[0] < 0) return -1;
+    auto along_i = [&](const std::array<int, 2>& n) {
+      return n[1] == here[1] && std::abs(n[0] - here[0]) == 1;
+    };
+    auto along_j = [&](const std::array<int, 2>& n) {
+      return n[0] == here[0] && std::abs(n[1] - here[1]) == 1;
+    };
+    if ((along_i(a) && along_j(b)) || (along_j(a) && along_i(b))) return c;
+  }
+  return -1;
+}
+
+YarnCellMeasures CellYarnMeasures(const Model& model) {
+  YarnCellMeasures measures;
+  if (model.initial.size() != model.positions.size() || model.triangles.empty()) return measures;
+  for (const auto& t : model.triangles) {
+    const int c = YarnCorner(model, t);
+    if (c < 0) return {};
+    int warp = t[(c + 1) % 3], weft = t[(c + 2) % 3];
+    if (model.grid_index[warp][1] != model.grid_index[t[c]][1]) std::swap(warp, weft);
+    const Eigen::Vector3d u = model.position(warp) - model.position(t[c]);
+    const Eigen::Vector3d v = model.position(weft) - model.position(t[c]);
+    const Eigen::Vector3d u0 = model.initial_position(warp) - model.initial_position(t[c]);
+    const Eigen::Vector3d v0 = model.initial_position(weft) - model.initial_position(t[c]);
+    if (!(u0.norm() > 0.0 && v0.norm() > 0.0)) return {};
+    auto angle = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      return std::atan2(a.cross(b).norm(), a.dot(b));
+    };
+    measures.warp_strain.push_back(u.norm() / u0.norm() - 1.0);
+    measures.weft_strain.push_back(v.norm() / v0.norm() - 1.0);
+    measures.shear_angle.push_back(angle(u0, v0) - angle(u, v));
+  }
+  for (size_t e = 0; e < model.edges.size(); ++e) {
+    measures.warp_strain.push_back(0.0);
+    measures.weft_strain.push_back(0.0);
+    measures.shear_angle.push_back(0.0);
+  }
+  return measures;
+}
+
+void WriteCellScalars(const std::string& name, const std::vector<double>& values,
+                      std::ostream& out) {
+  out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
+  for (double value : values) out << FormatNumber(value) << '\n';
+}
+
 // Legacy ASCII VTK unstructured grid: triangles (VTK_TRIANGLE) and line elements (VTK_LINE); per
 // node its id, displacement from the start, reaction, residual and contact force (N), the
-// per-coordinate fixed mask (0/1 × 3) and in_contact (0/1); per cell the strain (CellStrains).
+// per-coordinate fixed mask (0/1 × 3) and in_contact (0/1); per cell the strain (CellStrains) and,
+// on a woven lattice, the yarn strains and shear angle (CellYarnMeasures).
 void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, std::ostream& out) {
   std::string title = "drape " + scene.name;
   std::replace(title.begin(), title.end(), '\n', ' ');
@@ -382,8 +447,13 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
   out << "SCALARS in_contact int 1\nLOOKUP_TABLE default\n";
   for (int node = 0; node < model.num_nodes; ++node) out << InContact(result, node) << '\n';
   if (cells == 0) return;
-  out << "CELL_DATA " << cells << "\nSCALARS strain double 1\nLOOKUP_TABLE default\n";
-  for (double strain : CellStrains(model)) out << FormatNumber(strain) << '\n';
+  out << "CELL_DATA " << cells << '\n';
+  WriteCellScalars("strain", CellStrains(model), out);
+  const YarnCellMeasures yarns = CellYarnMeasures(model);
+  if (yarns.shear_angle.empty()) return;
+  WriteCellScalars("strain_warp", yarns.warp_strain, out);
+  WriteCellScalars("strain_weft", yarns.weft_strain, out);
+  WriteCellScalars("shear_angle", yarns.shear_angle, out);
 }
 
 // Area-weighted vertex normals of the surface at the solved positions (zero where no triangle).
@@ -426,12 +496,23 @@ std::vector<std::array<double, 2>> PatternCoordinates(const Model& model) {
   return uv;
 }
 
-// Wavefront OBJ: vertices (z up, as solved), and for a surface the vertex normals and the flat
-// pattern as texture coordinates (f v/vt/vn), then line elements (1-based).
+// A vector in the OBJ's axes: as solved for `up` "z"; for "y" a quarter turn about x,
+// (x, y, z) → (x, z, −y), so that drape's +z is the file's +y (a rotation: right-handed, and
+// the normals turn with the positions).
+Eigen::Vector3d ObjAxes(const Eigen::Vector3d& v, const std::string& up) {
+  if (up == "z") return v;
+  assert(up == "y" && "output.obj_up is checked by the loader");
+  return {v.x(), v.z(), -v.y()};
+}
+
+// Wavefront OBJ: vertices (z up as solved, or y up with output.obj_up: y), and for a surface the
+// vertex normals and the flat pattern as texture coordinates (f v/vt/vn), then line elements
+// (1-based).
 void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
-  out << "# drape: " << scene.name << " (z up, m)\n";
+  const std::string& up = scene.output.obj_up;
+  out << "# drape: " << scene.name << " (" << up << " up, m)\n";
   for (int node = 0; node < model.num_nodes; ++node) {
-    const auto p = model.position(node);
+    const Eigen::Vector3d p = ObjAxes(model.position(node), up);
     out << "v " << FormatNumber(p.x()) << ' ' << FormatNumber(p.y()) << ' ' << FormatNumber(p.z())
         << '\n';
   }
@@ -439,7 +520,8 @@ void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
     for (const auto& [u, v] : PatternCoordinates(model)) {
       out << "vt " << FormatNumber(u) << ' ' << FormatNumber(v) << '\n';
     }
-    for (const Eigen::Vector3d& n : VertexNormals(model)) {
+    for (const Eigen::Vector3d& normal : VertexNormals(model)) {
+      const Eigen::Vector3d n = ObjAxes(normal, up);
       out << "vn " << FormatNumber(n.x()) << ' ' << FormatNumber(n.y()) << ' '
           << FormatNumber(n.z()) << '\n';
     }

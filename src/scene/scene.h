@@ -189,6 +189,9 @@ struct SolverSpec {
 struct OutputSpec {
   std::string directory;  // resolved: absolute or relative to the current directory
   std::vector<std::string> write{"summary", "nodes", "history", "vtk", "obj"};
+  // mesh.obj's up axis: "z" (as solved) or "y": a quarter turn about x, (x, y, z) → (x, z, −y),
+  // so drape's +z is the file's +y (right-handed; Blender's and three.js's default import).
+  std::string obj_up = "z";
   Location where;
 };
 

@@ -825,7 +825,7 @@ SolverSpec ReadSolver(const YamlValue& value) {
 }
 
 OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
-  const YamlMap map(value, {"directory", "write"});
+  const YamlMap map(value, {"directory", "write", "obj_up"});
   OutputSpec output;
   output.where = value.where;
   output.directory = Resolve(scene.directory, "out/" + scene.name);
@@ -845,6 +845,7 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
       output.write.push_back(kind);
     }
   }
+  if (const auto up = map.Find("obj_up")) output.obj_up = ReadChoice(*up, {"z", "y"});
   return output;
 }
 

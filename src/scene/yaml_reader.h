@@ -49,8 +49,10 @@ class YamlOrigins {
   std::vector<Override> overrides_;
 };
 
-// A node with its location and dotted key path.
-struct YamlValue {
+// A node with its location and dotted key path. (Its implicit move assignment copies the
+// YAML::Node, which has no move assignment in yaml-cpp 0.7 and may throw: bugprone-exception-escape
+// expects moves not to throw.)
+struct YamlValue {  // NOLINT(bugprone-exception-escape)
   YAML::Node node;  // read through const access only
   Location where;
   const YamlOrigins* origins = nullptr;
