@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@ std::vector<CoarseScene> CoarseScenes() {
   std::vector<CoarseScene> scenes = {{"cantilever.yaml", strip},
                                      {"cantilever_tip.yaml", strip},
                                      {"square_table.yaml", square},
+                                     {"square_table_seam.yaml", square},
+                                     {"drape_tester_cotton_30_hem.yaml", {"mesh.spacing=0.025"}},
                                      {"sphere.yaml", square}};
   for (const char* fabric : {"cotton", "polyester"}) {
     for (const auto& [size, spacing] :
@@ -88,6 +91,99 @@ INSTANTIATE_TEST_SUITE_P(FvScenes, FvSceneCoarse, ::testing::ValuesIn(CoarseScen
                            }
                            return name;
                          });
+
+// The square table with a tension-only seam across it (material.lines on a finite-volume fabric):
+// newton reaches a certified stable minimum; the seam's own energy is reported; no seam spring
+// pushes (each one's tension dE/dl is ≥ 0, and zero wherever the seam is shorter than it was);
+// and without its line terms the model is exactly the plain square table's: the same solution,
+// bitwise.
+TEST(FvScenes, TensionOnlySeamOnAFiniteVolumeTablecloth) {
+  const std::vector<std::string> square = {"mesh.nodes=[15, 15]"};
+  auto seam = testing::SolveConfig("configs/fv/square_table_seam.yaml", "newton", square);
+  ASSERT_TRUE(seam.result.converged) << seam.result.summary.termination;
+  EXPECT_TRUE(seam.result.stability.computed);
+  EXPECT_TRUE(seam.result.stability.stable) << seam.result.stability.min_eigenvalue;
+  ASSERT_EQ(seam.result.certificate.energy_by_type.count("line"), 1u);
+  EXPECT_GT(seam.result.certificate.energy_by_type.at("line"), 0.0);
+  EXPECT_EQ(seam.model.TermCounts().at("line"), 14);  // the 14 warp links of the middle row
+  int compressed = 0, stretched = 0;
+  for (const auto& term : seam.model.terms) {
+    if (term->type() != "line") continue;
+    const int a = term->nodes()[0], b = term->nodes()[1];
+    const Eigen::Vector3d d = seam.model.position(b) - seam.model.position(a);
+    const double rest = (seam.model.initial_position(b) - seam.model.initial_position(a)).norm();
+    double energy = 0.0, gradient[6];
+    ASSERT_TRUE(term->EnergyGradient(seam.model.positions.data(), &energy, gradient));
+    const double tension =
+        Eigen::Vector3d(gradient[3], gradient[4], gradient[5]).dot(d.normalized());
+    EXPECT_GE(tension, 0.0);
+    if (d.norm() < rest) {
+      ++compressed;
+      EXPECT_EQ(tension, 0.0);
+      EXPECT_EQ(energy, 0.0);
+    } else {
+      ++stretched;
+    }
+  }
+  std::printf("seam: %d links stretched, %d shorter than at rest (slack)\n", stretched, compressed);
+  EXPECT_GT(stretched, 0);
+
+  auto plain = testing::SolveConfig("configs/fv/square_table.yaml", "newton", square);
+  Model without = BuildModel(seam.scene);
+  std::vector<std::unique_ptr<Term>> kept;
+  std::vector<int> new_index;  // of each old term (the contact terms are listed by index)
+  for (auto& term : without.terms) {
+    new_index.push_back(static_cast<int>(kept.size()));
+    if (term->type() != "line") kept.push_back(std::move(term));
+  }
+  without.terms = std::move(kept);
+  for (auto& contact : without.contact_terms) contact[0] = new_index[contact[0]];
+  ASSERT_EQ(without.TermCounts(), plain.model.TermCounts());
+  const RunResult run = RunSolve(plain.scene, without, "newton");
+  ASSERT_TRUE(run.converged) << run.summary.termination;
+  EXPECT_EQ(without.positions, plain.model.positions);
+  EXPECT_EQ(run.certificate.energy, plain.result.certificate.energy);
+}
+
+// The override the issue quotes — tension-only structural springs beside the finite volumes of
+// the drape tester — builds one energy of both that newton takes to a certified stable minimum,
+// reporting the springs' energy apart from the fabric's.
+TEST(FvScenes, TensionOnlySpringsBesideFiniteVolumes) {
+  const auto solved = testing::SolveConfig(
+      "configs/fv/drape_tester_cotton_30.yaml", "newton",
+      {"mesh.spacing=0.025", "material.springs={structural: 100, tension_only: true}"});
+  ASSERT_TRUE(solved.result.converged) << solved.result.summary.termination;
+  EXPECT_LE(solved.result.certificate.relative_residual, solved.scene.solver.tolerance);
+  EXPECT_TRUE(solved.result.stability.computed);
+  EXPECT_TRUE(solved.result.stability.stable) << solved.result.stability.min_eigenvalue;
+  const auto& energy = solved.result.certificate.energy_by_type;
+  ASSERT_EQ(energy.count("structural"), 1u);
+  ASSERT_EQ(energy.count("fv_bending"), 1u);
+  EXPECT_GE(energy.at("structural"), 0.0);
+  EXPECT_GT(solved.model.TermCounts().at("structural"), 0);
+}
+
+// The drape tester with a hem (a region at the rim): the hem's nodes, and only they, carry twice
+// the density, and their bending terms four times the rigidity.
+TEST(FvScenes, HemRegionDoublesTheRimsDensity) {
+  const std::vector<std::string> coarse = {"mesh.spacing=0.025"};
+  const Scene hem = testing::LoadConfig("configs/fv/drape_tester_cotton_30_hem.yaml", coarse);
+  const Scene plain = testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml", coarse);
+  const Model with = BuildModel(hem), without = BuildModel(plain);
+  ASSERT_EQ(with.num_nodes, without.num_nodes);
+  ASSERT_EQ(with.region_counts.size(), 1u);
+  int rim = 0;
+  for (int k = 0; k < with.num_nodes; ++k) {
+    const double r = std::hypot(with.position(k).x(), with.position(k).y());
+    const double factor = r >= 0.14 - 1e-9 ? 2.0 : 1.0;
+    rim += factor > 1.0 ? 1 : 0;
+    EXPECT_DOUBLE_EQ(with.mass[k], factor * without.mass[k]) << k;
+  }
+  EXPECT_EQ(rim, with.region_counts[0].selected);
+  EXPECT_GT(rim, 10);
+  EXPECT_DOUBLE_EQ(hem.regions[0].finite_volume.at("D_warp"),
+                   4 * plain.material.finite_volume.D_warp);
+}
 
 // Cusick's DC = (A_shadow − A_disc)/(A_specimen − A_disc) is defined for a specimen that overhangs
 // the disc. A specimen no larger than the disc cannot hang: it lies flat, its shadow is its flat

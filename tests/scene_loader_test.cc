@@ -358,6 +358,67 @@ TEST_F(SceneLoaderTest, EverySelectorKindIsReadAndLocated) {
   EXPECT_EQ(f[2].where.column, 5);
 }
 
+// Several terms in one energy: springs beside a finite-volume material, spring lines, regions;
+// the row, column and outside selectors.
+TEST_F(SceneLoaderTest, SpringsBesideFiniteVolumeLinesAndRegions) {
+  const std::string fv = R"(mesh: {nodes: [5, 5]}
+material:
+  model: finite_volume
+  density: 0.2
+  finite_volume: {E_warp: 500, E_weft: 300, G: 5, D_warp: 1.0e-5, D_weft: 2.0e-5}
+  springs:
+    structural: 100
+    tension_only: true
+  lines:
+    - nodes: {row: 2}
+      structural: 50
+      tension_only: true
+    - nodes: {column: 0}
+      structural: 70
+regions:
+  - nodes: {outside: {center: [0.5, 0.5, 0], radius: 0.4}}
+    density: 0.4
+    D_warp: 4.0e-5
+    structural: {warp: 200, weft: 150}
+    tension_only: false
+)";
+  const Scene scene = Load(fv);
+  EXPECT_TRUE(scene.material.springs.present);
+  EXPECT_TRUE(scene.material.springs.tension_only);
+  ASSERT_EQ(scene.material.lines.size(), 2u);
+  EXPECT_EQ(scene.material.lines[0].nodes.kind, NodeSelector::Kind::kRow);
+  EXPECT_EQ(scene.material.lines[0].nodes.index, 2);
+  EXPECT_EQ(scene.material.lines[0].stiffness, 50.0);
+  EXPECT_TRUE(scene.material.lines[0].tension_only);
+  EXPECT_EQ(scene.material.lines[1].nodes.kind, NodeSelector::Kind::kColumn);
+  EXPECT_FALSE(scene.material.lines[1].tension_only);
+  ASSERT_EQ(scene.regions.size(), 1u);
+  const RegionSpec& region = scene.regions[0];
+  EXPECT_EQ(region.nodes.kind, NodeSelector::Kind::kOutside);
+  EXPECT_EQ(region.nodes.radius, 0.4);
+  EXPECT_EQ(*region.density, 0.4);
+  EXPECT_EQ(region.finite_volume.at("D_warp"), 4e-5);
+  EXPECT_EQ(region.finite_volume.count("D_weft"), 0u);
+  EXPECT_EQ(region.structural.weft, 150.0);
+  EXPECT_FALSE(*region.tension_only);
+  EXPECT_EQ(region.where.key, "regions[0]");
+  EXPECT_EQ(region.given.at("D_warp").line, 18);
+
+  // The message the issue quotes is gone: springs may be set beside a finite_volume material.
+  const Scene set = Load(fv, {"material.springs={structural: 100, tension_only: true}"});
+  EXPECT_EQ(set.material.springs.structural.warp, 100.0);
+  EXPECT_TRUE(Contains(Error(fv, {"material.springs.stretch_limit=1.1"}),
+                       "material.springs.stretch_limit: 'stretch_limit' applies only when "
+                       "material.model is springs"));
+  const std::string node_mass =
+      std::string(kMinimal) + "regions:\n  - nodes: {all: true}\n    density: 0.4\n";
+  std::string replaced = node_mass;
+  replaced.replace(replaced.find("density: 0.2"), 12, "node_mass: 0.2");
+  EXPECT_TRUE(Contains(Error(replaced), "10:5: regions[0].density: a region's density needs"));
+  EXPECT_TRUE(Contains(Error(std::string(kMinimal) + "regions:\n  - nodes: {all: true}\n"),
+                       "9:5: regions[0]: the region overrides nothing"));
+}
+
 TEST_F(SceneLoaderTest, SpecsCarryTheirLocations) {
   const Scene scene = Load(std::string(kMinimal) + R"(loads:
   gravity: [0, 0, -9.81]

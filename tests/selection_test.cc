@@ -107,6 +107,23 @@ TEST(Selection, WithinADistance) {
             (std::vector<int>{Id(1, 0), Id(0, 1), Id(1, 1), Id(2, 1), Id(1, 2)}));
 }
 
+TEST(Selection, RowsColumnsAndOutside) {
+  const Mesh mesh = Grid();
+  NodeSelector row = Selector(NodeSelector::Kind::kRow);
+  row.index = 1;
+  EXPECT_EQ(SelectNodes(row, mesh), (std::vector<int>{Id(0, 1), Id(1, 1), Id(2, 1), Id(3, 1)}));
+  NodeSelector column = Selector(NodeSelector::Kind::kColumn);
+  column.index = 3;
+  EXPECT_EQ(SelectNodes(column, mesh), (std::vector<int>{Id(3, 0), Id(3, 1), Id(3, 2)}));
+  column.index = 4;
+  EXPECT_EQ(ErrorOf(column, mesh),
+            "scene.yaml:7:12: fixed[0].nodes: column 4 is out of range (i from 0 to 3)");
+  NodeSelector outside = Selector(NodeSelector::Kind::kOutside);
+  outside.center = mesh.nodes[Id(1, 1)];
+  outside.radius = 0.2;  // on the boundary (distance 0.2) counts; the diagonal at 0.1414 not
+  EXPECT_EQ(SelectNodes(outside, mesh), (std::vector<int>{Id(3, 0), Id(3, 1), Id(3, 2)}));
+}
+
 TEST(Selection, AllNodes) {
   const Mesh mesh = Grid();
   EXPECT_EQ(SelectNodes(Selector(NodeSelector::Kind::kAll), mesh).size(), mesh.nodes.size());

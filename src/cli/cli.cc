@@ -224,12 +224,23 @@ int Check(const Arguments& arguments, std::ostream& out) {
   const Model model = BuildModel(scene);
   out << scene.name << ": " << model.num_nodes << " nodes, " << model.num_free_dofs()
       << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << "\n";
-  out << "material " << scene.material.model << " (SI):";
+  const MaterialSpec& material = scene.material;
+  out << "material " << material.model
+      << (material.model != "springs" && material.springs.present ? " + springs" : "")
+      << (material.lines.empty() ? ""
+                                 : " + " + std::to_string(material.lines.size()) + " spring lines")
+      << " (SI):";
   for (const MaterialValue& value : MaterialSiValues(scene.material)) {
     out << " " << value.key << " " << FormatNumber(value.value, 6)
         << (value.unit == "1" ? "" : " " + value.unit) << ";";
   }
-  out << std::endl;
+  out << "\n";
+  for (size_t r = 0; r < model.region_counts.size(); ++r) {
+    const Model::RegionCount& count = model.region_counts[r];
+    out << "region " << r << " (line " << scene.regions[r].where.line << "): " << count.selected
+        << " nodes, " << count.last << " of them in no later region\n";
+  }
+  out << std::flush;
   return kExitConverged;
 }
 

@@ -1,6 +1,8 @@
 #include "src/model/finite_volume.h"
 
+#include <cassert>
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -74,17 +76,25 @@ Lattice CheckedLattice(const FiniteVolumeSpec& spec, const Mesh& mesh, const Mod
   return lattice;
 }
 
+// The material of each node's control volume.
+using NodeSpecs = std::vector<const FiniteVolumeSpec*>;
+
 double RestDistance(const Mesh& mesh, int a, int b) {
   return (mesh.nodes[b] - mesh.nodes[a]).norm();
 }
 
-// A single row (or column) of nodes: a strip bending in one direction.
-void AddStrip(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model) {
+// A single row (or column) of nodes: a strip bending in one direction. Each link's membrane
+// spring is its two halves, each of the modulus of its own node's control volume.
+void AddStrip(const NodeSpecs& of_node, const Mesh& mesh, Model* model) {
   const bool row = mesh.nv == 1;
   const int count = row ? mesh.nu : mesh.nv;
   const int step = row ? 1 : mesh.nu;
-  const double modulus = row ? spec.E_warp : spec.E_weft;
-  const double rigidity = row ? spec.D_warp : spec.D_weft;
+  const auto modulus = [&](int node) {
+    return row ? of_node[node]->E_warp : of_node[node]->E_weft;
+  };
+  const auto rigidity = [&](int node) {
+    return row ? of_node[node]->D_warp : of_node[node]->D_weft;
+  };
   std::vector<double> size(count, 0.0);  // lumped length of each control volume
   for (int k = 0; k + 1 < count; ++k) {
     const double half = 0.5 * RestDistance(mesh, k * step, (k + 1) * step);
@@ -94,15 +104,22 @@ void AddStrip(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model) {
   for (int k = 0; k + 1 < count; ++k) {
     const int a = k * step, b = (k + 1) * step;
     const double length = RestDistance(mesh, a, b);
-    const double area = 0.5 * length * (mesh.area[a] / size[k] + mesh.area[b] / size[k + 1]);
-    model->terms.push_back(MakeTerm(
-        "fv_membrane", {a, b}, SpringStretch::Create(modulus * area / (length * length), length)));
+    const double width_a = mesh.area[a] / size[k], width_b = mesh.area[b] / size[k + 1];
+    double stiffness = 0.0;  // E w / l, the two halves of the link in parallel over its length
+    if (modulus(a) == modulus(b)) {
+      const double area = 0.5 * length * (width_a + width_b);
+      stiffness = modulus(a) * area / (length * length);
+    } else {
+      stiffness = 0.5 * (modulus(a) * width_a + modulus(b) * width_b) / length;
+    }
+    model->terms.push_back(
+        MakeTerm("fv_membrane", {a, b}, SpringStretch::Create(stiffness, length)));
   }
-  if (!(rigidity > 0.0)) return;
   for (int k = 1; k + 1 < count; ++k) {
     const int a = (k - 1) * step, p = k * step, b = (k + 1) * step;
-    model->terms.push_back(
-        MakeTerm("fv_bending", {a, p, b}, FvBendingEdge::Create(rigidity, size[k], mesh.area[p])));
+    if (!(rigidity(p) > 0.0)) continue;
+    model->terms.push_back(MakeTerm("fv_bending", {a, p, b},
+                                    FvBendingEdge::Create(rigidity(p), size[k], mesh.area[p])));
   }
 }
 
@@ -153,18 +170,28 @@ void AddMembrane(const MembraneRigidities& e, const Mesh& mesh, int p, const Nei
 }  // namespace
 
 void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model) {
-  CheckMaterial(spec);
-  const Lattice lattice = CheckedLattice(spec, mesh, *model);
+  AddFiniteVolumeTerms(NodeSpecs(mesh.nodes.size(), &spec), mesh, model);
+}
+
+void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, const Mesh& mesh,
+                          Model* model) {
+  assert(of_node.size() == mesh.nodes.size() && !of_node.empty());
+  std::map<const FiniteVolumeSpec*, MembraneRigidities> rigidities;
+  for (const FiniteVolumeSpec* spec : of_node) {
+    if (rigidities.count(spec) > 0) continue;
+    CheckMaterial(*spec);
+    rigidities[spec] = PlaneStressRigidities(*spec);
+  }
+  const Lattice lattice = CheckedLattice(*of_node[0], mesh, *model);
   const int n = static_cast<int>(mesh.nodes.size());
   if ((mesh.nu == 1 || mesh.nv == 1) && mesh.nu * mesh.nv == n) {
-    AddStrip(spec, mesh, model);
+    AddStrip(of_node, mesh, model);
     return;
   }
-  const MembraneRigidities rigidities = PlaneStressRigidities(spec);
   for (int p = 0; p < n; ++p) {  // a full grid's ids run row by row: p = j*nu + i
     const Neighbours nb = NeighboursOf(lattice, mesh.grid_index[p][0], mesh.grid_index[p][1]);
-    AddBending(spec, mesh, p, nb, model);
-    AddMembrane(rigidities, mesh, p, nb, model);
+    AddBending(*of_node[p], mesh, p, nb, model);
+    AddMembrane(rigidities.at(of_node[p]), mesh, p, nb, model);
   }
 }
 

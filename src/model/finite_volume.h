@@ -4,6 +4,8 @@
 #ifndef DRAPE_SRC_MODEL_FINITE_VOLUME_H_
 #define DRAPE_SRC_MODEL_FINITE_VOLUME_H_
 
+#include <vector>
+
 #include "src/model/mesh.h"
 #include "src/model/model.h"
 #include "src/scene/scene.h"
@@ -37,6 +39,12 @@ MembraneRigidities PlaneStressRigidities(const FiniteVolumeSpec& spec);
 // rigidities whose energy is not positive semidefinite (ν_warp ν_weft ≥ 1, E1 E2 < E12²,
 // D12² > D_warp D_weft).
 void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model);
+// The same with a material per node (regions, src/model/regions.h): each control volume takes the
+// material of its own node — its bending term and its quarter sections' membrane terms; a strip
+// link's membrane spring is two halves, each of its own node's modulus. Every distinct material is
+// checked as above (at its own `where`).
+void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, const Mesh& mesh,
+                          Model* model);
 
 }  // namespace drape
 

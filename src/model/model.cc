@@ -6,6 +6,13 @@
 //   metre of line, times each node's lumped length (half of each adjacent segment).
 // - node_mass: every node the same mass.
 // - total_mass: shared in proportion to lumped area (or length); equally if all are zero.
+// Several terms in one energy: a finite_volume material may have material.springs beside it
+// (the same families on the same lattice, added to the finite-volume terms), and every material
+// may have material.lines (src/model/model.cc AddLines). Each kind of term keeps its own type,
+// so summary.json reports each one's energy.
+// Regions (regions:, src/model/regions.h): each node's density, finite-volume values and spring
+// stiffnesses are its own region's; a spring joins two nodes whose stiffnesses a and b may
+// differ: its two halves in series, 2ab/(a + b), tension-only if either node's material is.
 // Springs (material.springs): structural = warp links (stiffness `warp`) and weft links (`weft`);
 // shear = diagonals with (warp + weft)/2; flexion = skip-one links, warp and weft. Rest lengths:
 // `initial` = the distance in the mesh (before any `move`); `zero` = ZeroLengthSpring (never
@@ -37,6 +44,7 @@
 #include "src/model/contact.h"
 #include "src/model/finite_volume.h"
 #include "src/model/mesh.h"
+#include "src/model/regions.h"
 #include "src/model/selection.h"
 #include "src/model/stretch_limit.h"
 #include "src/scene/solver_methods.h"
@@ -107,13 +115,16 @@ std::vector<double> MassWeights(const Mesh& mesh) {
   return mesh.length;
 }
 
-std::vector<double> NodeMasses(const MaterialSpec& material, const Mesh& mesh) {
+// A region's density (regions:) replaces material.density for its nodes; node_mass and
+// total_mass take none (the loader refuses it).
+std::vector<double> NodeMasses(const NodeMaterials& materials, const Mesh& mesh) {
+  const MaterialSpec& material = materials.materials[0];
   const int n = static_cast<int>(mesh.nodes.size());
   const std::vector<double> weights = MassWeights(mesh);
   std::vector<double> mass(n, material.mass_value);
   switch (material.mass_kind) {
     case MaterialSpec::MassKind::kDensity:
-      for (int k = 0; k < n; ++k) mass[k] = material.mass_value * weights[k];
+      for (int k = 0; k < n; ++k) mass[k] = materials.at(k).mass_value * weights[k];
       break;
     case MaterialSpec::MassKind::kNodeMass:
       break;
@@ -161,23 +172,52 @@ void CheckPlanarFor2d(const Scene& scene, const Mesh& mesh) {
   }
 }
 
-struct SpringFactory {
-  const SpringsSpec& springs;
-  double rest_scale;  // rest length = rest_scale × initial length (for kInitial and kGiven)
+// One spring of initial length × rest_scale: zero-length, tension-only or two-sided.
+void AddSpring(const std::string& type, const Link& link, double stiffness, bool tension_only,
+               const SpringsSpec& springs, double rest_scale, const Mesh& mesh, Model* model) {
+  if (!(stiffness > 0.0)) return;
+  const std::vector<int> nodes{link[0], link[1]};
+  const double rest = rest_scale * (mesh.nodes[link[1]] - mesh.nodes[link[0]]).norm();
+  if (springs.rest_length == SpringsSpec::RestLength::kZero) {
+    model->terms.push_back(MakeTerm(type, nodes, ZeroLengthSpring::Create(stiffness)));
+  } else if (tension_only) {
+    model->terms.push_back(MakeTerm(type, nodes, TensionOnlySpring::Create(stiffness, rest)));
+  } else {
+    model->terms.push_back(MakeTerm(type, nodes, SpringStretch::Create(stiffness, rest)));
+  }
+}
 
-  void Add(const std::string& type, const std::vector<Link>& links, double stiffness,
-           const Mesh& mesh, Model* model) const {
-    if (!(stiffness > 0.0)) return;
+// The stiffness of a link between two nodes of stiffness a and b (regions): its two halves in
+// series, 2ab/(a + b) — a where both are a, 0 where either is 0.
+double SeriesStiffness(double a, double b) {
+  if (a == b) return a;
+  return a > 0.0 && b > 0.0 ? 2.0 * a * b / (a + b) : 0.0;
+}
+
+// The stiffness a family gives one node (warp or weft; shear: their mean), 0 if the node's
+// material has none of that family.
+double FamilyStiffness(const SpringFamilySpec& family, int direction) {
+  if (!family.present) return 0.0;
+  if (direction == 0) return family.warp;
+  if (direction == 1) return family.weft;
+  return 0.5 * (family.warp + family.weft);
+}
+
+struct SpringFactory {
+  const NodeMaterials& materials;
+  const SpringsSpec& springs;  // the scene's: rest length
+  double rest_scale;           // rest length = rest_scale × initial length (kInitial and kGiven)
+
+  void Add(const std::string& type, const std::vector<Link>& links,
+           SpringFamilySpec SpringsSpec::*family, int direction, const Mesh& mesh,
+           Model* model) const {
     for (const Link& link : links) {
-      const std::vector<int> nodes{link[0], link[1]};
-      const double rest = rest_scale * (mesh.nodes[link[1]] - mesh.nodes[link[0]]).norm();
-      if (springs.rest_length == SpringsSpec::RestLength::kZero) {
-        model->terms.push_back(MakeTerm(type, nodes, ZeroLengthSpring::Create(stiffness)));
-      } else if (springs.tension_only) {
-        model->terms.push_back(MakeTerm(type, nodes, TensionOnlySpring::Create(stiffness, rest)));
-      } else {
-        model->terms.push_back(MakeTerm(type, nodes, SpringStretch::Create(stiffness, rest)));
-      }
+      const SpringsSpec& a = materials.at(link[0]).springs;
+      const SpringsSpec& b = materials.at(link[1]).springs;
+      const double stiffness = SeriesStiffness(FamilyStiffness(a.*family, direction),
+                                               FamilyStiffness(b.*family, direction));
+      AddSpring(type, link, stiffness, a.tension_only || b.tension_only, springs, rest_scale, mesh,
+                model);
     }
   }
 };
@@ -196,19 +236,40 @@ double RestScale(const SpringsSpec& springs, const Mesh& mesh) {
   return count > 0 && sum > 0.0 ? springs.rest_length_value / (sum / count) : 1.0;
 }
 
-void AddSprings(const SpringsSpec& springs, const Mesh& mesh, Model* model) {
-  const SpringFactory factory{springs, RestScale(springs, mesh)};
-  if (springs.structural.present) {
-    factory.Add("structural", mesh.warp, springs.structural.warp, mesh, model);
-    factory.Add("structural", mesh.weft, springs.structural.weft, mesh, model);
-  }
-  if (springs.shear.present) {
-    const double stiffness = 0.5 * (springs.shear.warp + springs.shear.weft);
-    factory.Add("shear", mesh.shear, stiffness, mesh, model);
-  }
-  if (springs.flexion.present) {
-    factory.Add("flexion", mesh.flexion_warp, springs.flexion.warp, mesh, model);
-    factory.Add("flexion", mesh.flexion_weft, springs.flexion.weft, mesh, model);
+// The spring families of material.springs, with each node's stiffness from its region.
+void AddSprings(const NodeMaterials& materials, const Mesh& mesh, Model* model) {
+  const SpringsSpec& springs = materials.materials[0].springs;
+  const SpringFactory factory{materials, springs, RestScale(springs, mesh)};
+  factory.Add("structural", mesh.warp, &SpringsSpec::structural, 0, mesh, model);
+  factory.Add("structural", mesh.weft, &SpringsSpec::structural, 1, mesh, model);
+  factory.Add("shear", mesh.shear, &SpringsSpec::shear, 2, mesh, model);
+  factory.Add("flexion", mesh.flexion_warp, &SpringsSpec::flexion, 0, mesh, model);
+  factory.Add("flexion", mesh.flexion_weft, &SpringsSpec::flexion, 1, mesh, model);
+}
+
+// material.lines: a "line" spring (rest length: the initial distance) on every structural link
+// — lattice neighbours along the warp or the weft — both of whose nodes the line selects.
+void AddLines(const MaterialSpec& material, const Mesh& mesh, Model* model) {
+  for (const SpringLineSpec& line : material.lines) {
+    std::vector<char> selected(mesh.nodes.size(), 0);
+    for (int node : SelectNodes(line.nodes, mesh)) selected[node] = 1;
+    const size_t before = model->terms.size();
+    for (const auto* links : {&mesh.warp, &mesh.weft}) {
+      for (const Link& link : *links) {
+        if (!selected[link[0]] || !selected[link[1]]) continue;
+        const double rest = (mesh.nodes[link[1]] - mesh.nodes[link[0]]).norm();
+        const std::vector<int> nodes{link[0], link[1]};
+        model->terms.push_back(
+            line.tension_only
+                ? MakeTerm("line", nodes, TensionOnlySpring::Create(line.stiffness, rest))
+                : MakeTerm("line", nodes, SpringStretch::Create(line.stiffness, rest)));
+      }
+    }
+    if (model->terms.size() == before) {
+      throw InputError(line.nodes.where,
+                       "the line's selection holds no two neighbouring nodes (lattice neighbours "
+                       "along the warp or the weft), so it has no spring");
+    }
   }
 }
 
@@ -424,7 +485,9 @@ Model BuildModel(const Scene& scene) {
   }
   model.fixed.assign(model.num_dofs(), 0);
   model.applied.assign(model.num_dofs(), 0.0);
-  model.mass = NodeMasses(scene.material, mesh);
+  const NodeMaterials materials = AssignMaterials(scene, mesh);
+  model.region_counts = materials.counts;
+  model.mass = NodeMasses(materials, mesh);
   ApplyFixed(scene, mesh, &model);
   model.initial = model.positions;
   model.size = BoundingDiagonal(
@@ -439,13 +502,19 @@ Model BuildModel(const Scene& scene) {
   model.edges = mesh.lines;
 
   if (scene.material.model == "finite_volume") {
-    AddFiniteVolumeTerms(scene.material.finite_volume, mesh, &model);
-  } else {
-    AddSprings(scene.material.springs, mesh, &model);
-    if (scene.material.springs.stretch_limit) {
-      AddStretchLimitTerms(*scene.material.springs.stretch_limit, &model);
+    std::vector<const FiniteVolumeSpec*> of_node(mesh.nodes.size());
+    for (size_t k = 0; k < of_node.size(); ++k) {
+      of_node[k] = &materials.at(static_cast<int>(k)).finite_volume;
     }
+    AddFiniteVolumeTerms(of_node, mesh, &model);
   }
+  if (scene.material.model == "springs" || scene.material.springs.present) {
+    AddSprings(materials, mesh, &model);
+  }
+  if (scene.material.springs.stretch_limit) {
+    AddStretchLimitTerms(*scene.material.springs.stretch_limit, &model);
+  }
+  AddLines(scene.material, mesh, &model);
   clock.Check("the elastic terms of " + nodes);
   AddLoads(scene, mesh, &model);
   if (!scene.obstacles.empty()) AddContactTerms(scene.obstacles, scene.contact, &model);

@@ -55,6 +55,13 @@ struct Model {
   std::vector<ObstacleSpec> obstacles;
   ContactSpec contact;
   std::vector<std::array<int, 2>> contact_terms;
+  // For each region of the scene (regions:), how many nodes it selects and how many of those no
+  // later region selects too (for drape check).
+  struct RegionCount {
+    int selected = 0;
+    int last = 0;
+  };
+  std::vector<RegionCount> region_counts;
 
   int num_dofs() const { return 3 * num_nodes; }
   // Node views: one node's coordinates of `positions`, `initial`, `applied`.

@@ -1,8 +1,8 @@
 // Node selections. Edge and corner selectors need a full rectangular lattice (a grid, a chain —
 // a single row whose left/right edges are its first/last node — or a circle mesh so small that
-// its lattice is full); ij selectors need lattice indices (grid, chain, circle); ids, box, within
-// and all work on every mesh. Box and within include points on their boundary, to 1e-9 × the
-// mesh size.
+// its lattice is full); ij, row (j) and column (i) selectors need lattice indices (grid, chain,
+// circle); ids, box, within, outside and all work on every mesh. Box and within include points on
+// their boundary, to 1e-9 × the mesh size.
 #include "src/model/selection.h"
 
 #include <algorithm>
@@ -19,7 +19,7 @@ bool IsFullLattice(const Mesh& mesh) {
   if (mesh.nodes.size() != static_cast<size_t>(mesh.nu) * mesh.nv) return false;
   for (size_t k = 0; k < mesh.grid_index.size(); ++k) {
     const auto [i, j] = mesh.grid_index[k];
-    if (static_cast<size_t>(j * mesh.nu + i) != k) return false;
+    if (static_cast<size_t>(j) * mesh.nu + i != k) return false;
   }
   return mesh.grid_index.size() == mesh.nodes.size();
 }
@@ -122,6 +122,27 @@ std::vector<int> SelectIj(const NodeSelector& selector, const Mesh& mesh) {
   return ids;
 }
 
+// row: j = index, column: i = index, on a mesh with lattice indices.
+std::vector<int> SelectLine(const NodeSelector& selector, const Mesh& mesh) {
+  const bool row = selector.kind == NodeSelector::Kind::kRow;
+  const char* const name = row ? "row" : "column";
+  if (!HasLatticeIndices(mesh)) {
+    throw InputError(selector.where,
+                     std::string(name) + " selectors need a grid mesh (grid, chain or circle)");
+  }
+  const int count = row ? mesh.nv : mesh.nu;
+  if (selector.index >= count) {
+    throw InputError(selector.where, std::string(name) + " " + std::to_string(selector.index) +
+                                         " is out of range (" + (row ? "j" : "i") + " from 0 to " +
+                                         std::to_string(count - 1) + ")");
+  }
+  std::vector<int> ids;
+  for (size_t k = 0; k < mesh.grid_index.size(); ++k) {
+    if (mesh.grid_index[k][row ? 1 : 0] == selector.index) ids.push_back(static_cast<int>(k));
+  }
+  return ids;
+}
+
 std::vector<int> SelectBox(const NodeSelector& selector, const Mesh& mesh) {
   const double tolerance = 1e-9 * MeshSize(mesh);
   const Eigen::Vector3d low = selector.min.array() - tolerance;
@@ -136,11 +157,18 @@ std::vector<int> SelectBox(const NodeSelector& selector, const Mesh& mesh) {
   return ids;
 }
 
+// within: distance to the centre at most the radius; outside: at least the radius (both with
+// the boundary's tolerance).
 std::vector<int> SelectWithin(const NodeSelector& selector, const Mesh& mesh) {
-  const double limit = selector.radius + 1e-9 * MeshSize(mesh);
+  const double tolerance = 1e-9 * MeshSize(mesh);
+  const bool within = selector.kind == NodeSelector::Kind::kWithin;
   std::vector<int> ids;
   for (size_t k = 0; k < mesh.nodes.size(); ++k) {
-    if ((mesh.nodes[k] - selector.center).norm() <= limit) ids.push_back(static_cast<int>(k));
+    const double distance = (mesh.nodes[k] - selector.center).norm();
+    if (within ? distance <= selector.radius + tolerance
+               : distance >= selector.radius - tolerance) {
+      ids.push_back(static_cast<int>(k));
+    }
   }
   return ids;
 }
@@ -169,7 +197,12 @@ std::vector<int> SelectNodes(const NodeSelector& selector, const Mesh& mesh) {
     case NodeSelector::Kind::kBox:
       ids = SelectBox(selector, mesh);
       break;
+    case NodeSelector::Kind::kRow:
+    case NodeSelector::Kind::kColumn:
+      ids = SelectLine(selector, mesh);
+      break;
     case NodeSelector::Kind::kWithin:
+    case NodeSelector::Kind::kOutside:
       ids = SelectWithin(selector, mesh);
       break;
     case NodeSelector::Kind::kAll:

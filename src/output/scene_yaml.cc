@@ -10,6 +10,7 @@
 
 #include "src/model/obstacle_kinds.h"
 #include "src/output/json.h"
+#include "src/scene/material_keys.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 
@@ -128,6 +129,59 @@ void WriteMesh(const MeshSpec& mesh, YAML::Emitter& out) {
   out << YAML::EndMap;
 }
 
+void WriteSelector(const NodeSelector& selector, YAML::Emitter& out) {
+  Key(out, "nodes");
+  out << YAML::Value << YAML::Flow << YAML::BeginMap;
+  switch (selector.kind) {
+    case NodeSelector::Kind::kEdge:
+    case NodeSelector::Kind::kCorner:
+      Key(out, selector.kind == NodeSelector::Kind::kEdge ? "edge" : "corner");
+      out << YAML::Value << selector.name;
+      break;
+    case NodeSelector::Kind::kIds:
+      Key(out, "ids");
+      out << YAML::Value << YAML::Flow << selector.ids;
+      break;
+    case NodeSelector::Kind::kIj:
+      Key(out, "ij");
+      out << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      for (const auto& ij : selector.ij) {
+        out << YAML::Flow << YAML::BeginSeq << ij[0] << ij[1] << YAML::EndSeq;
+      }
+      out << YAML::EndSeq;
+      break;
+    case NodeSelector::Kind::kBox:
+      Key(out, "box");
+      out << YAML::Value << YAML::Flow << YAML::BeginMap;
+      Key(out, "min");
+      Vector3(out, selector.min);
+      Key(out, "max");
+      Vector3(out, selector.max);
+      out << YAML::EndMap;
+      break;
+    case NodeSelector::Kind::kRow:
+    case NodeSelector::Kind::kColumn:
+      Key(out, selector.kind == NodeSelector::Kind::kRow ? "row" : "column");
+      out << YAML::Value << selector.index;
+      break;
+    case NodeSelector::Kind::kWithin:
+    case NodeSelector::Kind::kOutside:
+      Key(out, selector.kind == NodeSelector::Kind::kWithin ? "within" : "outside");
+      out << YAML::Value << YAML::Flow << YAML::BeginMap;
+      Key(out, "center");
+      Vector3(out, selector.center);
+      Key(out, "radius");
+      Number(out, selector.radius);
+      out << YAML::EndMap;
+      break;
+    case NodeSelector::Kind::kAll:
+      Key(out, "all");
+      out << YAML::Value << true;
+      break;
+  }
+  out << YAML::EndMap;
+}
+
 void WriteFamily(const std::string& name, const SpringFamilySpec& family, YAML::Emitter& out) {
   if (!family.present) return;
   Key(out, name);
@@ -164,13 +218,9 @@ void WriteSprings(const SpringsSpec& springs, YAML::Emitter& out) {
 void WriteFiniteVolume(const FiniteVolumeSpec& fv, YAML::Emitter& out) {
   Key(out, "finite_volume");
   out << YAML::Value << YAML::BeginMap;
-  const std::pair<const char*, double> values[] = {
-      {"E_warp", fv.E_warp},   {"E_weft", fv.E_weft}, {"nu_warp", fv.nu_warp},
-      {"nu_weft", fv.nu_weft}, {"G", fv.G},           {"D_warp", fv.D_warp},
-      {"D_weft", fv.D_weft},   {"D_12", fv.D_12}};
-  for (const auto& [key, value] : values) {
-    Key(out, key);
-    Number(out, value);
+  for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
+    Key(out, key.key);
+    Number(out, fv.*key.member);
   }
   out << YAML::EndMap;
 }
@@ -183,59 +233,55 @@ void WriteMaterial(const MaterialSpec& material, YAML::Emitter& out) {
   out << YAML::Value << material.model;
   Key(out, mass_keys[static_cast<int>(material.mass_kind)]);
   Number(out, material.mass_value);
-  if (material.model == "springs") {
+  if (material.model != "springs") WriteFiniteVolume(material.finite_volume, out);
+  if (material.model == "springs" || material.springs.present) {
     WriteSprings(material.springs, out);
-  } else {
-    WriteFiniteVolume(material.finite_volume, out);
+  }
+  if (!material.lines.empty()) {
+    Key(out, "lines");
+    out << YAML::Value << YAML::BeginSeq;
+    for (const SpringLineSpec& line : material.lines) {
+      out << YAML::BeginMap;
+      WriteSelector(line.nodes, out);
+      Key(out, "structural");
+      Number(out, line.stiffness);
+      Key(out, "tension_only");
+      out << YAML::Value << line.tension_only;
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
   }
   out << YAML::EndMap;
 }
 
-void WriteSelector(const NodeSelector& selector, YAML::Emitter& out) {
-  Key(out, "nodes");
-  out << YAML::Value << YAML::Flow << YAML::BeginMap;
-  switch (selector.kind) {
-    case NodeSelector::Kind::kEdge:
-    case NodeSelector::Kind::kCorner:
-      Key(out, selector.kind == NodeSelector::Kind::kEdge ? "edge" : "corner");
-      out << YAML::Value << selector.name;
-      break;
-    case NodeSelector::Kind::kIds:
-      Key(out, "ids");
-      out << YAML::Value << YAML::Flow << selector.ids;
-      break;
-    case NodeSelector::Kind::kIj:
-      Key(out, "ij");
-      out << YAML::Value << YAML::Flow << YAML::BeginSeq;
-      for (const auto& ij : selector.ij) {
-        out << YAML::Flow << YAML::BeginSeq << ij[0] << ij[1] << YAML::EndSeq;
-      }
-      out << YAML::EndSeq;
-      break;
-    case NodeSelector::Kind::kBox:
-      Key(out, "box");
-      out << YAML::Value << YAML::Flow << YAML::BeginMap;
-      Key(out, "min");
-      Vector3(out, selector.min);
-      Key(out, "max");
-      Vector3(out, selector.max);
-      out << YAML::EndMap;
-      break;
-    case NodeSelector::Kind::kWithin:
-      Key(out, "within");
-      out << YAML::Value << YAML::Flow << YAML::BeginMap;
-      Key(out, "center");
-      Vector3(out, selector.center);
-      Key(out, "radius");
-      Number(out, selector.radius);
-      out << YAML::EndMap;
-      break;
-    case NodeSelector::Kind::kAll:
-      Key(out, "all");
-      out << YAML::Value << true;
-      break;
+// Each region with the keys it gives (their values in SI).
+void WriteRegions(const std::vector<RegionSpec>& regions, YAML::Emitter& out) {
+  if (regions.empty()) return;
+  Key(out, "regions");
+  out << YAML::Value << YAML::BeginSeq;
+  for (const RegionSpec& region : regions) {
+    out << YAML::BeginMap;
+    WriteSelector(region.nodes, out);
+    if (region.density) {
+      Key(out, "density");
+      Number(out, *region.density);
+    }
+    for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
+      const auto given = region.finite_volume.find(key.key);
+      if (given == region.finite_volume.end()) continue;
+      Key(out, key.key);
+      Number(out, given->second);
+    }
+    WriteFamily("structural", region.structural, out);
+    WriteFamily("shear", region.shear, out);
+    WriteFamily("flexion", region.flexion, out);
+    if (region.tension_only) {
+      Key(out, "tension_only");
+      out << YAML::Value << *region.tension_only;
+    }
+    out << YAML::EndMap;
   }
-  out << YAML::EndMap;
+  out << YAML::EndSeq;
 }
 
 void WriteFixed(const std::vector<FixedSpec>& fixed, YAML::Emitter& out) {
@@ -372,6 +418,7 @@ void WriteSceneYaml(const Scene& scene, std::ostream& stream) {
   out << YAML::Value << scene.dimension;
   WriteMesh(scene.mesh, out);
   WriteMaterial(scene.material, out);
+  WriteRegions(scene.regions, out);
   WriteFixed(scene.fixed, out);
   WriteLoads(scene.loads, out);
   Key(out, "obstacles");

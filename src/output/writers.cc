@@ -26,6 +26,7 @@
 #include "src/output/result_folder.h"
 #include "src/output/scene_yaml.h"
 #include "src/output/version.h"
+#include "src/scene/material_keys.h"
 
 namespace drape {
 
@@ -573,16 +574,9 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
   const int mass = static_cast<int>(material.mass_kind);
   std::vector<MaterialValue> values = {{mass_keys[mass], material.mass_value, mass_units[mass]}};
   if (material.model == "finite_volume") {
-    const FiniteVolumeSpec& fv = material.finite_volume;
-    values.insert(values.end(), {{"E_warp", fv.E_warp, "N/m"},
-                                 {"E_weft", fv.E_weft, "N/m"},
-                                 {"nu_warp", fv.nu_warp, "1"},
-                                 {"nu_weft", fv.nu_weft, "1"},
-                                 {"G", fv.G, "N/m"},
-                                 {"D_warp", fv.D_warp, "N*m"},
-                                 {"D_weft", fv.D_weft, "N*m"},
-                                 {"D_12", fv.D_12, "N*m"}});
-    return values;
+    for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
+      values.push_back({key.key, material.finite_volume.*key.member, key.unit});
+    }
   }
   const std::pair<const char*, const SpringFamilySpec*> families[] = {
       {"structural", &material.springs.structural},

@@ -67,6 +67,21 @@ struct MeshSpec {
   Location where;
 };
 
+// A set of nodes, as written under `nodes:` in `fixed`, `loads.forces`, `material.lines` and
+// `regions`.
+struct NodeSelector {
+  enum class Kind { kEdge, kCorner, kIds, kIj, kRow, kColumn, kBox, kWithin, kOutside, kAll };
+  Kind kind = Kind::kAll;
+  std::string name;  // edge: top|bottom|left|right; corner: top-left|top-right|bottom-left|...
+  std::vector<int> ids;
+  std::vector<std::array<int, 2>> ij;
+  int index = 0;  // row: the lattice index j; column: the lattice index i
+  Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // box
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();                              // within, outside
+  double radius = 0.0;                                                           // within, outside
+  Location where;
+};
+
 // A stiffness given for both yarn directions: `structural: 1000` or `{warp: 1000, weft: 800}`.
 struct SpringFamilySpec {
   bool present = false;
@@ -76,6 +91,8 @@ struct SpringFamilySpec {
 };
 
 struct SpringsSpec {
+  bool present = false;  // material.springs is given (required by model springs, optional beside
+                         // finite_volume)
   SpringFamilySpec structural, shear, flexion;
   enum class RestLength { kInitial, kZero, kGiven };
   RestLength rest_length = RestLength::kInitial;
@@ -92,26 +109,36 @@ struct FiniteVolumeSpec {
   Location where;
 };
 
+// A spring line (material.lines): springs on the structural links (lattice neighbours along the
+// warp or the weft) both of whose nodes are selected, added to whatever the material model has.
+struct SpringLineSpec {
+  NodeSelector nodes;
+  double stiffness = 0.0;  // N/m per link (`structural`)
+  bool tension_only = false;
+  Location where;
+};
+
 struct MaterialSpec {
-  std::string model = "springs";  // springs | finite_volume
+  // springs | finite_volume. A finite_volume material may have springs beside it (`springs`).
+  std::string model = "springs";
   enum class MassKind { kDensity, kNodeMass, kTotalMass };
   MassKind mass_kind = MassKind::kDensity;
   double mass_value = 0.0;  // kg/m², kg per node, or kg
   SpringsSpec springs;
   FiniteVolumeSpec finite_volume;
+  std::vector<SpringLineSpec> lines;
   Location where;
 };
 
-// A set of nodes, as written under `nodes:` in `fixed` and `loads.forces`.
-struct NodeSelector {
-  enum class Kind { kEdge, kCorner, kIds, kIj, kBox, kWithin, kAll };
-  Kind kind = Kind::kAll;
-  std::string name;  // edge: top|bottom|left|right; corner: top-left|top-right|bottom-left|...
-  std::vector<int> ids;
-  std::vector<std::array<int, 2>> ij;
-  Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // box
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();                              // within
-  double radius = 0.0;                                                           // within
+// A region (`regions:`): material values overriding the scene's material for the selected nodes
+// (src/model/regions.h). Only what is given overrides; a later region overrides an earlier one.
+struct RegionSpec {
+  NodeSelector nodes;
+  std::optional<double> density;                // kg/m² (material.density)
+  std::map<std::string, double> finite_volume;  // E_warp, E_weft, nu_warp, nu_weft, G, D_* (SI)
+  SpringFamilySpec structural, shear, flexion;  // present when given
+  std::optional<bool> tension_only;
+  std::map<std::string, Location> given;  // each key written, with where its value is
   Location where;
 };
 
@@ -202,6 +229,7 @@ struct Scene {
   int dimension = 3;
   MeshSpec mesh;
   MaterialSpec material;
+  std::vector<RegionSpec> regions;
   std::vector<FixedSpec> fixed;
   LoadsSpec loads;
   std::vector<ObstacleSpec> obstacles;

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "src/scene/fabric_parameters.h"
+#include "src/scene/material_keys.h"
 #include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
 #include "src/scene/yaml_overrides.h"
@@ -310,6 +311,7 @@ SpringsSpec ReadSprings(const YamlValue& value) {
   const YamlMap map(
       value, {"structural", "shear", "flexion", "rest_length", "tension_only", "stretch_limit"});
   SpringsSpec springs;
+  springs.present = true;
   springs.where = value.where;
   if (const auto v = map.Find("structural")) springs.structural = ReadFamily(*v);
   if (const auto v = map.Find("shear")) springs.shear = ReadFamily(*v);
@@ -500,30 +502,55 @@ ArealDensity ReadFiniteVolumeMass(const YamlMap& map, MaterialSpec* material) {
   return {material->mass_value, ""};
 }
 
+NodeSelector ReadSelector(const YamlValue& value);
+
+// material.lines: [{nodes: <selection>, structural: N/m, tension_only: bool}, ...].
+std::vector<SpringLineSpec> ReadLines(const YamlValue& value) {
+  if (!value.get().IsSequence() && !value.get().IsNull()) {
+    Fail(value, "expected a list of spring lines (- nodes: ..., structural: N/m), got " +
+                    Describe(value.get()));
+  }
+  std::vector<SpringLineSpec> lines;
+  for (const auto& item : ReadList(value)) {
+    const YamlMap map(item, {"nodes", "structural", "tension_only"});
+    SpringLineSpec line;
+    line.where = item.where;
+    line.nodes = ReadSelector(map.Get("nodes"));
+    line.stiffness = ReadPositive(map.Get("structural"));
+    if (const auto v = map.Find("tension_only")) line.tension_only = ReadBool(*v);
+    lines.push_back(line);
+  }
+  return lines;
+}
+
 MaterialSpec ReadMaterial(const YamlValue& value) {
-  const YamlMap map(value,
-                    {"model", "density", "node_mass", "total_mass", "springs", "finite_volume"});
+  const YamlMap map(
+      value, {"model", "density", "node_mass", "total_mass", "springs", "finite_volume", "lines"});
   MaterialSpec material;
   material.where = value.where;
   if (const auto model = map.Find("model")) {
     material.model = ReadChoice(*model, {"springs", "finite_volume"});
   }
-  const bool springs = material.model == "springs";
-  const std::string own = springs ? "springs" : "finite_volume";
-  const std::string other = springs ? "finite_volume" : "springs";
-  if (springs) ReadMass(map, &material);
-  if (map.Has(other)) {
-    throw InputError(map.KeyLocation(other), "'" + other +
-                                                 "' applies only when material.model "
-                                                 "is " +
-                                                 other + " (here it is " + own + ")");
-  }
-  if (springs) {
+  if (material.model == "springs") {
+    ReadMass(map, &material);
+    if (map.Has("finite_volume")) {
+      throw InputError(map.KeyLocation("finite_volume"),
+                       "'finite_volume' applies only when material.model is finite_volume (here "
+                       "it is springs; springs may be added beside a finite_volume material)");
+    }
     material.springs = ReadSprings(map.Get("springs"));
   } else {
     const ArealDensity density = ReadFiniteVolumeMass(map, &material);
     material.finite_volume = ReadFiniteVolume(map.Get("finite_volume"), density);
+    if (const auto springs = map.Find("springs")) {
+      material.springs = ReadSprings(*springs);
+      if (material.springs.stretch_limit) {
+        throw InputError(YamlMap(*springs).KeyLocation("stretch_limit"),
+                         "'stretch_limit' applies only when material.model is springs");
+      }
+    }
   }
+  if (const auto lines = map.Find("lines")) material.lines = ReadLines(*lines);
   return material;
 }
 
@@ -554,6 +581,9 @@ void ReadSelectorKind(const std::string& kind, const YamlValue& value, NodeSelec
     if (!value.get().IsSequence())
       Fail(value, "expected a list of [i, j] pairs, got " + Describe(value.get()));
     for (const auto& item : ReadList(value)) selector->ij.push_back(ReadIj(item));
+  } else if (kind == "row" || kind == "column") {
+    selector->kind = kind == "row" ? NodeSelector::Kind::kRow : NodeSelector::Kind::kColumn;
+    selector->index = ReadIntAtLeast(value, 0);
   } else if (kind == "box") {
     selector->kind = NodeSelector::Kind::kBox;
     const YamlMap box(value, {"min", "max"});
@@ -562,8 +592,8 @@ void ReadSelectorKind(const std::string& kind, const YamlValue& value, NodeSelec
     if ((selector->min.array() > selector->max.array()).any()) {
       Fail(box.Get("max"), "max must be at least min in every coordinate");
     }
-  } else if (kind == "within") {
-    selector->kind = NodeSelector::Kind::kWithin;
+  } else if (kind == "within" || kind == "outside") {
+    selector->kind = kind == "within" ? NodeSelector::Kind::kWithin : NodeSelector::Kind::kOutside;
     const YamlMap within(value, {"center", "radius"});
     selector->center = ReadVector3(within.Get("center"));
     selector->radius = ReadPositive(within.Get("radius"));
@@ -574,8 +604,8 @@ void ReadSelectorKind(const std::string& kind, const YamlValue& value, NodeSelec
 }
 
 NodeSelector ReadSelector(const YamlValue& value) {
-  static const std::vector<std::string> kinds = {"edge", "corner", "ids", "ij",
-                                                 "box",  "within", "all"};
+  static const std::vector<std::string> kinds = {"edge",   "corner", "ids",    "ij",      "row",
+                                                 "column", "box",    "within", "outside", "all"};
   if (!value.get().IsMap()) {
     Fail(value, "expected a node selection such as {edge: top} or {ids: [0, 3]}, got " +
                     Describe(value.get()));
@@ -592,6 +622,80 @@ NodeSelector ReadSelector(const YamlValue& value) {
   selector.where = kind_value.where;
   ReadSelectorKind(keys[0], kind_value, &selector);
   return selector;
+}
+
+// ------------------------------------------------------------------------------- regions
+
+// The spring keys a region may give need material.springs; the finite-volume ones a
+// finite_volume material; density a material given by density.
+void CheckRegionKeyApplies(const YamlMap& map, const std::string& key,
+                           const MaterialSpec& material) {
+  const bool fv_key = key != "density" && key != "structural" && key != "shear" &&
+                      key != "flexion" && key != "tension_only" && key != "nodes";
+  if (key == "density" && material.mass_kind != MaterialSpec::MassKind::kDensity) {
+    throw InputError(map.KeyLocation(key),
+                     "a region's density needs the material's mass as density (kg/m²)");
+  }
+  if (fv_key && material.model != "finite_volume") {
+    throw InputError(map.KeyLocation(key),
+                     "'" + key + "' applies only when material.model is finite_volume");
+  }
+  const bool spring_key =
+      key == "structural" || key == "shear" || key == "flexion" || key == "tension_only";
+  if (spring_key && !material.springs.present) {
+    throw InputError(map.KeyLocation(key), "'" + key + "' needs material.springs");
+  }
+}
+
+void ReadRegionKey(const std::string& key, const YamlValue& value, RegionSpec* region) {
+  region->given[key] = value.where;
+  if (key == "density") region->density = ReadPositive(value);
+  if (key == "structural") region->structural = ReadFamily(value);
+  if (key == "shear") region->shear = ReadFamily(value);
+  if (key == "flexion") region->flexion = ReadFamily(value);
+  if (key == "tension_only") region->tension_only = ReadBool(value);
+  for (const FiniteVolumeKey& fv : FiniteVolumeKeys()) {
+    if (fv.key != key) continue;
+    switch (fv.range) {
+      case FiniteVolumeKey::Range::kPositive:
+        region->finite_volume[key] = ReadPositive(value);
+        break;
+      case FiniteVolumeKey::Range::kNonNegative:
+        region->finite_volume[key] = ReadNonNegative(value);
+        break;
+      case FiniteVolumeKey::Range::kAny:
+        region->finite_volume[key] = ReadNumber(value);
+        break;
+    }
+  }
+}
+
+std::vector<RegionSpec> ReadRegions(const YamlValue& value, const MaterialSpec& material) {
+  if (!value.get().IsSequence() && !value.get().IsNull()) {
+    Fail(value,
+         "expected a list of regions (- nodes: ..., D_warp: ...), got " + Describe(value.get()));
+  }
+  std::vector<std::string> keys = {"nodes", "density", "structural",
+                                   "shear", "flexion", "tension_only"};
+  for (const FiniteVolumeKey& fv : FiniteVolumeKeys()) keys.push_back(fv.key);
+  std::vector<RegionSpec> regions;
+  for (const auto& item : ReadList(value)) {
+    const YamlMap map(item, keys);
+    RegionSpec region;
+    region.where = item.where;
+    region.nodes = ReadSelector(map.Get("nodes"));
+    for (const std::string& key : map.Keys()) {
+      if (key == "nodes") continue;
+      CheckRegionKeyApplies(map, key, material);
+      ReadRegionKey(key, map.Get(key), &region);
+    }
+    if (region.given.empty()) {
+      Fail(item, "the region overrides nothing: give one or more of " +
+                     JoinNames(std::vector<std::string>(keys.begin() + 1, keys.end())));
+    }
+    regions.push_back(region);
+  }
+  return regions;
 }
 
 // --------------------------------------------------------------------------- fixed, loads
@@ -870,8 +974,8 @@ YamlValue OptionalSection(const YamlMap& top, const std::string& key) {
 }
 
 void ReadScene(const YamlValue& root, Scene* scene) {
-  const YamlMap top(root, {"name", "dimension", "mesh", "material", "fixed", "loads", "obstacles",
-                           "contact", "solver", "output"});
+  const YamlMap top(root, {"name", "dimension", "mesh", "material", "regions", "fixed", "loads",
+                           "obstacles", "contact", "solver", "output"});
   if (const auto name = top.Find("name")) scene->name = ReadName(*name);
   if (const auto dimension = top.Find("dimension")) {
     scene->dimension = ReadInt(*dimension);
@@ -881,6 +985,7 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   }
   scene->mesh = ReadMesh(top.Get("mesh"), scene->directory);
   scene->material = ReadMaterial(top.Get("material"));
+  if (const auto v = top.Find("regions")) scene->regions = ReadRegions(*v, scene->material);
   if (const auto v = top.Find("fixed")) scene->fixed = ReadFixed(*v);
   if (const auto v = top.Find("loads")) scene->loads = ReadLoads(*v);
   if (const auto v = top.Find("obstacles")) scene->obstacles = ReadObstacles(*v);

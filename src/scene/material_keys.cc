@@ -1,0 +1,19 @@
+#include "src/scene/material_keys.h"
+
+namespace drape {
+
+const std::vector<FiniteVolumeKey>& FiniteVolumeKeys() {
+  using Range = FiniteVolumeKey::Range;
+  static const std::vector<FiniteVolumeKey> keys = {
+      {"E_warp", &FiniteVolumeSpec::E_warp, Range::kPositive, "N/m"},
+      {"E_weft", &FiniteVolumeSpec::E_weft, Range::kPositive, "N/m"},
+      {"nu_warp", &FiniteVolumeSpec::nu_warp, Range::kAny, "1"},
+      {"nu_weft", &FiniteVolumeSpec::nu_weft, Range::kAny, "1"},
+      {"G", &FiniteVolumeSpec::G, Range::kNonNegative, "N/m"},
+      {"D_warp", &FiniteVolumeSpec::D_warp, Range::kNonNegative, "N*m"},
+      {"D_weft", &FiniteVolumeSpec::D_weft, Range::kNonNegative, "N*m"},
+      {"D_12", &FiniteVolumeSpec::D_12, Range::kAny, "N*m"}};
+  return keys;
+}
+
+}  // namespace drape

@@ -1,0 +1,27 @@
+// The finite-volume material's SI values by key (E_warp, E_weft, nu_warp, nu_weft, G, D_warp,
+// D_weft, D_12): one list for the loader (material.finite_volume and regions), the scene.yaml
+// writer and the regions' overrides (src/model/regions.h).
+#ifndef DRAPE_SRC_SCENE_MATERIAL_KEYS_H_
+#define DRAPE_SRC_SCENE_MATERIAL_KEYS_H_
+
+#include <string>
+#include <vector>
+
+#include "src/scene/scene.h"
+
+namespace drape {
+
+struct FiniteVolumeKey {
+  std::string key;
+  double FiniteVolumeSpec::*member;
+  enum class Range { kPositive, kNonNegative, kAny };
+  Range range;  // what a region may give (the material's own keys are read as before)
+  std::string unit;
+};
+
+// In the order scene.yaml writes them.
+const std::vector<FiniteVolumeKey>& FiniteVolumeKeys();
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_SCENE_MATERIAL_KEYS_H_
