@@ -18,19 +18,21 @@
 //
 // Projection (StagedProjection, for the projected-Newton matrix H₊): a term whose exact local
 // Hessian is positive semidefinite (LDLᵀ, to 1e-12 of its largest entry) gives it unchanged.
-// Otherwise the same chain-rule sum is formed again with each small curvature block made
-// semidefinite on its own (psd_projection.h: negative eigenvalues clamped to zero, or replaced by
-// their magnitudes): the Gauss–Newton part Jᵀ J stays as it is (it is semidefinite), and
-//   FvBending: the two sections' Σ c_i ∇²y_i (6×6 each), the binormals' Σ g ∇²k (6×6 over their
-//              relative coordinates) and the tangents' Σ g ∇²t (3×3);
-//   FvBendingEdge: the binormal's Σ g ∇²k (6×6);
-//   FvMembrane: ∇²φ over the Gram entries (3×3) and M (2×2, the Gram entries' own curvature).
-// A sum of semidefinite blocks mapped by linear maps is semidefinite, and as each block only gains
-// (B₊ − B ⪰ 0), H₊ − H ⪰ 0 too. This replaces one 15×15 (9×9) eigen-decomposition of the whole
-// local Hessian by a few of size ≤ 6; H₊ is then not the nearest semidefinite matrix to H, but a
-// larger one (a compressed membrane arm of axial stiffness k keeps k·l/|u| > k along itself, where
-// the whole term's projection would keep k). tests/fv_*_test.cc check both properties and that H₊ =
-// H where H is semidefinite.
+// Otherwise:
+//   FvMembrane, FvBendingEdge: the chain-rule sum is formed again with the Gauss–Newton part kept
+//     as it is (it is semidefinite) and each small curvature block made semidefinite on its own
+//     (psd_projection.h: negative eigenvalues clamped to zero, or replaced by their magnitudes):
+//     FvMembrane: ∇²φ over the Gram entries (3×3) and M (2×2, the Gram entries' own curvature);
+//     FvBendingEdge: the binormal's Σ g ∇²k (6×6). A sum of semidefinite blocks mapped by linear
+//     maps is semidefinite, and as each block only gains (B₊ − B ⪰ 0), H₊ − H ⪰ 0 too. H₊ is then
+//     not the nearest semidefinite matrix to H but a larger one (a compressed membrane arm of
+//     axial stiffness k keeps k·l/|u| > k along itself, where the whole term's projection would
+//     keep k); it replaces a 9×9 eigen-decomposition by a 3×3 and a 2×2 one.
+//   FvBending: the whole 15×15 local Hessian is projected (the nearest semidefinite matrix). The
+//     same block-wise construction (two 6×6 sections, two 6×6 binormals, two 3×3 tangents) was
+//     measured no cheaper than one 15×15 decomposition (docs/benchmarks.md).
+// tests/term_checks.h (ExpectStagedProjectionValid) checks H₊ ⪰ 0, H₊ − H ⪰ 0, translations in its
+// null space and H₊ = H where H ⪰ 0, for every finite-volume functor on every derivative check.
 //
 // FastHessian<Functor>::kAvailable says whether a functor has such a path (src/model/term.h uses
 // it in place of the nested Jets).
@@ -189,6 +191,7 @@ struct NodeDerivatives {
 //   ∇²E = Jᵀ J  +  ∂Qᵀ (Σ_i c_i ∇²y_i) ∂Q  +  Σ_j g_Q,j ∇²Q_j,   J = L ∂y/∂Q ∂Q/∂x, c = Lᵀ r,
 // a Gauss–Newton part (semidefinite by construction) and six small curvature blocks: two sections
 // (6×6 over (k, t)), two binormals (6×6 over their relative coordinates), two tangents (3×3).
+// Its projection is that of the whole 15×15 matrix (see "Projection" above).
 template <>
 struct FastHessian<FvBending> {
   static constexpr bool kAvailable = true;
@@ -248,21 +251,10 @@ struct FastHessian<FvBending> {
     *energy = 0.5 * r.squaredNorm();
     const bool finite =
         std::isfinite(*energy) && full_gradient.allFinite() && full_hessian.allFinite();
-    if (finite && projection) {
+    if (finite && projection) {  // the whole 15×15 matrix (see "Projection" above)
       Eigen::Map<Nodes::Hessian> projected(projection->hessian);
-      projection->changed = !IsSemidefinite(Nodes::Hessian(full_hessian));
-      if (!projection->changed) {
-        projected = full_hessian;
-      } else {
-        const EigenvalueFilter filter = projection->filter;
-        ProjectSymmetric(filter, &curvatures.section1);
-        ProjectSymmetric(filter, &curvatures.section2);
-        ProjectSymmetric(filter, &curvatures.k1);
-        ProjectSymmetric(filter, &curvatures.k2);
-        ProjectSymmetric(filter, &curvatures.t1);
-        ProjectSymmetric(filter, &curvatures.t2);
-        projected = Combine(dq, gauss_newton, curvatures);
-      }
+      projected = full_hessian;
+      projection->changed = ProjectSymmetric<15>(projection->filter, 15, projection->hessian);
     }
     return finite;
   }
@@ -392,9 +384,9 @@ struct FastHessian<FvMembrane> {
       } else {
         ProjectSymmetric(projection->filter, &h_q);
         ProjectSymmetric(projection->filter, &m);
-        Nodes::Hessian sum = Nodes::Hessian::Zero();
-        Nodes::AddRelativeToCentre(Relative(j, h_q, m), 1, 0, 2, &sum);
-        projected = sum;
+        Nodes::Hessian stand_in = Nodes::Hessian::Zero();
+        Nodes::AddRelativeToCentre(Relative(j, h_q, m), 1, 0, 2, &stand_in);
+        projected = stand_in;
       }
     }
     return finite;
