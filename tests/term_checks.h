@@ -84,7 +84,9 @@ inline bool ExpectStagedProjectionValid(const Term& term, const std::vector<doub
     EXPECT_FALSE(changed);
     EXPECT_TRUE(projected == hessian);
   }
-  if (least < -1e-9 * scale) EXPECT_TRUE(changed);
+  if (least < -1e-9 * scale) {
+    EXPECT_TRUE(changed);
+  }
   return changed;
 }
 
