@@ -1,7 +1,9 @@
 // The `drape` command, run as a process (DRAPE_BINARY): subcommands, exit status, what is written
 // and what is not.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>
@@ -15,6 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "src/output/json.h"
+#include "src/output/version.h"
+#include "src/scene/fabric_parameters.h"
 #include "src/solvers/solver.h"
 
 namespace drape {
@@ -136,6 +141,121 @@ TEST_F(CliTest, HelpExitsZero) {
   }
 }
 
+// Every command has --help (its options, with defaults where they have one) on stdout, exit 0.
+TEST_F(CliTest, EveryCommandHasHelpThatExitsZero) {
+  for (const char* command : {"solve", "check", "solvers", "compare", "fit"}) {
+    const Outcome outcome = Drape({command, "--help"});
+    EXPECT_EQ(outcome.exit_status, 0) << command << outcome.err;
+    EXPECT_NE(outcome.out.find(std::string("Usage: drape ") + command), std::string::npos)
+        << outcome.out;
+    EXPECT_EQ(outcome.err, "") << command;
+  }
+  const Outcome compare = Drape({"compare", "-h"});
+  EXPECT_NE(compare.out.find("--repeat"), std::string::npos) << compare.out;
+  EXPECT_NE(compare.out.find("=60"), std::string::npos) << "the --time-limit default";
+  EXPECT_NE(Drape({"fit", "--help"}).out.find("--set"), std::string::npos);
+}
+
+TEST_F(CliTest, VersionExitsZeroWithTheProjectVersion) {
+  const Outcome outcome = Drape({"--version"});
+  EXPECT_EQ(outcome.exit_status, 0) << outcome.err;
+  EXPECT_EQ(outcome.out, "drape " + DrapeVersion() + "\n");
+  EXPECT_EQ(outcome.out.rfind("drape 0.", 0), 0u) << outcome.out;
+}
+
+// `--` ends the options: a scene file whose name starts with a dash.
+TEST_F(CliTest, DoubleDashBeforeAFileNameStartingWithADash) {
+  const fs::path dashed = directory_ / "-scene.yaml";
+  fs::copy_file(WriteScene(), dashed);
+  const fs::path previous = fs::current_path();
+  fs::current_path(directory_);
+  const Outcome outcome = Drape({"check", "--set", "mesh.nodes=6", "--", "-scene.yaml"});
+  const Outcome without = Drape({"check", "-scene.yaml"});
+  fs::current_path(previous);
+  EXPECT_EQ(outcome.exit_status, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("6 nodes"), std::string::npos) << outcome.out;
+  EXPECT_EQ(without.exit_status, 2);
+}
+
+// compare: the result line on stdout, the progress on stderr.
+TEST_F(CliTest, CompareWritesItsResultLineToStdout) {
+  const fs::path report = directory_ / "report";
+  const Outcome outcome = Drape({"compare", WriteScene(), "--solvers", "ceres-lbfgs", "--out",
+                                 report.string(), "--no-plots"});
+  ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
+  EXPECT_EQ(outcome.out, "report: " + (report / "report.md").string() + "\n");
+  EXPECT_NE(outcome.err.find("ceres-lbfgs"), std::string::npos) << outcome.err;
+}
+
+// fit --set: applied to the fit's scene (a bad key is found, located at the override, before any
+// solve).
+TEST_F(CliTest, FitTakesSceneOverrides) {
+  const std::string scene = WriteScene();
+  std::ofstream(directory_ / "measured.csv") << "id,x,y,z\n2,0,0,-0.1\n";
+  std::ofstream(directory_ / "fit.yaml")
+      << "scene: scene.yaml\nparameters:\n  - {key: material.springs.structural, initial: 50, "
+         "bounds: [1, 1000], log: true}\nmeasurements:\n  - positions: {file: measured.csv}\n";
+  const std::string fit = (directory_ / "fit.yaml").string();
+  const Outcome bad = Drape({"fit", fit, "--set", "material.springs.bogus=1"});
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_NE(bad.err.find("--set:1:"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("bogus"), std::string::npos) << bad.err;
+  const Outcome check = Drape({"fit", fit, "--set", "mesh.nodes=2", "--out", out_.string()});
+  EXPECT_EQ(check.exit_status, 2) << "node 2 is not in a 2-node chain: " << check.err;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+// summary.json and scene.yaml say how the result was made: version, command line, overrides,
+// and the scene as solved.
+TEST_F(CliTest, ResultFolderRecordsItsProvenance) {
+  const std::string scene = WriteScene();
+  const Outcome outcome =
+      Drape({"solve", scene, "--set", "mesh.nodes=7", "--set", "material.springs.structural=60"});
+  ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
+  const YAML::Node summary = Summary(out_);
+  EXPECT_EQ(summary["format_version"].as<int>(), 2);
+  EXPECT_EQ(summary["drape_version"].as<std::string>(), DrapeVersion());
+  EXPECT_EQ(summary["command_line"].as<std::string>(),
+            "drape solve " + scene + " --set mesh.nodes=7 --set material.springs.structural=60");
+  EXPECT_EQ(summary["overrides"].as<std::vector<std::string>>(),
+            (std::vector<std::string>{"mesh.nodes=7", "material.springs.structural=60"}));
+  EXPECT_EQ(summary["material_si"]["model"].as<std::string>(), "springs");
+  EXPECT_EQ(summary["material_si"]["node_mass"].as<double>(), 0.01);
+  EXPECT_EQ(summary["material_si"]["structural.warp"].as<double>(), 60.0);
+  EXPECT_EQ(summary["material_si"]["units"]["structural.warp"].as<std::string>(), "N/m");
+  const YAML::Node solved = YAML::LoadFile((out_ / "scene.yaml").string());
+  EXPECT_EQ(solved["mesh"]["nodes"].as<int>(), 7);
+  EXPECT_EQ(solved["material"]["springs"]["structural"]["warp"].as<double>(), 60.0);
+  EXPECT_EQ(solved["solver"]["method"].as<std::string>(), "ceres-lbfgs");
+  // Solving the written scene again gives the same nodes.
+  const Outcome again =
+      Drape({"solve", (out_ / "scene.yaml").string(), "--out", (directory_ / "again").string()});
+  ASSERT_EQ(again.exit_status, 0) << again.err;
+  EXPECT_EQ(ReadFile(directory_ / "again" / "nodes.csv"), ReadFile(out_ / "nodes.csv"));
+}
+
+// KES inputs: summary.json and `drape check` give the SI values they were converted to.
+TEST_F(CliTest, KesInputsAreReportedInSiUnits) {
+  const std::string scene =
+      std::string(DRAPE_SOURCE_DIR) + "/configs/fv/drape_tester_cotton_24.yaml";
+  const Outcome check = Drape({"check", scene, "--set", "material.finite_volume.kes.B_warp=0.2"});
+  ASSERT_EQ(check.exit_status, 0) << check.err;
+  EXPECT_NE(check.out.find("D_warp " + FormatNumber(KesBendingRigidity(0.2), 6) + " N*m"),
+            std::string::npos)
+      << check.out;
+  EXPECT_NE(check.out.find("density " + FormatNumber(KesArealDensity(12.0), 6) + " kg/m^2"),
+            std::string::npos)
+      << check.out;
+  const Outcome solve = Drape({"solve", scene, "--out", out_.string(), "--set",
+                               "solver.max_iterations=1", "--set", "mesh.spacing=0.03"});
+  ASSERT_NE(solve.exit_status, 2) << solve.err;
+  const YAML::Node material = Summary(out_)["material_si"];
+  EXPECT_EQ(material["D_warp"].as<double>(), KesBendingRigidity(0.12));
+  EXPECT_EQ(material["G"].as<double>(), KesShearRigidity(0.9));
+  EXPECT_EQ(material["E_weft"].as<double>(), KesTensileRigidity(7.0, 0.70));
+  EXPECT_EQ(material["density"].as<double>(), KesArealDensity(12.0));
+}
+
 TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {
   const std::string scene = WriteScene();
   const std::vector<std::vector<std::string>> mistakes = {
@@ -147,6 +267,9 @@ TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {
       {"solve", scene, scene},
       {"check", scene, "--out", out_.string()},
       {"solvers", "extra"},
+      {"compare", scene, "--repeat", "many"},
+      {"compare", scene, "--time-limit", "inf"},
+      {"fit", scene, "--solver", "newton"},
   };
   for (const auto& args : mistakes) {
     const Outcome outcome = Drape(args);
@@ -367,6 +490,27 @@ TEST_F(CliTest, StabilityIsOnTheResultLineAndASaddleExitsThree) {
   const YAML::Node summary = Summary(directory_ / "curtain");
   EXPECT_TRUE(summary["saddle"].as<bool>());
   EXPECT_LT(summary["min_eigenvalue"].as<double>(), 0.0);
+}
+
+// A second run into a folder another run holds is refused before it solves (exit 2, "nothing
+// solved"), and the holder's files are untouched. Before, the lock covered only the writing: the
+// second run solved in full, then failed to write ("cannot write the results").
+TEST_F(CliTest, ASecondRunIntoAHeldFolderIsRefusedBeforeItSolves) {
+  fs::create_directories(out_);
+  std::ofstream(out_ / "summary.json") << "{\"scene\": \"the other run\"}\n";
+  const int other = ::open((out_ / ".drape.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(other, 0);
+  ASSERT_EQ(::flock(other, LOCK_EX | LOCK_NB), 0);  // as the other run holds it
+  const Outcome refused = Drape({"solve", WriteScene()});
+  ::close(other);
+  EXPECT_EQ(refused.exit_status, 2);
+  EXPECT_NE(refused.err.find("another drape run"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("nothing solved"), std::string::npos) << refused.err;
+  EXPECT_EQ(refused.out, "");
+  EXPECT_EQ(Summary(out_)["scene"].as<std::string>(), "the other run");
+  EXPECT_FALSE(fs::exists(out_ / "nodes.csv"));
+  const Outcome after = Drape({"solve", WriteScene()});  // the lock released: a run goes through
+  EXPECT_EQ(after.exit_status, 0) << after.err;
 }
 
 }  // namespace

@@ -21,17 +21,19 @@ namespace {
 
 ObstacleSpec Sphere(const Eigen::Vector3d& center, double radius) {
   ObstacleSpec sphere;
-  sphere.kind = ObstacleSpec::Kind::kSphere;
+  sphere.kind = "sphere";
   sphere.center = center;
   sphere.radius = radius;
+  sphere.given = {{"center", {}}, {"radius", {}}};
   return sphere;
 }
 
 ObstacleSpec Floor(double z) {
   ObstacleSpec plane;
-  plane.kind = ObstacleSpec::Kind::kPlane;
+  plane.kind = "plane";
   plane.center = {0, 0, z};
   plane.normal = {0, 0, 1};
+  plane.given = {{"point", {}}, {"normal", {}}};
   return plane;
 }
 
@@ -76,8 +78,9 @@ TEST(Contact, AnchoredFabricMeetsOnlyObstaclesWithinReach) {
   EXPECT_EQ(CountType(model, "plane_contact"), 23);
   model.terms.clear();
   ObstacleSpec pin;
-  pin.kind = ObstacleSpec::Kind::kPin;
+  pin.kind = "pin";
   pin.center = {0.1, 0.1, -0.01};
+  pin.given = {{"position", {}}};
   AddContactTerms({pin}, ContactSpec{}, &model);
   EXPECT_EQ(CountType(model, "pin_contact"), 23);
 }
@@ -168,10 +171,10 @@ TEST(ObstacleStepLimit, StopsANodeBeforeItJumpsOverAPinOrThroughADiskOrAPlane) {
   model.num_nodes = 1;
   model.contact.thickness = 0.001;
   ObstacleSpec pin;
-  pin.kind = ObstacleSpec::Kind::kPin;
+  pin.kind = "pin";
   pin.center = {0, 0, 0};
   ObstacleSpec disk = pin;
-  disk.kind = ObstacleSpec::Kind::kDisk;
+  disk.kind = "disk";
   disk.radius = 0.001;
   for (const ObstacleSpec& obstacle : {pin, disk, Floor(0.0)}) {
     model.obstacles = {obstacle};
@@ -190,13 +193,34 @@ TEST(ObstacleStepLimit, StopsANodeBeforeItJumpsOverAPinOrThroughADiskOrAPlane) {
 }
 
 // A square sheet dropped from rest onto a pin or a 1 mm disk under its centre (held in x and y
-// only, resting on the clearance layer) with every solver that accepts obstacles: it ends resting
-// on them, the centre node held up in the clearance layer. Newton and nlopt-lbfgs used to step
-// through and run away (z = −2.7e11 m).
+// only, resting on the clearance layer) with every solver that accepts obstacles (the puiseux
+// methods refuse contact terms): it ends resting on them, the centre node held up in the clearance
+// layer. Newton and nlopt-lbfgs used to step through and run away (z = −2.7e11 m); explicit-euler,
+// whose default step left out the contact's stiffness, was flung off the pin (0 nodes in contact
+// after 30,000 steps, residual 31); with it, it settles in ~124,000 steps (its default limit,
+// 200,000, is what the test allows).
+//
+// Three methods cannot finish this scene, and the test asserts their honest outcome instead: the
+// sheet resting on the obstacle, nothing passed through, the state sound, "converged no".
+// ceres-lm and ceres-dogleg: their Gauss–Newton model has no geometric stiffness, the stiffness of
+// the hanging sheet, so they creep (measured: relative residual 1.09 after 3,000 iterations, 0.22
+// after 30,000, falling by ~7 % per 1,000; the tolerance 1e-6 would take ~2e5 iterations).
+// nlopt-mma: 0.005 (pin) and 0.015 (disk) after 30,000 evaluations. nlopt-slsqp found no lower
+// energy than the start until its first step was scaled to the mesh (src/solvers/solver_nlopt.cc):
+// it now converges in ~750 evaluations.
 class DropOntoThinObstacle : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {
 };
 
+bool GaussNewton(const std::string& method) {
+  return method == "ceres-lm" || method == "ceres-dogleg";
+}
+bool CannotFinish(const std::string& method) {
+  return GaussNewton(method) || method == "nlopt-mma";
+}
+
 Scene DropScene(const std::string& obstacle, const std::string& method) {
+  const std::string iterations =
+      CannotFinish(method) ? "2000" : (method == "explicit-euler" ? "200000" : "30000");
   const std::string text = R"(name: drop
 mesh:
   kind: grid
@@ -219,7 +243,8 @@ loads:
 solver:
   method: )" + method + R"(
   tolerance: 1.0e-6
-  max_iterations: 30000
+  max_iterations: )" + iterations +
+                           R"(
   time_limit: 60
 )";
   const std::filesystem::path path =
@@ -240,18 +265,32 @@ TEST_P(DropOntoThinObstacle, RestsOnIt) {
   const double z = model.positions[3 * centre + 2];
   EXPECT_GT(z, -0.001);  // above the pin or the disk (both at z = −1 mm)
   for (double x : model.positions) EXPECT_LT(std::abs(x), 1.0);
-  // The damped motion does not settle in 30,000 steps (the sheet still swings about the pin):
-  // only that it has not passed through.
-  if (method == "explicit-euler") return;
-  EXPECT_LT(z, 0.0);  // resting in the clearance layer
-  EXPECT_TRUE(result.converged) << result.summary.termination;
-  // The flat sheet balanced on the pin is an equilibrium, a saddle: the L-BFGS methods, with no
-  // curvature information, may stop there (and the certificate says so); newton goes on to the
-  // minimum, the sheet hanging from the pin.
-  if (method == "newton") EXPECT_TRUE(result.stability.stable);
-  // The obstacle carries the whole weight.
   double weight = 0.0;
   for (int node = 0; node < model.num_nodes; ++node) weight += model.applied[3 * node + 2];
+  if (CannotFinish(method)) {  // the honest outcome (see above)
+    EXPECT_FALSE(result.converged);
+    EXPECT_FALSE(result.summary.termination.empty());
+    if (GaussNewton(method)) {
+      EXPECT_NE(result.summary.termination.find("iteration limit"), std::string::npos)
+          << result.summary.termination;
+    }
+    EXPECT_LT(z, 0.0);                                             // resting in the clearance layer
+    EXPECT_GT(result.certificate.contact_sum.z(), -0.5 * weight);  // most of the weight
+    return;
+  }
+  EXPECT_LT(z, 0.0);  // resting in the clearance layer
+  EXPECT_TRUE(result.converged) << result.summary.termination;
+  // The flat sheet balanced on the pin is an equilibrium, a saddle: the methods without curvature
+  // information may stop there, and then the certificate says so (exit status 3); newton goes on
+  // to the minimum, the sheet hanging from the pin.
+  ASSERT_TRUE(result.stability.computed);
+  if (method == "newton") {
+    EXPECT_TRUE(result.stability.stable);
+  }
+  if (!result.stability.stable) {
+    EXPECT_TRUE(result.Saddle());
+  }
+  // The obstacle carries the whole weight.
   EXPECT_NEAR(result.certificate.contact_sum.z(), -weight, 1e-4 * std::abs(weight));
 }
 
@@ -259,10 +298,12 @@ INSTANTIATE_TEST_SUITE_P(
     EveryMethodWithObstacles, DropOntoThinObstacle,
     ::testing::Combine(::testing::Values("pin: {position: [0, 0, -0.001]}",
                                          "disk: {center: [0, 0, -0.001], radius: 0.001}"),
-                       ::testing::Values("newton", "ceres-lbfgs", "nlopt-lbfgs", "explicit-euler")),
-    [](const auto& info) {
+                       ::testing::Values("newton", "ceres-lbfgs", "ceres-lm", "ceres-dogleg",
+                                         "nlopt-lbfgs", "nlopt-tnewton", "nlopt-var2", "nlopt-mma",
+                                         "nlopt-slsqp", "explicit-euler")),
+    [](const auto& test) {
       std::string name =
-          std::string(std::get<0>(info.param)).substr(0, 3) + "_" + std::get<1>(info.param);
+          std::string(std::get<0>(test.param)).substr(0, 3) + "_" + std::get<1>(test.param);
       for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
       return name;
     });

@@ -244,7 +244,7 @@ TEST(CountFolds, OfAHandBuiltFoldedSkirt) {
 Scene SceneWithSupportDisc() {
   Scene scene;
   ObstacleSpec disk;
-  disk.kind = ObstacleSpec::Kind::kDisk;
+  disk.kind = "disk";
   disk.radius = 0.09;
   scene.obstacles.push_back(disk);
   return scene;

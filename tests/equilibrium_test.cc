@@ -108,7 +108,7 @@ TEST(Certificate, RefusesAStateThatIsNotFinite) {
 TEST(Certificate, RefusesANodeInsideAnObstacle) {
   Model model = HangingMass(0.1);
   ObstacleSpec floor;
-  floor.kind = ObstacleSpec::Kind::kPlane;
+  floor.kind = "plane";
   floor.center = {0, 0, -0.05};
   floor.normal = {0, 0, 1};
   model.obstacles = {floor};

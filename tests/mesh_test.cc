@@ -232,7 +232,9 @@ TEST(Mesh, CircleAreasAddUpToTheDisc) {
       for (size_t k = 0; k < mesh.nodes.size(); ++k) {
         EXPECT_GT(mesh.area[k], 0.0);
         EXPECT_LE(mesh.area[k], 2.0 * cell);
-        if (mesh.nodes[k].norm() < radius - 2.0 * spacing) EXPECT_NEAR(mesh.area[k], cell, 1e-15);
+        if (mesh.nodes[k].norm() < radius - 2.0 * spacing) {
+          EXPECT_NEAR(mesh.area[k], cell, 1e-15);
+        }
       }
     }
   }

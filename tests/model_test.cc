@@ -94,6 +94,20 @@ TEST(Model, DensityMassesSumToDensityTimesArea) {
   EXPECT_NEAR(model.mass[5 + 1], 4 * quarter, 1e-15);
 }
 
+// The run's time limit bounds the build of the model: past it, the build stops with a message
+// located at the solver section (before, only mesh.max_nodes bounded it: 695k nodes with
+// time_limit 5 took 114 s).
+TEST(Model, TheBuildStopsAtTheTimeLimit) {
+  Scene scene = Sheet(30, 30);
+  scene.solver.where = Location{"scene.yaml", 30, 1, "solver"};
+  scene.solver.time_limit = 1e-9;
+  const std::string error = ErrorOf(scene);
+  EXPECT_EQ(error.rfind("scene.yaml:30:1: solver: building the model took ", 0), 0u) << error;
+  EXPECT_NE(error.find("more than the time limit 1e-09 s"), std::string::npos) << error;
+  scene.solver.time_limit = 60.0;
+  EXPECT_EQ(BuildModel(scene).num_nodes, 900);
+}
+
 TEST(Model, ChainDensityIsPerMetre) {
   Scene scene;
   scene.mesh.kind = MeshSpec::Kind::kChain;

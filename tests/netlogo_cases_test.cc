@@ -63,7 +63,9 @@ TEST_P(NetlogoCoarse, ExplicitEulerAndNewtonAgree) {
   // ends at a stable minimum (issue 14). The triangular and arc discs fold in more than one way,
   // so the two methods may settle in different minima there.
   EXPECT_TRUE(newton.result.stability.stable) << newton.result.stability.min_eigenvalue;
-  if (std::abs(e1 - e2) > 1e-4 * std::abs(e2)) EXPECT_FALSE(c.unique_shape);
+  if (std::abs(e1 - e2) > 1e-4 * std::abs(e2)) {
+    EXPECT_FALSE(c.unique_shape);
+  }
   if (!c.unique_shape) return;
   double largest = 0.0;
   for (int node = 0; node < euler.model.num_nodes; ++node) {

@@ -102,5 +102,25 @@ TEST_F(ResultFolderTest, ASecondRunIntoAHeldFolderIsRefused) {
   EXPECT_NO_THROW(ResultFolder folder(directory_));
 }
 
+// The command takes the lock before it solves (src/cli/cli.cc); a run that then fails before
+// writing leaves no folder the lock created, and one that writes keeps it.
+TEST_F(ResultFolderTest, ALockTakenBeforeTheSolveRemovesTheFoldersItCreatedUnlessKept) {
+  const fs::path created = directory_ / "new", folder = created / "deeper";
+  {
+    ResultFolderLock lock(folder, /*remove_if_unused=*/true);
+    EXPECT_TRUE(fs::exists(folder / ".drape.lock"));
+  }
+  EXPECT_FALSE(fs::exists(created));
+  {
+    ResultFolderLock lock(folder, /*remove_if_unused=*/true);
+    lock.KeepFolder();
+  }
+  EXPECT_TRUE(fs::exists(folder));
+  {
+    ResultFolderLock lock(folder, /*remove_if_unused=*/true);  // existed: not removed
+  }
+  EXPECT_TRUE(fs::exists(folder));
+}
+
 }  // namespace
 }  // namespace drape

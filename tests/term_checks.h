@@ -129,9 +129,12 @@ inline void ExpectDerivativesMatchDifferences(const Term& term, std::vector<doub
     numeric_gradient[k] = (e_plus - e_minus) / (2 * h);
     for (int r = 0; r < n; ++r) numeric_hessian[r * n + k] = (g_plus[r] - g_minus[r]) / (2 * h);
   }
+  // The gradient's scale: its largest entry, but at least the change the step h makes in it (at
+  // a rest state the gradient is 0 and the differences are round-off of the energy).
   double g_scale = 1e-12, h_scale = 1e-12;
-  for (int k = 0; k < n; ++k) g_scale = std::max(g_scale, std::abs(gradient[k]));
   for (int k = 0; k < n * n; ++k) h_scale = std::max(h_scale, std::abs(hessian[k]));
+  g_scale = std::max(g_scale, h_scale * h);
+  for (int k = 0; k < n; ++k) g_scale = std::max(g_scale, std::abs(gradient[k]));
   for (int k = 0; k < n; ++k) {
     EXPECT_NEAR(gradient[k], numeric_gradient[k], tolerance * g_scale) << "gradient entry " << k;
   }

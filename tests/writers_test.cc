@@ -54,6 +54,12 @@ Model SmallSheet() {
   return model;
 }
 
+// WriteOutputs of a state already solved.
+void WriteReported(const Scene& scene, const Model& model, const RunResult& result,
+                   const std::string& directory) {
+  WriteOutputs(scene, model, ReportOf(scene, model, result), directory);
+}
+
 RunResult ResultOf(const Model& model) {
   RunResult result;
   result.certificate = ComputeCertificate(model, model.positions.data());
@@ -125,7 +131,7 @@ TEST_F(WritersTest, SummaryJsonReadsBackWithTheValuesOfTheResult) {
   const Model model = SmallSheet();
   const RunResult result = ResultOf(model);
   const Scene scene = SceneWriting({"summary"});
-  WriteOutputs(scene, model, result, directory_.string());
+  WriteReported(scene, model, result, directory_.string());
 
   const YAML::Node summary = YAML::LoadFile(Path("summary.json"));
   EXPECT_EQ(summary["scene"].as<std::string>(), scene.name);
@@ -151,7 +157,7 @@ TEST_F(WritersTest, SummaryJsonReadsBackWithTheValuesOfTheResult) {
   EXPECT_EQ(summary["min_eigenvalue"].as<double>(), -0.25);
   EXPECT_EQ(summary["tolerance"].as<double>(), 1e-9);
   EXPECT_EQ(summary["statistics"]["factorizations"].as<double>(), 7.0);
-  EXPECT_EQ(Files(), std::set<std::string>{"summary.json"});
+  EXPECT_EQ(Files(), (std::set<std::string>{"summary.json", "scene.yaml"}));
 }
 
 TEST_F(WritersTest, NonFiniteNumbersAndUnknownStabilityAreNull) {
@@ -160,7 +166,7 @@ TEST_F(WritersTest, NonFiniteNumbersAndUnknownStabilityAreNull) {
   result.summary.wall_time_s = NAN;
   result.certificate.energy = INFINITY;
   result.stability = Stability{};  // not computed
-  WriteOutputs(SceneWriting({"summary"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"summary"}), model, result, directory_.string());
 
   const YAML::Node summary = YAML::LoadFile(Path("summary.json"));
   EXPECT_TRUE(summary["wall_time_s"].IsNull());
@@ -173,30 +179,37 @@ TEST_F(WritersTest, NonFiniteNumbersAndUnknownStabilityAreNull) {
 TEST_F(WritersTest, NodesCsvHasOneFullPrecisionRowPerNode) {
   const Model model = SmallSheet();
   const RunResult result = ResultOf(model);
-  WriteOutputs(SceneWriting({"nodes"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"nodes"}), model, result, directory_.string());
 
   const auto lines = Lines(Path("nodes.csv"));
   ASSERT_EQ(lines.size(), 1u + model.num_nodes);
-  EXPECT_EQ(lines[0], "id,i,j,x,y,z,fixed,fx,fy,fz,contact_fx,contact_fy,contact_fz");
-  const std::vector<std::string> letters = {"z", "", "xyz", "xyz"};
+  EXPECT_EQ(lines[0],
+            "id,i,j,x_m,y_m,z_m,fixed_x,fixed_y,fixed_z,in_contact,reaction_x_N,reaction_y_N,"
+            "reaction_z_N,residual_x_N,residual_y_N,residual_z_N,contact_x_N,contact_y_N,"
+            "contact_z_N");
   for (int node = 0; node < model.num_nodes; ++node) {
     const auto fields = Fields(lines[node + 1]);
-    ASSERT_EQ(fields.size(), 13u) << lines[node + 1];
+    ASSERT_EQ(fields.size(), 19u) << lines[node + 1];
     EXPECT_EQ(std::stoi(fields[0]), node);
     EXPECT_EQ(std::stoi(fields[1]), model.grid_index[node][0]);
     EXPECT_EQ(std::stoi(fields[2]), model.grid_index[node][1]);
+    EXPECT_EQ(fields[9], "0");  // no obstacle
     for (int c = 0; c < 3; ++c) {
-      EXPECT_EQ(std::stod(fields[3 + c]), model.positions[3 * node + c]);
-      EXPECT_EQ(std::stod(fields[7 + c]), result.certificate.node_forces[3 * node + c]);
+      const int k = 3 * node + c;
+      EXPECT_EQ(std::stod(fields[3 + c]), model.positions[k]);
+      EXPECT_EQ(fields[6 + c], model.fixed[k] ? "1" : "0");  // booleans are 0/1
+      // The certificate's force: a reaction where the coordinate is fixed, else a residual.
+      EXPECT_EQ(std::stod(fields[10 + c]), model.fixed[k] ? result.certificate.node_forces[k] : 0);
+      EXPECT_EQ(std::stod(fields[13 + c]), model.fixed[k] ? 0 : result.certificate.node_forces[k]);
+      EXPECT_EQ(std::stod(fields[16 + c]), 0.0);
     }
-    EXPECT_EQ(fields[6], letters[node]);
   }
 }
 
 TEST_F(WritersTest, HistoryCsvHasOneRowPerRecordedIteration) {
   const Model model = SmallSheet();
   const RunResult result = ResultOf(model);
-  WriteOutputs(SceneWriting({"history"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"history"}), model, result, directory_.string());
 
   const auto lines = Lines(Path("history.csv"));
   ASSERT_EQ(lines.size(), 1 + result.summary.history.size());
@@ -210,17 +223,19 @@ TEST_F(WritersTest, HistoryCsvHasOneRowPerRecordedIteration) {
     EXPECT_EQ(std::stod(fields[2]), record.energy);
     EXPECT_EQ(std::stod(fields[3]), record.relative_residual);
   }
-  EXPECT_FALSE(fs::exists(Path("kinetic.csv")));  // only for methods that record a trace
+  EXPECT_FALSE(fs::exists(Path(TraceFileName("test-solver"))));  // only methods with a trace
 }
 
-TEST_F(WritersTest, TraceOfADynamicMethodGoesToKineticCsv) {
+// Each method's trace has its own columns, so its own file name (kinetic_<method>.csv).
+TEST_F(WritersTest, TraceOfADynamicMethodGoesToItsOwnFile) {
   const Model model = SmallSheet();
   RunResult result = ResultOf(model);
   result.summary.trace_columns = {"step", "t", "w_c"};
   result.summary.trace = {{0, 0.0, 1.5}, {1, 0.01, 0.75}};
-  WriteOutputs(SceneWriting({"history"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"history"}), model, result, directory_.string());
 
-  const auto lines = Lines(Path("kinetic.csv"));
+  EXPECT_EQ(TraceFileName("puiseux-dynamic"), "kinetic_puiseux-dynamic.csv");
+  const auto lines = Lines(Path("kinetic_test-solver.csv"));
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], "step,t,w_c");
   EXPECT_EQ(std::stod(Fields(lines[2])[2]), 0.75);
@@ -230,13 +245,13 @@ TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
   Model model = SmallSheet();
   model.edges = {{0, 1}};
   const RunResult result = ResultOf(model);
-  WriteOutputs(SceneWriting({"vtk", "obj"}), model, result, directory_.string());
+  WriteReported(SceneWriting({"vtk", "obj"}), model, result, directory_.string());
 
   const auto vtk = Lines(Path("mesh.vtk"));
   ASSERT_GT(vtk.size(), 4u);
   EXPECT_EQ(vtk[0], "# vtk DataFile Version 3.0");
   EXPECT_EQ(vtk[2], "ASCII");
-  EXPECT_EQ(vtk[3], "DATASET POLYDATA");
+  EXPECT_EQ(vtk[3], "DATASET UNSTRUCTURED_GRID");
   auto find = [&vtk](const std::string& start) {
     for (size_t k = 0; k < vtk.size(); ++k) {
       if (vtk[k].rfind(start, 0) == 0) return static_cast<int>(k);
@@ -250,48 +265,182 @@ TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
   node1 >> x >> y >> z;
   EXPECT_EQ(y, model.positions[4]);
   EXPECT_EQ(z, model.positions[5]);
-  const int polygons = find("POLYGONS 2 8");
-  ASSERT_GE(polygons, 0);
-  EXPECT_EQ(vtk[polygons + 1], "3 0 1 3");
-  EXPECT_GE(find("LINES 1 3"), 0);
+  const int cells = find("CELLS 3 11");  // two triangles and a line
+  ASSERT_GE(cells, 0);
+  EXPECT_EQ(vtk[cells + 1], "3 0 1 3");
+  EXPECT_EQ(vtk[cells + 3], "2 0 1");
+  const int types = find("CELL_TYPES 3");
+  ASSERT_GE(types, 0);
+  EXPECT_EQ(vtk[types + 1], "5");  // VTK_TRIANGLE
+  EXPECT_EQ(vtk[types + 3], "3");  // VTK_LINE
   EXPECT_GE(find("POINT_DATA 4"), 0);
+  const int ids = find("SCALARS id int 1");
+  ASSERT_GE(ids, 0);
+  EXPECT_EQ(vtk[ids + 3], "1");
   const int displacement = find("VECTORS displacement double");
   ASSERT_GE(displacement, 0);
   std::istringstream moved(vtk[displacement + 2]);
   moved >> x >> y >> z;
   EXPECT_EQ(z, model.positions[5] - model.initial[5]);
-  EXPECT_GE(find("VECTORS force double"), 0);
-  const int fixed = find("SCALARS fixed int 1");
+  // Node 0 is held in z only: its z force is a reaction, its x and y forces residuals.
+  const int reaction = find("VECTORS reaction double");
+  const int residual = find("VECTORS residual double");
+  ASSERT_GE(reaction, 0);
+  ASSERT_GE(residual, 0);
+  std::istringstream reaction0(vtk[reaction + 1]), residual0(vtk[residual + 1]);
+  reaction0 >> x >> y >> z;
+  EXPECT_EQ(x, 0.0);
+  EXPECT_EQ(z, result.certificate.node_forces[2]);
+  residual0 >> x >> y >> z;
+  EXPECT_EQ(x, result.certificate.node_forces[0]);
+  EXPECT_EQ(z, 0.0);
+  EXPECT_GE(find("VECTORS contact_force double"), 0);
+  const int fixed = find("SCALARS fixed int 3");
   ASSERT_GE(fixed, 0);
-  EXPECT_EQ(vtk[fixed + 2], "1");  // node 0: held in z
-  EXPECT_EQ(vtk[fixed + 3], "0");  // node 1: free
+  EXPECT_EQ(vtk[fixed + 2], "0 0 1");  // node 0: held in z
+  EXPECT_EQ(vtk[fixed + 3], "0 0 0");  // node 1: free
+  EXPECT_GE(find("SCALARS in_contact int 1"), 0);
+  const int strain = find("SCALARS strain double 1");
+  ASSERT_GE(strain, 0);
+  EXPECT_GE(find("CELL_DATA 3"), 0);
+  // The line 0–1 was 1 m long and node 1 moved by (0, 0.01, -0.03).
+  EXPECT_NEAR(std::stod(vtk[strain + 4]), std::sqrt(1 + 0.01 * 0.01 + 0.03 * 0.03) - 1, 1e-15);
 
-  int vertices = 0, faces = 0, lines = 0;
+  int vertices = 0, textures = 0, normals = 0, faces = 0, lines = 0;
   for (const auto& line : Lines(Path("mesh.obj"))) {
     vertices += line.rfind("v ", 0) == 0;
+    textures += line.rfind("vt ", 0) == 0;
+    normals += line.rfind("vn ", 0) == 0;
     faces += line.rfind("f ", 0) == 0;
     lines += line.rfind("l ", 0) == 0;
     if (line.rfind("f ", 0) == 0 && faces == 1) {
-      EXPECT_EQ(line, "f 1 2 4");  // 1-based
+      EXPECT_EQ(line, "f 1/1/1 2/2/2 4/4/4");  // 1-based vertex/texture/normal
+    }
+    if (line.rfind("vt ", 0) == 0 && textures == 4) {
+      EXPECT_EQ(line, "vt 1 1");  // the flat pattern
+    }
+    if (line.rfind("vn ", 0) == 0 && normals == 3) {
+      EXPECT_EQ(line, "vn 0 0 1");  // node 2's normal: the sheet is flat there
     }
   }
   EXPECT_EQ(vertices, 4);
+  EXPECT_EQ(textures, 4);
+  EXPECT_EQ(normals, 4);
   EXPECT_EQ(faces, 2);
   EXPECT_EQ(lines, 1);
+}
+
+// Runs a Python check with Debian's python3 (the packages' modules are there); "" when it passed,
+// else its output. Skips when a module is not installed.
+bool PythonHas(const std::string& module) {
+  return std::system(("/usr/bin/python3 -c 'import " + module + "' 2>/dev/null").c_str()) == 0;
+}
+
+std::string RunPython(const fs::path& folder, const std::string& script) {
+  const fs::path file = folder / "check.py", log = folder / "check.log";
+  std::ofstream(file) << script;
+  const std::string command = "cd '" + folder.string() + "' && /usr/bin/python3 " + file.string() +
+                              " > " + log.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  fs::remove(file);
+  fs::remove(log);
+  return status == 0 ? "" : text.str() + "(exit status " + std::to_string(status) + ")";
+}
+
+// mesh.vtk as Python's meshio reads it: the unstructured grid, its cells and every point array.
+TEST_F(WritersTest, MeshioReadsTheVtkFile) {
+  if (!PythonHas("meshio")) GTEST_SKIP() << "python3-meshio is not installed (CI installs it)";
+  Model model = SmallSheet();
+  model.edges = {{0, 1}};
+  WriteReported(SceneWriting({"vtk"}), model, ResultOf(model), directory_.string());
+  EXPECT_EQ(RunPython(directory_, R"(
+import meshio
+mesh = meshio.read("mesh.vtk")
+assert mesh.points.shape == (4, 3), mesh.points.shape
+kinds = sorted(block.type for block in mesh.cells)
+assert kinds == ["line", "triangle"], kinds
+shapes = {name: data.reshape(len(data), -1).shape for name, data in mesh.point_data.items()}
+expected = {"id": (4, 1), "displacement": (4, 3), "reaction": (4, 3), "residual": (4, 3),
+            "contact_force": (4, 3), "fixed": (4, 3), "in_contact": (4, 1)}
+for name, shape in expected.items():
+    assert shapes.get(name) == shape, (name, shapes)
+assert list(mesh.point_data["fixed"][0]) == [0, 0, 1]
+assert list(mesh.point_data["id"].ravel()) == [0, 1, 2, 3]
+assert "strain" in mesh.cell_data, mesh.cell_data.keys()
+)"),
+            "");
+}
+
+// mesh.vtk as VTK's own legacy reader reads it.
+TEST_F(WritersTest, VtkReadsTheVtkFile) {
+  if (!PythonHas("vtk")) GTEST_SKIP() << "python3-vtk9 is not installed (CI installs it)";
+  Model model = SmallSheet();
+  model.edges = {{0, 1}};
+  WriteReported(SceneWriting({"vtk"}), model, ResultOf(model), directory_.string());
+  EXPECT_EQ(RunPython(directory_, R"(
+import vtk
+reader = vtk.vtkUnstructuredGridReader()
+reader.SetFileName("mesh.vtk")
+reader.ReadAllScalarsOn()
+reader.ReadAllVectorsOn()
+reader.Update()
+grid = reader.GetOutput()
+assert grid.GetNumberOfPoints() == 4, grid.GetNumberOfPoints()
+assert grid.GetNumberOfCells() == 3, grid.GetNumberOfCells()
+data = grid.GetPointData()
+for name, components in [("id", 1), ("displacement", 3), ("reaction", 3), ("residual", 3),
+                         ("contact_force", 3), ("fixed", 3), ("in_contact", 1)]:
+    array = data.GetArray(name)
+    assert array is not None, name
+    assert array.GetNumberOfComponents() == components, (name, array.GetNumberOfComponents())
+assert grid.GetCellData().GetArray("strain") is not None
+)"),
+            "");
+}
+
+// nodes.csv as pandas reads it with no option: every column numeric, no NaN in a boolean.
+TEST_F(WritersTest, PandasReadsNodesCsvWithNumericColumns) {
+  if (!PythonHas("pandas")) GTEST_SKIP() << "python3-pandas is not installed (CI installs it)";
+  const Model model = SmallSheet();
+  WriteReported(SceneWriting({"nodes"}), model, ResultOf(model), directory_.string());
+  EXPECT_EQ(RunPython(directory_, R"(
+import pandas
+nodes = pandas.read_csv("nodes.csv")
+assert len(nodes) == 4, len(nodes)
+for column in ["id", "i", "j", "fixed_x", "fixed_y", "fixed_z", "in_contact"]:
+    assert str(nodes[column].dtype) == "int64", (column, nodes[column].dtype)
+for column in nodes.columns:
+    assert nodes[column].dtype.kind in "if", (column, nodes[column].dtype)
+assert list(nodes["fixed_z"]) == [1, 0, 1, 1]
+assert nodes.notna().all().all()
+)"),
+            "");
+}
+
+// A picture of an earlier run does not survive a run that draws none.
+TEST_F(WritersTest, AStaleDrapePngIsRemoved) {
+  const Model model = SmallSheet();
+  WriteReported(SceneWriting({"png", "summary"}), model, ResultOf(model), directory_.string());
+  ASSERT_TRUE(fs::exists(Path("drape.png")));
+  WriteReported(SceneWriting({"summary"}), model, ResultOf(model), directory_.string());
+  EXPECT_EQ(Files(), (std::set<std::string>{"summary.json", "scene.yaml"}));
 }
 
 TEST_F(WritersTest, CreatesTheFolderAndLeavesNoTemporaryFile) {
   const Model model = SmallSheet();
   const RunResult result = ResultOf(model);
   directory_ /= "nested/deeper";
-  WriteOutputs(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
-               directory_.string());
+  WriteReported(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
+                directory_.string());
   EXPECT_EQ(Files(), (std::set<std::string>{"summary.json", "nodes.csv", "history.csv", "mesh.vtk",
-                                            "mesh.obj"}));
+                                            "mesh.obj", "scene.yaml"}));
   // Writing again replaces the files in place.
-  WriteOutputs(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
-               directory_.string());
-  EXPECT_EQ(Files().size(), 5u);
+  WriteReported(SceneWriting({"summary", "nodes", "history", "vtk", "obj"}), model, result,
+                directory_.string());
+  EXPECT_EQ(Files().size(), 6u);
   directory_ = directory_.parent_path().parent_path();  // TearDown removes the whole tree
 }
 
@@ -326,7 +475,7 @@ Picture ReadPng(const std::string& path) {
 Scene DrapeScene(const std::vector<std::string>& write) {
   Scene scene = SceneWriting(write);
   ObstacleSpec disk;
-  disk.kind = ObstacleSpec::Kind::kDisk;
+  disk.kind = "disk";
   disk.radius = 0.09;
   scene.obstacles.push_back(disk);
   return scene;
@@ -346,10 +495,10 @@ RunResult Finished() {
 
 TEST_F(WritersTest, DrawsTheSheetInThreeDimensions) {
   const Model model = SmallSheet();
-  WriteOutputs(SceneWriting({"png", "profile", "shadow"}), model, ResultOf(model),
-               directory_.string());
+  WriteReported(SceneWriting({"png", "profile", "shadow"}), model, ResultOf(model),
+                directory_.string());
   // No drape coefficient for a sheet: no profile, no shadow view.
-  ASSERT_EQ(Files(), std::set<std::string>{"drape.png"});
+  ASSERT_EQ(Files(), (std::set<std::string>{"drape.png", "scene.yaml"}));
   const Picture picture = ReadPng(Path("drape.png"));
   EXPECT_EQ(picture.width, 900);
   EXPECT_EQ(picture.height, 700);
@@ -369,7 +518,7 @@ TEST_F(WritersTest, DrawsAChainFromTheFront) {
   model.mass.assign(5, 0.1);
   model.applied.assign(15, 0.0);
   model.grid_index.assign(5, {-1, -1});
-  WriteOutputs(SceneWriting({"png"}), model, Finished(), directory_.string());
+  WriteReported(SceneWriting({"png"}), model, Finished(), directory_.string());
   const Picture picture = ReadPng(Path("drape.png"));
   EXPECT_EQ(picture.width, 900);
   EXPECT_GT(picture.inked, 0.005);
@@ -377,9 +526,9 @@ TEST_F(WritersTest, DrawsAChainFromTheFront) {
 
 TEST_F(WritersTest, DrapeSceneGetsItsProfileFoldsAndPictures) {
   const Model model = SevenFolds();
-  WriteOutputs(DrapeScene({"summary", "profile", "png"}), model, Finished(), directory_.string());
-  EXPECT_EQ(Files(),
-            (std::set<std::string>{"summary.json", "profile.csv", "drape.png", "shadow.png"}));
+  WriteReported(DrapeScene({"summary", "profile", "png"}), model, Finished(), directory_.string());
+  EXPECT_EQ(Files(), (std::set<std::string>{"summary.json", "profile.csv", "drape.png",
+                                            "shadow.png", "scene.yaml"}));
 
   const YAML::Node drape = YAML::LoadFile(Path("summary.json"))["drape"];
   EXPECT_EQ(drape["folds"].as<int>(), 7);
@@ -411,8 +560,8 @@ TEST_F(WritersTest, DrapeSceneGetsItsProfileFoldsAndPictures) {
 }
 
 TEST_F(WritersTest, ShadowAloneWritesOnlyTheTopView) {
-  WriteOutputs(DrapeScene({"shadow"}), SevenFolds(), Finished(), directory_.string());
-  EXPECT_EQ(Files(), std::set<std::string>{"shadow.png"});
+  WriteReported(DrapeScene({"shadow"}), SevenFolds(), Finished(), directory_.string());
+  EXPECT_EQ(Files(), (std::set<std::string>{"shadow.png", "scene.yaml"}));
 }
 
 }  // namespace

@@ -8,6 +8,8 @@
 #include <limits>
 #include <memory>
 
+#include "src/model/obstacle_kinds.h"
+
 namespace drape {
 
 namespace {
@@ -24,10 +26,11 @@ Bounds ProjectedBounds(const std::vector<double>& positions,
   Bounds b;
   for (const auto& t : triangles) {
     for (int v : t) {
-      b.x0 = std::min(b.x0, positions[3 * v]);
-      b.x1 = std::max(b.x1, positions[3 * v]);
-      b.y0 = std::min(b.y0, positions[3 * v + 1]);
-      b.y1 = std::max(b.y1, positions[3 * v + 1]);
+      const auto p = NodeAt(positions, v);
+      b.x0 = std::min(b.x0, p.x());
+      b.x1 = std::max(b.x1, p.x());
+      b.y0 = std::min(b.y0, p.y());
+      b.y1 = std::max(b.y1, p.y());
     }
   }
   return b;
@@ -91,8 +94,8 @@ Shadow ProjectedArea(const std::vector<double>& positions,
   cairo_set_fill_rule(cr.get(), CAIRO_FILL_RULE_WINDING);
   cairo_set_source_rgba(cr.get(), 0, 0, 0, 1);
   // Nonzero winding with every triangle wound the same way (counter-clockwise) fills their union.
-  auto px = [&](int v) { return margin + (positions[3 * v] - b.x0) / pixel; };
-  auto py = [&](int v) { return margin + (positions[3 * v + 1] - b.y0) / pixel; };
+  auto px = [&](int v) { return margin + (NodeAt(positions, v).x() - b.x0) / pixel; };
+  auto py = [&](int v) { return margin + (NodeAt(positions, v).y() - b.y0) / pixel; };
   for (const auto& t : triangles) {
     const double cross = (px(t[1]) - px(t[0])) * (py(t[2]) - py(t[0])) -
                          (py(t[1]) - py(t[0])) * (px(t[2]) - px(t[0]));
@@ -127,6 +130,16 @@ DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius,
 }
 
 namespace {
+
+// The support (src/model/obstacle_kinds.h: a disk, a pin) of largest radius, or null.
+const ObstacleSpec* WidestSupport(const Scene& scene) {
+  const ObstacleSpec* widest = nullptr;
+  for (const ObstacleSpec& obstacle : scene.obstacles) {
+    if (!ObstacleKindOf(obstacle).support) continue;
+    if (widest == nullptr || obstacle.radius > widest->radius) widest = &obstacle;
+  }
+  return widest;
+}
 
 double Cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
@@ -210,8 +223,8 @@ RadialProfile ComputeRadialProfile(const std::vector<double>& positions,
   profile.centre = centre;
   profile.radius.assign(angles, 0.0);
   for (int k = 0; k < angles; ++k) profile.theta.push_back(2.0 * kPi * k / angles);
-  auto x = [&](int v) { return positions[3 * v] - centre[0]; };
-  auto y = [&](int v) { return positions[3 * v + 1] - centre[1]; };
+  auto x = [&](int v) { return NodeAt(positions, v).x() - centre[0]; };
+  auto y = [&](int v) { return NodeAt(positions, v).y() - centre[1]; };
   for (const auto& t : triangles) {
     if (Cross(x(t[1]) - x(t[0]), y(t[1]) - y(t[0]), x(t[2]) - x(t[0]), y(t[2]) - y(t[0])) == 0.0) {
       continue;  // seen edge-on: casts no shadow
@@ -251,22 +264,22 @@ Folds CountFolds(const std::vector<double>& profile, const FoldOptions& options)
   return folds;
 }
 
+// The centre of the widest support (a drape tester's disk, a pin), else of the flat fabric.
 std::array<double, 2> ProfileCentre(const Scene& scene, const Model& model) {
-  for (const auto kind : {ObstacleSpec::Kind::kDisk, ObstacleSpec::Kind::kPin}) {
-    for (const auto& obstacle : scene.obstacles) {
-      if (obstacle.kind == kind) return {obstacle.center.x(), obstacle.center.y()};
-    }
-  }
+  const ObstacleSpec* support = WidestSupport(scene);
+  if (support != nullptr) return {support->center.x(), support->center.y()};
   // Area-weighted centroid of the flat triangles.
   double area = 0.0, cx = 0.0, cy = 0.0;
   const auto& p = model.initial;
   for (const auto& t : model.triangles) {
-    const double a =
-        0.5 * std::abs(Cross(p[3 * t[1]] - p[3 * t[0]], p[3 * t[1] + 1] - p[3 * t[0] + 1],
-                             p[3 * t[2]] - p[3 * t[0]], p[3 * t[2] + 1] - p[3 * t[0] + 1]));
+    const double a = 0.5 * std::abs(Cross(NodeAt(p, t[1]).x() - NodeAt(p, t[0]).x(),
+                                          NodeAt(p, t[1]).y() - NodeAt(p, t[0]).y(),
+                                          NodeAt(p, t[2]).x() - NodeAt(p, t[0]).x(),
+                                          NodeAt(p, t[2]).y() - NodeAt(p, t[0]).y()));
     area += a;
-    cx += a * (p[3 * t[0]] + p[3 * t[1]] + p[3 * t[2]]) / 3.0;
-    cy += a * (p[3 * t[0] + 1] + p[3 * t[1] + 1] + p[3 * t[2] + 1]) / 3.0;
+    const Eigen::Vector3d centroid = (NodeAt(p, t[0]) + NodeAt(p, t[1]) + NodeAt(p, t[2])) / 3.0;
+    cx += a * centroid.x();
+    cy += a * centroid.y();
   }
   if (area > 0.0) return {cx / area, cy / area};
   return {0.0, 0.0};
@@ -296,10 +309,8 @@ DrapeAnalysis AnalyseDrape(const Scene& scene, const Model& model) {
 }
 
 double DiscRadius(const Scene& scene) {
-  for (const auto& obstacle : scene.obstacles) {
-    if (obstacle.kind == ObstacleSpec::Kind::kDisk) return obstacle.radius;
-  }
-  return 0.0;
+  const ObstacleSpec* support = WidestSupport(scene);
+  return support != nullptr ? support->radius : 0.0;
 }
 
 bool HasDrapeCoefficient(const Scene& scene, const Model& model) {

@@ -299,7 +299,7 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
 // started above would stay there. Such nodes are put back on the disc's top (its clearance).
 void KeepOnDiscs(const Scene& scene, Model* model) {
   for (const ObstacleSpec& disc : scene.obstacles) {
-    if (disc.kind != ObstacleSpec::Kind::kDisk) continue;
+    if (disc.kind != "disk") continue;
     const double top = disc.center.z() + scene.contact.thickness;
     for (int k = 0; k < model->num_nodes; ++k) {
       double* x = model->positions.data() + 3 * k;
@@ -319,7 +319,7 @@ int NodesUnderDisks(const Scene& scene, const Model& model) {
     const double* x = model.positions.data() + 3 * k;
     const double* start = model.initial.data() + 3 * k;
     for (const ObstacleSpec& disc : scene.obstacles) {
-      if (disc.kind != ObstacleSpec::Kind::kDisk) continue;
+      if (disc.kind != "disk") continue;
       const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
       if (start[2] > disc.center.z() && rho <= disc.radius - scene.contact.thickness &&
           x[2] < disc.center.z()) {

@@ -1,10 +1,13 @@
 #include "src/cli/cli.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <map>
 #include <new>
 #include <optional>
@@ -21,6 +24,9 @@
 #include "src/fit/fit_writer.h"
 #include "src/model/model.h"
 #include "src/numerics/library_threads.h"
+#include "src/output/json.h"
+#include "src/output/result_folder.h"
+#include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
@@ -33,34 +39,28 @@ namespace drape {
 namespace {
 
 constexpr char kUsage[] =
-    "usage: drape solve SCENE.yaml [--solver NAME] [--out DIR] [--set key.path=value ...]\n"
-    "       drape check SCENE.yaml [--set key.path=value ...]\n"
+    "usage: drape solve [OPTIONS] [--] SCENE.yaml   (--solver NAME, --out DIR, --set "
+    "key.path=value)\n"
+    "       drape check [OPTIONS] [--] SCENE.yaml   (--set key.path=value)\n"
     "       drape solvers\n"
-    "       drape compare SCENE.yaml... [--solvers all|a,b,...] [--out DIR] [--repeat N]\n"
-    "                     [--time-limit S] [--set key.path=value ...] [--no-plots]\n"
-    "       drape fit FIT.yaml [--out DIR] [--method NAME]\n"
-    "       drape help\n";
+    "       drape compare [OPTIONS] [--] SCENE.yaml...   (--solvers all|a,b,..., --out DIR,\n"
+    "                     --repeat N, --time-limit S, --set key.path=value, --no-plots)\n"
+    "       drape fit [OPTIONS] [--] FIT.yaml   (--out DIR, --method NAME, --set key.path=value)\n"
+    "       drape help | --help | --version;  drape COMMAND --help for a command's options\n";
 
-constexpr char kHelp[] =
-    "drape finds the equilibrium shape of fabric by minimising its total potential energy.\n"
-    "\n"
-    "  solve    load the scene, solve it, write the results into output.directory\n"
-    "           --solver NAME        use this method instead of solver.method\n"
-    "           --out DIR            write into DIR instead of output.directory\n"
-    "           --set key.path=value override a scene key (repeatable; value is YAML)\n"
-    "  check    load and build the scene, print what it contains, write nothing\n"
-    "  solvers  list the methods and their options (solver.<method>.<key>)\n"
-    "  compare  SCENE.yaml... [--solvers all|a,b] [--out DIR] [--repeat N] [--time-limit S]\n"
-    "           [--set k=v] [--no-plots]: solver comparison report (speed against error)\n"
-    "  fit      FIT.yaml [--out DIR] [--method NAME]: fit scene parameters (stiffnesses) to\n"
-    "           measurements; writes fit.json, history.csv, sensitivity.csv, fit.png, report.md\n";
+constexpr char kDescription[] =
+    "drape finds the equilibrium shape of fabric by minimising its total potential energy.";
 
 constexpr char kExitStatus[] =
     "\n"
     "exit status: 0 converged to a stable minimum; 1 ran but did not reach the tolerance\n"
     "(results written, converged: false; also after SIGINT or SIGTERM, which save the last\n"
     "iterate); 2 bad input, bad usage or an unwritable output folder (nothing written);\n"
-    "3 converged to a saddle, not a minimum (results written, saddle: true).\n";
+    "3 converged to a saddle, not a minimum (results written, saddle: true).\n"
+    "Results go to stdout; progress, warnings and errors to stderr.\n";
+
+constexpr char kSetHelp[] =
+    "override a scene key (repeatable; the value is YAML, e.g. mesh.nodes=[30,30])";
 
 // Bad usage of the command itself (not of the scene): the message and the usage lines.
 class UsageError : public std::runtime_error {
@@ -68,58 +68,15 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// What the command line of solve, check and fit gives.
 struct Arguments {
-  std::string scene;
+  std::string command_line;  // the whole command, shell-quoted (summary.json)
+  std::string file;          // the scene (solve, check) or the fit file (fit)
   std::optional<std::string> solver;
   std::optional<std::string> out;
   std::optional<std::string> method;  // fit
   std::vector<std::string> overrides;
-  bool help = false;
 };
-
-void AssignFlag(const std::string& flag, const std::string& value, Arguments* parsed) {
-  if (flag == "--solver") parsed->solver = value;
-  if (flag == "--out") parsed->out = value;
-  if (flag == "--set") parsed->overrides.push_back(value);
-  if (flag == "--method") parsed->method = value;
-}
-
-// Parses `args` after the subcommand. `flags`: the options this subcommand accepts, each taking a
-// value, given as `--flag value` or `--flag=value`.
-Arguments ParseArguments(const std::vector<std::string>& args, const std::set<std::string>& flags) {
-  Arguments parsed;
-  std::vector<std::string> positional;
-  for (size_t k = 1; k < args.size(); ++k) {
-    const std::string& arg = args[k];
-    if (arg == "--help" || arg == "-h") {
-      parsed.help = true;
-      continue;
-    }
-    if (arg.rfind('-', 0) != 0 || arg == "-") {
-      positional.push_back(arg);
-      continue;
-    }
-    const size_t equals = arg.find('=');
-    const std::string flag = arg.substr(0, equals);
-    if (!flags.count(flag)) throw UsageError("unknown option '" + flag + "' for " + args[0]);
-    std::string value;
-    if (equals != std::string::npos) {
-      value = arg.substr(equals + 1);
-    } else if (k + 1 < args.size()) {
-      value = args[++k];
-    } else {
-      throw UsageError("option " + flag + " needs a value");
-    }
-    AssignFlag(flag, value, &parsed);
-  }
-  if (parsed.help) return parsed;
-  if (positional.empty()) {
-    throw UsageError(args[0] + (args[0] == "fit" ? " needs a fit file" : " needs a scene file"));
-  }
-  if (positional.size() > 1) throw UsageError("unexpected argument '" + positional[1] + "'");
-  parsed.scene = positional[0];
-  return parsed;
-}
 
 std::string SolverNames() {
   std::string names;
@@ -214,7 +171,7 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     err << "drape: unknown solver '" << *arguments.solver << "' (known: " << SolverNames() << ")\n";
     return kExitBadInput;
   }
-  Scene scene = LoadScene(arguments.scene, arguments.overrides);
+  Scene scene = LoadScene(arguments.file, arguments.overrides);
   if (arguments.solver) scene.solver.method = *arguments.solver;
   if (arguments.out) scene.output.directory = *arguments.out;
   RequireKnownSolver(scene);
@@ -226,6 +183,16 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     return kExitBadInput;
   }
   Model model = BuildModel(scene);
+  // The folder's lock is held from before the solve to the end of the writing: a second run into
+  // the same folder is refused here, before it solves, and nothing of either run is lost. A run
+  // that fails before writing removes the folder if the lock created it.
+  std::optional<ResultFolderLock> lock;
+  try {
+    lock.emplace(directory, /*remove_if_unused=*/true);
+  } catch (const std::exception& error) {
+    err << "drape: " << error.what() << "; nothing solved\n";
+    return kExitBadInput;
+  }
 
   const bool plain = !options.show_progress && options.plain_progress_interval_s > 0.0;
   ProgressLine progress(err, plain ? options.plain_progress_interval_s : 0.2, plain);
@@ -234,36 +201,41 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     on_iteration = [&progress](const IterationRecord& record) { return progress.Update(record); };
   }
   EnableInterrupt();
-  LevelsReport levels;
-  const bool multilevel = scene.solver.levels > 1;
-  const RunResult result = multilevel
-                               ? RunLevels(scene, model, scene.solver.method, on_iteration, &levels)
-                               : RunSolve(scene, model, scene.solver.method, on_iteration);
+  const SolveReport report = SolveAndReport(scene, model, scene.solver.method, on_iteration);
   progress.Clear();
 
   try {
-    WriteOutputs(scene, model, result, directory, multilevel ? &levels : nullptr);
+    WriteOutputs(scene, model, report, directory,
+                 Provenance{arguments.command_line, arguments.overrides});
+    lock->KeepFolder();
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;
   }
-  out << ResultLine(result, directory) << (multilevel ? LevelsLine(levels) : "") << std::endl;
-  return ExitStatus(result);
+  out << ResultLine(report.result, directory) << (report.levels ? LevelsLine(*report.levels) : "")
+      << std::endl;
+  return ExitStatus(report.result);
 }
 
 int Check(const Arguments& arguments, std::ostream& out) {
-  const Scene scene = LoadScene(arguments.scene, arguments.overrides);
+  const Scene scene = LoadScene(arguments.file, arguments.overrides);
   RequireKnownSolver(scene);
   const Model model = BuildModel(scene);
   out << scene.name << ": " << model.num_nodes << " nodes, " << model.num_free_dofs()
-      << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << std::endl;
+      << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << "\n";
+  out << "material " << scene.material.model << " (SI):";
+  for (const MaterialValue& value : MaterialSiValues(scene.material)) {
+    out << " " << value.key << " " << FormatNumber(value.value, 6)
+        << (value.unit == "1" ? "" : " " + value.unit) << ";";
+  }
+  out << std::endl;
   return kExitConverged;
 }
 
 // `drape fit`: load the fit file (every input checked before any solve), run the outer loop with
 // a progress line per evaluation on `err`, write the outputs. Exit 0 converged, 1 not converged.
 int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
-  FitSpec spec = LoadFitFile(arguments.scene);
+  FitSpec spec = LoadFitFile(arguments.file, arguments.overrides);
   if (arguments.method) {
     if (!FindFitMethod(*arguments.method)) {
       throw UsageError("unknown fit method '" + *arguments.method + "' (known: " + FitMethodList() +
@@ -321,40 +293,147 @@ int ListSolvers(std::ostream& out) {
   return kExitConverged;
 }
 
+// The options shared by the commands that load a scene: the file (after `--` if it starts with a
+// dash) and the repeatable --set.
+void AddSceneArguments(CLI::App* command, Arguments* arguments, const std::string& what) {
+  command->add_option("file", arguments->file, what)->required();
+  command->add_option("--set", arguments->overrides, kSetHelp)->allow_extra_args(false);
+}
+
+// A finite number > 0 ("inf", "nan", "5s" and "0" are refused).
+const CLI::Validator kFinitePositive(
+    [](const std::string& text) {
+      double value = 0.0;
+      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !(value > 0.0)) {
+        return "expected a finite number of seconds > 0, got '" + text + "'";
+      }
+      return std::string();
+    },
+    "S>0", "finite positive");
+
+// The whole text as an integer >= 1 ("2x", "1.5" and "0" are refused).
+const CLI::Validator kWholeNumber(
+    [](const std::string& text) {
+      int value = 0;
+      if (!CLI::detail::lexical_cast(text, value) || value < 1) {
+        return "expected a whole number >= 1, got '" + text + "'";
+      }
+      return std::string();
+    },
+    "N>=1", "whole number");
+
+// The command as a shell would take it back: "drape solve 'my scene.yaml' --set a=1".
+std::string CommandLine(const std::vector<std::string>& args) {
+  std::string line = "drape";
+  for (const std::string& arg : args) {
+    const bool plain =
+        !arg.empty() && arg.find_first_not_of(
+                            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJ"
+                            "KLMNOPQRSTUVWXYZ0123456789_-.,/=:+@%") == std::string::npos;
+    if (plain) {
+      line += " " + arg;
+      continue;
+    }
+    std::string quoted = "'";
+    for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    line += " " + quoted + "'";
+  }
+  return line;
+}
+
 int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
              const CommandOptions& options) {
-  if (args.empty()) throw UsageError("no command given");
-  const std::string& command = args[0];
-  if (command == "help" || command == "--help" || command == "-h") {
-    out << kUsage << "\n"
-        << kHelp << "           (methods: " << FitMethodList() << ")\n"
-        << kExitStatus;
+  CLI::App app(kDescription, "drape");
+  app.set_version_flag("--version", DrapeVersion(), "print drape's version and exit");
+  app.require_subcommand(1);
+  app.footer(std::string("\n") + kUsage + kExitStatus);
+  app.get_formatter()->column_width(34);
+
+  Arguments arguments;
+  arguments.command_line = CommandLine(args);
+  CLI::App* solve = app.add_subcommand(
+      "solve", "load the scene, solve it, write the results into output.directory");
+  AddSceneArguments(solve, &arguments, "scene file (YAML)");
+  solve->add_option("--solver", arguments.solver,
+                    "use this method instead of the scene's solver.method (see `drape solvers`)");
+  solve->add_option("--out", arguments.out,
+                    "write into this folder instead of output.directory (default: "
+                    "output.directory, else out/<scene name>)");
+  solve->footer(kExitStatus);
+
+  CLI::App* check = app.add_subcommand(
+      "check",
+      "load and build the scene, print what it contains (and the SI material values "
+      "derived from KES or Peirce inputs); write nothing");
+  AddSceneArguments(check, &arguments, "scene file (YAML)");
+
+  app.add_subcommand("solvers",
+                     "list the methods and their options (solver.<method>.<key>) with defaults");
+
+  CompareOptions compare_options;
+  CLI::App* compare = app.add_subcommand(
+      "compare", "solver comparison report (speed against error) for one or more scenes");
+  compare->add_option("scenes", compare_options.scenes, "scene files (YAML)")->required();
+  compare
+      ->add_option("--solvers", compare_options.solvers,
+                   "all, or a comma-separated list of methods (default: all)")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  compare->add_option("--out", compare_options.out_dir, "report folder")->capture_default_str();
+  compare->add_option("--repeat", compare_options.repeat, "timed repeats of each run (median)")
+      ->check(kWholeNumber)
+      ->capture_default_str();
+  compare->add_option("--time-limit", compare_options.time_limit, "seconds per run")
+      ->check(kFinitePositive)
+      ->capture_default_str();
+  compare->add_option("--set", compare_options.overrides, kSetHelp)->allow_extra_args(false);
+  bool no_plots = false;
+  compare->add_flag("--no-plots", no_plots, "write the report without running gnuplot");
+
+  CLI::App* fit = app.add_subcommand(
+      "fit",
+      "fit scene parameters (stiffnesses) to measurements; writes fit.json, history.csv, "
+      "sensitivity.csv, fit.png, report.md");
+  AddSceneArguments(fit, &arguments, "fit file (YAML)");
+  fit->add_option("--out", arguments.out,
+                  "write into this folder (default: the fit file's output.directory, else "
+                  "out/<fit file name>)");
+  fit->add_option("--method", arguments.method,
+                  "outer method instead of the fit file's (" + FitMethodList() + ")");
+  fit->get_option("--set")->description(
+      "override a key of every scene the fit solves (repeatable; value is YAML; the fitted "
+      "parameters win)");
+
+  CLI::App* help = app.add_subcommand("help", "print this help");
+
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return kExitConverged;
+  } catch (const CLI::CallForAllHelp&) {
+    out << app.help("", CLI::AppFormatMode::All);
+    return kExitConverged;
+  } catch (const CLI::CallForVersion&) {
+    out << "drape " << DrapeVersion() << "\n";
+    return kExitConverged;
+  } catch (const CLI::ParseError& error) {
+    throw UsageError(error.what());
+  }
+
+  if (help->parsed()) {
+    out << app.help();
     return kExitConverged;
   }
-  if (command == "solvers") {
-    if (args.size() > 1) throw UsageError("solvers takes no arguments");
-    return ListSolvers(out);
+  if (app.got_subcommand("solvers")) return ListSolvers(out);
+  if (compare->parsed()) {
+    compare_options.plots = !no_plots;
+    return RunCompare(compare_options, err, &out);
   }
-  if (command == "compare") {
-    try {
-      return RunCompare(ParseCompareArguments({args.begin() + 1, args.end()}), err);
-    } catch (const std::invalid_argument& error) {
-      throw UsageError(error.what());
-    }
-  }
-  const std::map<std::string, std::set<std::string>> flags = {
-      {"solve", {"--solver", "--out", "--set"}},
-      {"check", {"--set"}},
-      {"fit", {"--out", "--method"}}};
-  const auto accepted = flags.find(command);
-  if (accepted == flags.end()) throw UsageError("unknown command '" + command + "'");
-  const Arguments arguments = ParseArguments(args, accepted->second);
-  if (arguments.help) {
-    out << kUsage;
-    return kExitConverged;
-  }
-  if (command == "fit") return Fit(arguments, out, err);
-  return command == "solve" ? Solve(arguments, out, err, options) : Check(arguments, out);
+  if (fit->parsed()) return Fit(arguments, out, err);
+  if (check->parsed()) return Check(arguments, out);
+  return Solve(arguments, out, err, options);
 }
 
 }  // namespace

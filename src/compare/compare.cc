@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/analysis/drape_analysis.h"
+#include "src/analysis/solve_report.h"
 #include "src/compare/compare_report.h"
 #include "src/model/equilibrium.h"
 #include "src/scene/scene_loader.h"
@@ -78,13 +78,6 @@ struct TimedSolve {
   double drape_coefficient = std::nan("");  // at the final positions; NaN where there is none
 };
 
-// The DC a comparison compares: Cusick's with a disk obstacle, else A_shadow/A_flat.
-double SceneDrapeCoefficient(const Scene& scene, const Model& model) {
-  if (!HasDrapeCoefficient(scene, model)) return std::nan("");
-  const DrapeCoefficient dc = ComputeDrapeCoefficient(model, DiscRadius(scene));
-  return DiscRadius(scene) > 0.0 ? dc.cusick : dc.ratio;
-}
-
 TimedSolve Solve(const Scene& scene, const std::string& method, const SceneReference* reference) {
   Model model = BuildModel(scene);
   TimedSolve timed;
@@ -112,7 +105,7 @@ TimedSolve Solve(const Scene& scene, const std::string& method, const SceneRefer
   const long resident_kb = ReadStatusKb("VmRSS");
   const bool peak_reset = ResetPeakResidentSize();
   timed.result = RunSolve(scene, model, method, on_iteration);
-  timed.drape_coefficient = SceneDrapeCoefficient(scene, model);
+  timed.drape_coefficient = ReportedDrapeCoefficient(ReportOf(scene, model, timed.result));
   const long peak_kb = ReadStatusKb("VmHWM");
   if (peak_reset && resident_kb >= 0 && peak_kb >= 0) {
     timed.peak_memory_mb = std::max(0L, peak_kb - resident_kb) / 1024.0;
@@ -349,27 +342,6 @@ SceneComparison CompareScene(const std::string& scene_file, const CompareOptions
 
 namespace {
 
-// The whole text as an integer ≥ 1 ("2x", "1.5" and "0" are refused).
-int WholeNumber(const std::string& flag, const std::string& value) {
-  size_t used = 0;
-  const int number = std::stoi(value, &used);
-  if (used != value.size() || number < 1) {
-    throw std::invalid_argument(flag + ": expected a whole number >= 1, got '" + value + "'");
-  }
-  return number;
-}
-
-// The whole text as a finite number > 0 ("inf", "nan", "5s" and "0" are refused).
-double FinitePositive(const std::string& flag, const std::string& value) {
-  size_t used = 0;
-  const double number = std::stod(value, &used);
-  if (used != value.size() || !std::isfinite(number) || !(number > 0.0)) {
-    throw std::invalid_argument(flag + ": expected a finite number of seconds > 0, got '" + value +
-                                "'");
-  }
-  return number;
-}
-
 // Every scene loads (with the --set overrides) and builds, before anything is solved or written;
 // the first that does not is reported, located, and the comparison stops (exit 2).
 bool ScenesLoad(const CompareOptions& options, std::ostream& log) {
@@ -387,57 +359,7 @@ bool ScenesLoad(const CompareOptions& options, std::ostream& log) {
 
 }  // namespace
 
-CompareOptions ParseCompareArguments(const std::vector<std::string>& args) {
-  CompareOptions options;
-  for (size_t i = 0; i < args.size(); ++i) {
-    std::string flag = args[i];
-    if (flag.rfind("--", 0) != 0) {
-      options.scenes.push_back(flag);
-      continue;
-    }
-    if (flag == "--no-plots") {
-      options.plots = false;
-      continue;
-    }
-    std::string value;
-    if (const size_t equals = flag.find('='); equals != std::string::npos) {
-      value = flag.substr(equals + 1);
-      flag = flag.substr(0, equals);
-    } else if (i + 1 < args.size()) {
-      value = args[++i];
-    } else {
-      throw std::invalid_argument(flag + " needs a value");
-    }
-    try {
-      if (flag == "--solvers") {
-        std::stringstream list(value);
-        for (std::string name; std::getline(list, name, ',');) {
-          if (!name.empty()) options.solvers.push_back(name);
-        }
-      } else if (flag == "--out") {
-        options.out_dir = value;
-      } else if (flag == "--repeat") {
-        options.repeat = WholeNumber(flag, value);
-      } else if (flag == "--time-limit") {
-        options.time_limit = FinitePositive(flag, value);
-      } else if (flag == "--set") {
-        options.overrides.push_back(value);
-      } else {
-        throw std::invalid_argument("unknown option " + flag + " for compare");
-      }
-    } catch (const std::logic_error& error) {
-      if (dynamic_cast<const std::invalid_argument*>(&error) &&
-          (std::string(error.what()).rfind("unknown option", 0) == 0 ||
-           std::string(error.what()).rfind(flag + ":", 0) == 0)) {
-        throw;
-      }
-      throw std::invalid_argument(flag + ": not a number: '" + value + "'");
-    }
-  }
-  return options;
-}
-
-int RunCompare(const CompareOptions& options, std::ostream& log) {
+int RunCompare(const CompareOptions& options, std::ostream& log, std::ostream* result) {
   if (options.scenes.empty()) {
     log << "drape compare: no scene given\n";
     return 2;
@@ -464,7 +386,9 @@ int RunCompare(const CompareOptions& options, std::ostream& log) {
     log << "drape compare: cannot write the report: " << error.what() << '\n';
     return 1;
   }
-  log << "report: " << (std::filesystem::path(options.out_dir) / "report.md").string() << '\n';
+  (result ? *result : log) << "report: "
+                           << (std::filesystem::path(options.out_dir) / "report.md").string()
+                           << '\n';
   return 0;
 }
 

@@ -22,7 +22,8 @@ struct CompareOptions {
   std::vector<std::string> overrides;  // --set key.path=value, applied to every scene
   double reference_tolerance = 1e-12;  // relative residual asked of the reference newton solve
   bool plots = true;                   // run gnuplot (the report is written without it too)
-  std::string tools_dir;               // where compare_*.gp live; empty: searched
+  std::string
+      tools_dir;  // where compare_*.gp live; empty: $DRAPE_TOOLS_DIR, else the embedded copies
 };
 
 // Distance of every node from the reference positions (3 doubles per node).
@@ -114,14 +115,11 @@ double TimeToReach(const RunRecord& run, double level);
 SceneComparison CompareScene(const std::string& scene_file, const CompareOptions& options,
                              std::ostream& log);
 
-// Parses the arguments after `compare`: scene files, --solvers all|a,b,..., --out DIR, --repeat N,
-// --time-limit S, --set key.path=value (repeatable), --no-plots; `--flag value` or `--flag=value`.
-// Throws std::invalid_argument for bad usage.
-CompareOptions ParseCompareArguments(const std::vector<std::string>& args);
-
 // The command: compares every scene, writes the report into options.out_dir, returns the exit
-// code (0 when the report was written, 2 for bad usage such as an unknown solver name).
-int RunCompare(const CompareOptions& options, std::ostream& log);
+// code (0 when the report was written, 2 for bad usage such as an unknown solver name). Progress
+// and diagnostics go to `log`; the result line ("report: DIR/report.md") to `result` (`log` when
+// null).
+int RunCompare(const CompareOptions& options, std::ostream& log, std::ostream* result = nullptr);
 
 }  // namespace drape
 

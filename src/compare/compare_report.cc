@@ -19,6 +19,7 @@
 #include <string>
 #include <thread>
 
+#include "src/compare/plot_scripts.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
 #include "src/output/json.h"
@@ -158,14 +159,11 @@ void WriteReferencesCsv(const std::vector<SceneComparison>& comparisons, std::os
 
 // ---- plots --------------------------------------------------------------------------------------
 
+// Where the scripts are read from: options.tools_dir, else $DRAPE_TOOLS_DIR, else "" (the copies
+// embedded in the binary, src/compare/plot_scripts.h).
 std::string FindToolsDir(const CompareOptions& options) {
   if (!options.tools_dir.empty()) return options.tools_dir;
   if (const char* dir = std::getenv("DRAPE_TOOLS_DIR")) return dir;
-  std::error_code error;
-  fs::path folder = fs::read_symlink("/proc/self/exe", error).parent_path();
-  for (int up = 0; !error && up < 3; ++up, folder = folder.parent_path()) {
-    if (fs::exists(folder / "tools" / "compare_curves.gp", error)) return (folder / "tools");
-  }
   return "";
 }
 
@@ -188,13 +186,11 @@ class Plotter {
   Plotter(const CompareOptions& options, const fs::path& out_dir, std::ostream& log)
       : out_dir_(out_dir), log_(log) {
     if (!options.plots) return;
+    enabled_ = true;
     tools_dir_ = FindToolsDir(options);
-    if (tools_dir_.empty()) {
-      log_ << "plots left out: tools/compare_curves.gp not found (set DRAPE_TOOLS_DIR)\n";
-    }
     fs::create_directories(out_dir_ / "plots" / "data");
   }
-  bool enabled() const { return !tools_dir_.empty(); }
+  bool enabled() const { return enabled_; }
 
   // Writes a data file under plots/data; returns its path relative to the report.
   std::string Data(const std::string& name, const std::function<void(std::ostream&)>& write) {
@@ -209,11 +205,17 @@ class Plotter {
                    const std::vector<std::pair<std::string, std::string>>& variables) {
     if (!enabled()) return "";
     const std::string relative = "plots/" + png;
+    fs::path script_path = fs::path(tools_dir_) / script;
+    if (tools_dir_.empty()) {  // the embedded copy, written beside the plot's data
+      script_path = out_dir_ / "plots" / "data" / script;
+      WriteAtomically(script_path,
+                      [&script](std::ostream& out) { out << EmbeddedPlotScript(script); });
+    }
     std::string settings = "output=" + Quoted(relative) + ";";
     for (const auto& [name, value] : variables) settings += name + "=" + Quoted(value) + ";";
     const std::string command =
         "cd " + ShellQuoted(out_dir_.string()) + " && gnuplot -e " + ShellQuoted(settings) + " " +
-        ShellQuoted((fs::path(tools_dir_) / script).string()) + " >/dev/null 2>>plots/gnuplot.log";
+        ShellQuoted(fs::absolute(script_path).string()) + " >/dev/null 2>>plots/gnuplot.log";
     if (std::system(command.c_str()) != 0 || !fs::exists(out_dir_ / relative)) {
       log_ << "plot " << relative << " failed (see plots/gnuplot.log)\n";
       return "";
@@ -224,7 +226,8 @@ class Plotter {
  private:
   fs::path out_dir_;
   std::ostream& log_;
-  std::string tools_dir_;
+  bool enabled_ = false;
+  std::string tools_dir_;  // empty: the embedded scripts
 };
 
 // Log axes drop zeros: times and errors are floored for the plot only (the CSVs keep them).
@@ -251,6 +254,10 @@ std::string CurvesPlot(const SceneComparison& comparison, Plotter& plotter) {
                       {{"files", files}, {"titles", titles}, {"title", comparison.name}});
 }
 
+// The Pareto plot's marker of the k-th scene (gnuplot's point types 1–13; the colour is the
+// solver's). compare_pareto.gp draws the same types in its legend of scenes.
+int ScenePointType(size_t k) { return static_cast<int>(k % 13) + 1; }
+
 std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, Plotter& plotter) {
   std::vector<std::string> solvers;
   for (const SceneComparison& c : comparisons) {
@@ -264,12 +271,13 @@ std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, Plotter&
   std::string files, titles;
   for (const std::string& solver : solvers) {
     const std::string file = plotter.Data("pareto__" + solver + ".dat", [&](std::ostream& out) {
-      out << "# time_s rms_distance_rel scene\n";
-      for (const SceneComparison& c : comparisons) {
-        for (const RunRecord& run : c.runs) {
+      out << "# time_s rms_distance_rel scene point_type\n";
+      for (size_t k = 0; k < comparisons.size(); ++k) {
+        for (const RunRecord& run : comparisons[k].runs) {
           if (run.solver != solver || !HasPositions(run)) continue;
           out << FormatNumber(Floor(run.time_s, 1e-6)) << ' '
-              << FormatNumber(Floor(RelativeError(run), 1e-17)) << ' ' << Slug(c.name) << '\n';
+              << FormatNumber(Floor(RelativeError(run), 1e-17)) << ' ' << Slug(comparisons[k].name)
+              << ' ' << ScenePointType(k) << '\n';
         }
       }
     });
@@ -277,7 +285,10 @@ std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, Plotter&
     titles += (titles.empty() ? "" : " ") + solver;
   }
   if (files.empty()) return "";
-  return plotter.Draw("compare_pareto.gp", "pareto.png", {{"files", files}, {"titles", titles}});
+  std::string scenes;
+  for (const SceneComparison& c : comparisons) scenes += (scenes.empty() ? "" : " ") + Slug(c.name);
+  return plotter.Draw("compare_pareto.gp", "pareto.png",
+                      {{"files", files}, {"titles", titles}, {"scenes", scenes}});
 }
 
 std::string DrapePlot(const SceneComparison& comparison, const std::vector<double>& positions,
@@ -464,10 +475,16 @@ std::vector<Block> HeaderBlocks(const CompareOptions& options, double total_time
 
 // ---- Markdown and HTML --------------------------------------------------------------------------
 
+// Text for Markdown (`|` escaped) or HTML (`<`, `>`, `&` escaped, and Markdown's `code` spans
+// turned into <code> elements, so no backtick shows).
 std::string Escaped(const std::string& text, bool html) {
   std::string escaped;
+  bool code = false;
   for (char c : text) {
-    if (html && c == '<')
+    if (html && c == '`') {
+      escaped += code ? "</code>" : "<code>";
+      code = !code;
+    } else if (html && c == '<')
       escaped += "&lt;";
     else if (html && c == '>')
       escaped += "&gt;";
@@ -478,7 +495,20 @@ std::string Escaped(const std::string& text, bool html) {
     else
       escaped += c;
   }
-  return escaped;
+  return code ? escaped + "</code>" : escaped;
+}
+
+// Text for an HTML attribute: escaped, without Markdown's backticks.
+std::string AttributeText(const std::string& text) {
+  std::string plain;
+  for (char c : text) {
+    if (c == '"') {
+      plain += "&quot;";
+    } else if (c != '`') {
+      plain += c;
+    }
+  }
+  return Escaped(plain, true);
 }
 
 void WriteMarkdown(const std::vector<Block>& blocks, std::ostream& out) {
@@ -557,7 +587,7 @@ void WriteHtml(const std::vector<Block>& blocks, const fs::path& out_dir, std::o
         out << "<p>" << Escaped(block.text, true) << "</p>\n";
         break;
       case Block::Kind::kImage:
-        out << "<figure><img alt=\"" << Escaped(block.text, true)
+        out << "<figure><img alt=\"" << AttributeText(block.text)
             << "\" src=\"data:image/png;base64," << Base64(ReadFile(out_dir / block.image))
             << "\"><figcaption>" << Escaped(block.text, true) << "</figcaption></figure>\n";
         break;

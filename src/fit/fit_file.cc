@@ -282,7 +282,7 @@ FitSpecimen ReadSpecimen(const YamlMap& item, const std::string& directory) {
       Fail(*measurements, "give the measurements inside scene: {file, measurements}");
     const YamlMap map(scene, {"file", "measurements"});
     specimen.scene_file = Resolve(directory, ReadString(map.Get("file")));
-    measurements = map.Get("measurements");
+    measurements.emplace(map.Get("measurements"));  // not operator= (clang-tidy: it may throw)
   } else {
     specimen.scene_file = Resolve(directory, ReadString(scene));
     if (!measurements) {
@@ -329,13 +329,11 @@ std::vector<FitMeasurement> ReadMeasurements(const YamlValue& value, const std::
   return measurements;
 }
 
-// Checks a specimen's scene with every parameter at its initial value, and each measurement
-// against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
-void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
-  std::vector<std::string> overrides;
-  for (const auto& parameter : spec.parameters) {
-    overrides.push_back(parameter.key + "=" + FormatNumber(parameter.initial));
-  }
+// The specimen's scene with every parameter at its initial value. A bad key named by a fitted
+// parameter is located at that parameter (a bad `--set` of the command stays as it is).
+Scene LoadSpecimenScene(const FitSpec& spec, const FitSpecimen& specimen) {
+  std::vector<double> initial;
+  for (const auto& parameter : spec.parameters) initial.push_back(parameter.initial);
   std::error_code missing;
   if (!std::filesystem::is_regular_file(specimen.scene_file, missing)) {
     throw InputError(specimen.where,
@@ -343,20 +341,25 @@ void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
                          (std::filesystem::exists(specimen.scene_file, missing) ? "it is not a file"
                                                                                 : "no such file"));
   }
-  Scene scene;
   try {
-    scene = LoadScene(specimen.scene_file, overrides);
+    return LoadScene(specimen.scene_file, SceneOverrides(spec, initial));
   } catch (const InputError& error) {
-    const std::string message = error.what();
-    if (message.rfind("--set:", 0) != 0) throw;
-    // Locate a bad key at the parameter that names it.
-    const int index = std::atoi(message.c_str() + 6) - 1;
-    const size_t text = message.find(": ", 6);
-    const FitParameter& parameter = spec.parameters.at(std::max(0, index));
-    throw InputError(parameter.where,
-                     "not a numeric key of " + specimen.scene_file + ": " +
-                         (text == std::string::npos ? message : message.substr(text + 2)));
+    if (error.where().file != "--set") throw;
+    // Locate a bad key at the parameter that names it (the fit's --set overrides come first, then
+    // one per parameter, in order).
+    const int index = error.where().line - 1 - static_cast<int>(spec.scene_overrides.size());
+    if (index < 0 || index >= static_cast<int>(spec.parameters.size())) throw;
+    const std::string& key = error.where().key;
+    throw InputError(spec.parameters[index].where, "not a numeric key of " + specimen.scene_file +
+                                                       ": " + (key.empty() ? "" : key + ": ") +
+                                                       error.problem());
   }
+}
+
+// Checks a specimen's scene with every parameter at its initial value, and each measurement
+// against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
+void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
+  const Scene scene = LoadSpecimenScene(spec, specimen);
   const Model model = BuildModel(scene);
   for (const auto& measurement : specimen.measurements) {
     using Kind = FitMeasurement::Kind;
@@ -466,9 +469,18 @@ ReactionData ReadReactionFile(const std::string& path, const Location& where) {
   return data;
 }
 
-FitSpec LoadFitFile(const std::string& path) {
+std::vector<std::string> SceneOverrides(const FitSpec& spec, const std::vector<double>& theta) {
+  std::vector<std::string> overrides = spec.scene_overrides;
+  for (size_t j = 0; j < theta.size(); ++j) {
+    overrides.push_back(spec.parameters[j].key + "=" + FormatNumber(theta[j]));
+  }
+  return overrides;
+}
+
+FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& scene_overrides) {
   FitSpec spec;
   spec.file = path;
+  spec.scene_overrides = scene_overrides;
   spec.name = fs::path(path).stem().string();
   spec.root = Location{path, 1, 1, ""};
   const YAML::Node document = ReadYamlFile(path, "fit file");

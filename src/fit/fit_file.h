@@ -76,13 +76,21 @@ struct FitSpec {
   double tolerance = 1e-8;  // relative change of the (log-)parameters that stops the outer loop
   // Resolved against the fit file's folder (as a scene's output.directory); default out/<name>.
   std::string output_directory;
+  // `drape fit --set key.path=value`: applied to every specimen's scene before the fitted
+  // parameters (which win where both name a key).
+  std::vector<std::string> scene_overrides;
   Location method_where;
   Location root;
 };
 
 // Loads and checks `path` and the files it names (scenes are loaded once with every parameter at
-// its initial value, which checks the keys). Throws InputError on any bad input.
-FitSpec LoadFitFile(const std::string& path);
+// its initial value, which checks the keys). `scene_overrides` become FitSpec::scene_overrides.
+// Throws InputError on any bad input.
+FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& scene_overrides = {});
+
+// The overrides a specimen's scene is loaded with: spec.scene_overrides, then each parameter at
+// `theta`.
+std::vector<std::string> SceneOverrides(const FitSpec& spec, const std::vector<double>& theta);
 
 // Reads a positions file (`id,x,y,z`, or `x,y,z` / .xyz / .ply as a point cloud); `where` locates
 // the key that names it. Throws InputError located in the data file for a bad row.

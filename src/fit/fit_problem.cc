@@ -117,11 +117,8 @@ const FitMeasurement& FitProblem::MeasurementOf(const ResidualBlock& block) cons
 
 Scene FitProblem::SceneAt(const FitEquilibrium& equilibrium,
                           const std::vector<double>& theta) const {
-  std::vector<std::string> overrides;
-  for (size_t j = 0; j < theta.size(); ++j) {
-    overrides.push_back(spec_.parameters[j].key + "=" + FormatNumber(theta[j]));
-  }
-  Scene scene = LoadScene(spec_.specimens[equilibrium.specimen].scene_file, overrides);
+  Scene scene =
+      LoadScene(spec_.specimens[equilibrium.specimen].scene_file, SceneOverrides(spec_, theta));
   if (equilibrium.strip_of < 0) return scene;
   return PeirceStripScene(scene,
                           spec_.specimens[equilibrium.specimen].measurements[equilibrium.strip_of]);

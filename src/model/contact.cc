@@ -5,62 +5,15 @@
 #include <memory>
 #include <string>
 
-#include "costs/box_contact.h"
-#include "costs/cylinder_contact.h"
-#include "costs/disk_contact.h"
-#include "costs/plane_contact.h"
-#include "costs/sphere_contact.h"
+#include "src/model/obstacle_kinds.h"
 
 namespace drape {
 
 namespace {
 
-const char* KindName(ObstacleSpec::Kind kind) {
-  switch (kind) {
-    case ObstacleSpec::Kind::kSphere:
-      return "sphere";
-    case ObstacleSpec::Kind::kDisk:
-      return "disk";
-    case ObstacleSpec::Kind::kCylinder:
-      return "cylinder";
-    case ObstacleSpec::Kind::kBox:
-      return "box";
-    case ObstacleSpec::Kind::kPlane:
-      return "plane";
-    case ObstacleSpec::Kind::kPin:
-      return "pin";
-  }
-  return "obstacle";
-}
-
-// Calls `visit` with the obstacle's contact functor.
-template <typename Visitor>
-auto WithFunctor(const ObstacleSpec& o, double clearance, double stiffness, Visitor visit) {
-  switch (o.kind) {
-    case ObstacleSpec::Kind::kSphere:
-    case ObstacleSpec::Kind::kPin:  // a point support: a sphere of radius 0 (see sphere_contact.h)
-      return visit(SphereContact::Create(o.center.data(),
-                                         o.kind == ObstacleSpec::Kind::kPin ? 0.0 : o.radius,
-                                         clearance, stiffness));
-    case ObstacleSpec::Kind::kDisk:
-      return visit(DiskContact::Create(o.center.data(), o.radius, clearance, stiffness));
-    case ObstacleSpec::Kind::kCylinder:
-      return visit(
-          CylinderContact::Create(o.center.data(), o.radius, o.height, clearance, stiffness));
-    case ObstacleSpec::Kind::kBox:
-      return visit(BoxContact::Create(o.min.data(), o.max.data(), clearance, stiffness));
-    case ObstacleSpec::Kind::kPlane:
-      break;
-  }
-  return visit(PlaneContact::Create(o.center.data(), o.normal.data(), clearance, stiffness));
-}
-
-bool FullyFixed(const Model& model, int node) {
-  return model.fixed[3 * node] && model.fixed[3 * node + 1] && model.fixed[3 * node + 2];
-}
-
 void CheckContactInput(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact) {
   for (const ObstacleSpec& obstacle : obstacles) {
+    CheckedObstacleKind(obstacle);
     if (obstacle.friction > 0.0) {
       throw InputError(obstacle.where, "friction is not supported yet: obstacles are frictionless");
     }
@@ -76,9 +29,7 @@ void CheckContactInput(const std::vector<ObstacleSpec>& obstacles, const Contact
 double ContactStiffness(const ContactSpec& contact, const Model& model) {
   double reference = 0.0;
   for (int k = 0; k < model.num_nodes; ++k) {
-    reference += std::sqrt(model.applied[3 * k] * model.applied[3 * k] +
-                           model.applied[3 * k + 1] * model.applied[3 * k + 1] +
-                           model.applied[3 * k + 2] * model.applied[3 * k + 2]);
+    reference += model.applied_force(k).norm();
   }
   if (!(reference > 0.0)) reference = 1.0;
   const double allowed = kAllowedPenetration * contact.thickness;
@@ -86,7 +37,7 @@ double ContactStiffness(const ContactSpec& contact, const Model& model) {
 }
 
 double ObstacleDistance(const ObstacleSpec& obstacle, const double* x) {
-  return WithFunctor(obstacle, 0.0, 0.0, [x](const auto& functor) { return functor.Distance(x); });
+  return ObstacleKindOf(obstacle).distance(obstacle, x);
 }
 
 void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
@@ -97,24 +48,21 @@ void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSp
   model->contact = contact;
   const double stiffness = ContactStiffness(contact, *model);
   bool anchored = false;
-  for (int k = 0; k < model->num_nodes; ++k) anchored = anchored || FullyFixed(*model, k);
+  for (int k = 0; k < model->num_nodes; ++k) anchored = anchored || model->fully_fixed(k);
   const double reach = kReachFactor * model->size;
   // Least-squares shift of the potential (src/model/term.h): the energy at a full clearance's
   // depth.
   const double shift = stiffness * std::pow(contact.thickness, 3) / 3.0;
   for (size_t index = 0; index < obstacles.size(); ++index) {
     const ObstacleSpec& obstacle = obstacles[index];
-    const std::string type = std::string(KindName(obstacle.kind)) + "_contact";
+    const ObstacleKind& kind = ObstacleKindOf(obstacle);
     for (int k = 0; k < model->num_nodes; ++k) {
-      if (FullyFixed(*model, k)) continue;
-      const double* x = model->positions.data() + 3 * k;
+      if (model->fully_fixed(k)) continue;
+      const double* x = model->position(k).data();
       if (anchored && ObstacleDistance(obstacle, x) - contact.thickness > reach) continue;
-      WithFunctor(obstacle, contact.thickness, stiffness, [&](const auto& functor) {
-        model->contact_terms.push_back(
-            {static_cast<int>(model->terms.size()), static_cast<int>(index)});
-        model->terms.push_back(MakeTerm(type, {k}, functor, shift));
-        return 0;
-      });
+      model->contact_terms.push_back(
+          {static_cast<int>(model->terms.size()), static_cast<int>(index)});
+      model->terms.push_back(kind.make_term(obstacle, k, contact.thickness, stiffness, shift));
     }
   }
 }
@@ -136,8 +84,8 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
   for (int k = 0; k < model.num_nodes; ++k) {
     double deepest = 0.0;
     for (const ObstacleSpec& obstacle : obstacles) {
-      deepest =
-          std::max(deepest, contact.thickness - ObstacleDistance(obstacle, positions + 3 * k));
+      deepest = std::max(
+          deepest, contact.thickness - ObstacleDistance(obstacle, NodeAt(positions, k).data()));
     }
     if (deepest > 0.0) ++report.nodes_in_contact;
     report.max_penetration = std::max(report.max_penetration, deepest);

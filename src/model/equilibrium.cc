@@ -111,14 +111,14 @@ std::string StateProblem(const Model& model, const double* positions) {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   const bool started = static_cast<int>(model.initial.size()) == model.num_dofs();
   const double* start = started ? model.initial.data() : positions;
-  for (int node = 0; node < model.num_nodes; ++node) centre += Eigen::Vector3d(start + 3 * node);
+  for (int node = 0; node < model.num_nodes; ++node) centre += NodeAt(start, node);
   if (model.num_nodes > 0) centre /= model.num_nodes;
   double extent = model.size > 0.0 ? model.size : 1.0;
   for (int node = 0; node < model.num_nodes; ++node) {
-    extent = std::max(extent, (Eigen::Vector3d(start + 3 * node) - centre).norm());
+    extent = std::max(extent, (NodeAt(start, node) - centre).norm());
   }
   for (int node = 0; node < model.num_nodes; ++node) {
-    const double distance = (Eigen::Vector3d(positions + 3 * node) - centre).norm();
+    const double distance = (NodeAt(positions, node) - centre).norm();
     if (distance > kRunawayFactor * extent) {
       char text[200];
       std::snprintf(text, sizeof text,
@@ -130,7 +130,7 @@ std::string StateProblem(const Model& model, const double* positions) {
   }
   for (int node = 0; node < model.num_nodes; ++node) {
     for (size_t o = 0; o < model.obstacles.size(); ++o) {
-      const double distance = ObstacleDistance(model.obstacles[o], positions + 3 * node);
+      const double distance = ObstacleDistance(model.obstacles[o], NodeAt(positions, node).data());
       if (distance < 0.0) {
         char text[200];
         std::snprintf(text, sizeof text,
@@ -146,14 +146,14 @@ std::string StateProblem(const Model& model, const double* positions) {
 
 void CheckBalance(const Model& model, Certificate* certificate) {
   for (int node = 0; node < model.num_nodes; ++node) {
-    for (int c = 0; c < 3; ++c) certificate->applied_sum[c] += model.applied[3 * node + c];
+    certificate->applied_sum += model.applied_force(node);
   }
   const Eigen::Vector3d total = certificate->reaction_sum + certificate->contact_sum +
                                 certificate->constraint_sum + certificate->applied_sum;
   certificate->balance_error = total.norm() / certificate->reference_force;
   int free_nodes = 0;
   for (int node = 0; node < model.num_nodes; ++node) {
-    if (!model.fixed[3 * node] || !model.fixed[3 * node + 1] || !model.fixed[3 * node + 2]) {
+    if (!model.fully_fixed(node)) {
       ++free_nodes;
     }
   }

@@ -24,7 +24,9 @@
 #include "src/model/model.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "costs/constant_force_potential.h"
@@ -37,6 +39,7 @@
 #include "src/model/mesh.h"
 #include "src/model/selection.h"
 #include "src/model/stretch_limit.h"
+#include "src/scene/solver_methods.h"
 
 namespace drape {
 
@@ -55,6 +58,39 @@ std::map<std::string, int> Model::TermCounts() const {
 namespace {
 
 const char* const kAxisNames[3] = {"x", "y", "z"};
+
+// The run's time limit bounds the build of the model too (solver.time_limit, else the method's
+// default): Check, called between the stages, stops a build past it with an InputError located at
+// the solver section (a huge mesh under a short limit stops near the limit, not minutes later).
+class BuildClock {
+ public:
+  explicit BuildClock(const Scene& scene)
+      : scene_(scene),
+        limit_(FindSolverMethod(scene.solver.method)
+                   ? EffectiveTimeLimit(scene.solver, scene.solver.method)
+                   : scene.solver.time_limit.value_or(std::numeric_limits<double>::infinity())),
+        start_(std::chrono::steady_clock::now()) {}
+
+  // `done`: what has been built so far, for the message.
+  void Check(const std::string& done) const {
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (!(elapsed > limit_)) return;
+    std::ostringstream text;
+    text.precision(3);
+    text << "building the model took " << elapsed << " s (" << done
+         << "), more than the time limit " << limit_ << " s (solver.time_limit"
+         << (scene_.solver.time_limit ? "" : ", the method's default")
+         << "): raise the time limit or use a coarser mesh (mesh.nodes, mesh.spacing)";
+    const Location& where = scene_.solver.where.line > 0 ? scene_.solver.where : scene_.mesh.where;
+    throw InputError(where, text.str());
+  }
+
+ private:
+  const Scene& scene_;
+  const double limit_;
+  const std::chrono::steady_clock::time_point start_;
+};
 
 void RejectUnsupported(const Scene& scene) {
   const MaterialSpec& material = scene.material;
@@ -183,11 +219,11 @@ void AddSprings(const SpringsSpec& springs, const Mesh& mesh, Model* model) {
 void AddConstantForce(const std::string& type, int node, const Eigen::Vector3d& force,
                       Model* model) {
   if (force.norm() == 0.0) return;
-  const double* reference = model->positions.data() + 3 * node;
+  const double* reference = model->position(node).data();
   const double shift = force.norm() * 2.0 * model->size;
   model->terms.push_back(
       MakeTerm(type, {node}, ConstantForcePotential::Create(force.data(), reference), shift));
-  for (int c = 0; c < 3; ++c) model->applied[3 * node + c] += force[c];
+  NodeAt(model->applied, node) += force;
 }
 
 // The place of each selected node along the selection, from 0 at its first node (lowest id) to 1
@@ -296,7 +332,7 @@ bool SomeObstacleOnThePath(const Scene& scene, const Model& model,
   constexpr int kMaxSteps = 400;
   for (const ObstacleSpec& obstacle : scene.obstacles) {
     for (int k = 0; k < model.num_nodes; ++k) {
-      const Eigen::Vector3d start = Eigen::Map<const Eigen::Vector3d>(&model.positions[3 * k]);
+      const Eigen::Vector3d start = model.position(k);
       const double reach = 1e3 * (model.size + std::abs(ObstacleDistance(obstacle, start.data())));
       double travelled = 0.0;
       for (int step = 0; step < kMaxSteps && travelled <= reach; ++step) {
@@ -315,7 +351,7 @@ bool SomeObstacleOnThePath(const Scene& scene, const Model& model,
 void CheckNoNodeStartsInside(const Scene& scene, const Model& model) {
   for (const ObstacleSpec& obstacle : scene.obstacles) {
     for (int k = 0; k < model.num_nodes; ++k) {
-      const double distance = ObstacleDistance(obstacle, &model.positions[3 * k]);
+      const double distance = ObstacleDistance(obstacle, model.position(k).data());
       if (distance < -1e-9 * model.size) {
         std::ostringstream text;
         text << "node " << k << " starts inside this obstacle (" << -distance
@@ -373,15 +409,18 @@ void CheckPressureHeld(const Scene& scene, const Model& model) {
 }  // namespace
 
 Model BuildModel(const Scene& scene) {
+  const BuildClock clock(scene);
   RejectUnsupported(scene);
   const Mesh mesh = BuildMesh(scene.mesh);
+  const std::string nodes = std::to_string(mesh.nodes.size()) + " nodes";
+  clock.Check("the mesh of " + nodes);
   CheckPlanarFor2d(scene, mesh);
   Model model;
   model.dimension = scene.dimension;
   model.num_nodes = static_cast<int>(mesh.nodes.size());
   model.positions.resize(model.num_dofs());
   for (int k = 0; k < model.num_nodes; ++k) {
-    for (int c = 0; c < 3; ++c) model.positions[3 * k + c] = mesh.nodes[k][c];
+    model.position(k) = Eigen::Vector3d(mesh.nodes[k][0], mesh.nodes[k][1], mesh.nodes[k][2]);
   }
   model.fixed.assign(model.num_dofs(), 0);
   model.applied.assign(model.num_dofs(), 0.0);
@@ -407,12 +446,15 @@ Model BuildModel(const Scene& scene) {
       AddStretchLimitTerms(*scene.material.springs.stretch_limit, &model);
     }
   }
+  clock.Check("the elastic terms of " + nodes);
   AddLoads(scene, mesh, &model);
   if (!scene.obstacles.empty()) AddContactTerms(scene.obstacles, scene.contact, &model);
+  clock.Check("the loads and contact terms of " + nodes);
   CheckNoNodeStartsInside(scene, model);
   CheckHasMinimum(scene, model);
   CheckPressureHeld(scene, model);
   ValidateModel(model);
+  clock.Check("the checks of the model of " + nodes);
   return model;
 }
 

@@ -4,6 +4,7 @@
 #ifndef DRAPE_SRC_MODEL_MODEL_H_
 #define DRAPE_SRC_MODEL_MODEL_H_
 
+#include <Eigen/Core>
 #include <array>
 #include <map>
 #include <memory>
@@ -14,6 +15,21 @@
 #include "src/scene/scene.h"
 
 namespace drape {
+
+// One node's 3 coordinates in an array of 3 per node (positions, forces, loads): NodeAt(x, k) in
+// place of x[3 * k + c].
+inline Eigen::Map<Eigen::Vector3d> NodeAt(double* values, int node) {
+  return Eigen::Map<Eigen::Vector3d>(values + 3 * node);
+}
+inline Eigen::Map<const Eigen::Vector3d> NodeAt(const double* values, int node) {
+  return Eigen::Map<const Eigen::Vector3d>(values + 3 * node);
+}
+inline Eigen::Map<Eigen::Vector3d> NodeAt(std::vector<double>& values, int node) {
+  return NodeAt(values.data(), node);
+}
+inline Eigen::Map<const Eigen::Vector3d> NodeAt(const std::vector<double>& values, int node) {
+  return NodeAt(values.data(), node);
+}
 
 struct Model {
   int dimension = 3;
@@ -41,6 +57,17 @@ struct Model {
   std::vector<std::array<int, 2>> contact_terms;
 
   int num_dofs() const { return 3 * num_nodes; }
+  // Node views: one node's coordinates of `positions`, `initial`, `applied`.
+  Eigen::Map<Eigen::Vector3d> position(int node) { return NodeAt(positions, node); }
+  Eigen::Map<const Eigen::Vector3d> position(int node) const { return NodeAt(positions, node); }
+  Eigen::Map<const Eigen::Vector3d> initial_position(int node) const {
+    return NodeAt(initial, node);
+  }
+  Eigen::Map<const Eigen::Vector3d> applied_force(int node) const { return NodeAt(applied, node); }
+  // Whether all three coordinates of `node` are prescribed.
+  bool fully_fixed(int node) const {
+    return fixed[3 * node] && fixed[3 * node + 1] && fixed[3 * node + 2];
+  }
   int num_free_dofs() const;
   // Number of terms of each type, for summary.json.
   std::map<std::string, int> TermCounts() const;

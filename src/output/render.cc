@@ -11,6 +11,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "src/model/obstacle_kinds.h"
+
 namespace drape {
 
 namespace {
@@ -133,9 +135,7 @@ const double kDash[] = {6.0, 4.0};
 const Rgb kFabricFront{0.33, 0.56, 0.90}, kFabricBack{0.96, 0.76, 0.50};
 const Rgb kObstacle{0.62, 0.62, 0.60}, kFloor{0.86, 0.86, 0.84}, kChain{0.12, 0.25, 0.55};
 
-Vec3 Node(const Model& model, int k) {
-  return {model.positions[3 * k], model.positions[3 * k + 1], model.positions[3 * k + 2]};
-}
+Vec3 Node(const Model& model, int k) { return model.position(k); }
 
 struct Box3 {
   Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
@@ -207,48 +207,46 @@ void AddBox(const Vec3& lo, const Vec3& hi, Rgb colour, std::vector<Primitive>* 
   AddPatch(lo + ex, ey, ez, cells, colour, out);
 }
 
-// The obstacles as shaded polygons. Unbounded or support-like parts are sized from the fabric's
-// bounding box `fabric`: a plane is a square patch 1.4 × its extent around the point of the plane
-// nearest the fabric's centre; a disk is drawn on a stem (a tenth of its radius) down to the
-// fabric's lowest point, a pin as a thin stem.
+// A plane as a square patch 1.4 × the fabric's extent around the point of the plane nearest the
+// fabric's centre, drawn behind everything.
+void AddPlanePatch(const Vec3& point, const Vec3& normal, const Box3& fabric,
+                   std::vector<Primitive>* out) {
+  const double extent = std::max(fabric.Extent(), 1e-9);
+  const Vec3 foot = fabric.Centre() - (fabric.Centre() - point).dot(normal) * normal;
+  const Vec3 a =
+      (std::abs(normal.z()) < 0.9 ? normal.cross(Vec3::UnitZ()) : normal.cross(Vec3::UnitX()))
+          .normalized() *
+      1.4 * extent;
+  const Vec3 b = normal.cross(a);
+  const size_t first = out->size();
+  AddPatch(foot - 0.5 * a - 0.5 * b, a, b, 10, kFloor, out);
+  for (size_t k = first; k < out->size(); ++k) (*out)[k].background = true;
+}
+
+void AddPart(const ObstaclePart& part, const Box3& fabric, std::vector<Primitive>* out) {
+  switch (part.shape) {
+    case ObstaclePart::Shape::kSphere:
+      AddSphere(part.a, part.radius, kObstacle, out);
+      break;
+    case ObstaclePart::Shape::kCylinder:
+      AddCylinder(part.a, part.radius, part.height, part.capped, kObstacle, out);
+      break;
+    case ObstaclePart::Shape::kBox:
+      AddBox(part.a, part.b, kObstacle, out);
+      break;
+    case ObstaclePart::Shape::kPlane:
+      AddPlanePatch(part.a, part.b, fabric, out);
+      break;
+  }
+}
+
+// The obstacles as shaded polygons, each drawn as its kind says (src/model/obstacle_kinds.h),
+// unbounded or support-like parts sized from the fabric's bounding box `fabric`.
 void AddObstacles(const std::vector<ObstacleSpec>& obstacles, const Box3& fabric, double floor_z,
                   std::vector<Primitive>* out) {
-  const double extent = std::max(fabric.Extent(), 1e-9);
+  const DrawingFrame frame{std::max(fabric.Extent(), 1e-9), floor_z};
   for (const ObstacleSpec& o : obstacles) {
-    switch (o.kind) {
-      case ObstacleSpec::Kind::kSphere:
-        AddSphere(o.center, o.radius, kObstacle, out);
-        break;
-      case ObstacleSpec::Kind::kDisk: {
-        AddCylinder(o.center, o.radius, 0.02 * o.radius, true, kObstacle, out);
-        const double stem = std::max(o.center.z() - floor_z, 0.02 * o.radius);
-        AddCylinder(o.center, 0.1 * o.radius, stem, false, kObstacle, out);
-        break;
-      }
-      case ObstacleSpec::Kind::kCylinder:
-        AddCylinder(o.center, o.radius, o.height, true, kObstacle, out);
-        break;
-      case ObstacleSpec::Kind::kBox:
-        AddBox(o.min, o.max, kObstacle, out);
-        break;
-      case ObstacleSpec::Kind::kPin: {
-        const double stem = std::max(o.center.z() - floor_z, 0.05 * extent);
-        AddCylinder(o.center, 0.006 * extent, stem, true, kObstacle, out);
-        break;
-      }
-      case ObstacleSpec::Kind::kPlane: {
-        const Vec3 n = o.normal.normalized();
-        const Vec3 foot = fabric.Centre() - (fabric.Centre() - o.center).dot(n) * n;
-        const Vec3 a =
-            (std::abs(n.z()) < 0.9 ? n.cross(Vec3::UnitZ()) : n.cross(Vec3::UnitX())).normalized() *
-            1.4 * extent;
-        const Vec3 b = n.cross(a);
-        const size_t first = out->size();
-        AddPatch(foot - 0.5 * a - 0.5 * b, a, b, 10, kFloor, out);
-        for (size_t k = first; k < out->size(); ++k) (*out)[k].background = true;
-        break;
-      }
-    }
+    for (const ObstaclePart& part : ObstacleKindOf(o).draw(o, frame)) AddPart(part, fabric, out);
   }
 }
 
@@ -298,18 +296,17 @@ void Frame(const std::vector<Primitive>& primitives, const Box3& fabric, int wid
 // lower: its shadow would float beside it.
 double FloorHeight(const std::vector<ObstacleSpec>& obstacles, const Box3& fabric) {
   for (const ObstacleSpec& o : obstacles) {
-    if (o.kind == ObstacleSpec::Kind::kPlane && o.normal.normalized().z() > 0.999 &&
-        o.center.z() <= fabric.min.z()) {
-      return o.center.z();
+    for (const ObstaclePart& part : ObstacleKindOf(o).draw(o, DrawingFrame{})) {
+      if (part.shape == ObstaclePart::Shape::kPlane && part.b.z() > 0.999 &&
+          part.a.z() <= fabric.min.z()) {
+        return part.a.z();
+      }
     }
   }
   const double z = fabric.min.z() - 0.05 * fabric.Extent();
   for (const ObstacleSpec& o : obstacles) {
-    double bottom = std::numeric_limits<double>::infinity();
-    if (o.kind == ObstacleSpec::Kind::kBox) bottom = o.min.z();
-    if (o.kind == ObstacleSpec::Kind::kCylinder) bottom = o.center.z() - o.height;
-    if (o.kind == ObstacleSpec::Kind::kSphere) bottom = o.center.z() - o.radius;
-    if (bottom < z) return std::numeric_limits<double>::quiet_NaN();
+    const double bottom = ObstacleKindOf(o).lowest_z(o);
+    if (std::isfinite(bottom) && bottom < z) return std::numeric_limits<double>::quiet_NaN();
   }
   return z;
 }
@@ -319,7 +316,7 @@ void AddFloorShadow(const Model& model, double floor_z, std::vector<Primitive>* 
   for (const auto& t : model.triangles) {
     Primitive shadow{{}, kFloor, true};
     for (int v : t) {
-      shadow.points.push_back({model.positions[3 * v], model.positions[3 * v + 1], floor_z});
+      shadow.points.push_back({model.position(v).x(), model.position(v).y(), floor_z});
     }
     floor->push_back(shadow);
   }
@@ -483,6 +480,56 @@ void SplitObstacles(const std::vector<Primitive>& obstacles, double edge,
 
 }  // namespace
 
+namespace {
+
+// The key of drape.png's colours and marks, top right: the fabric's two faces (or a chain), the
+// fixed nodes (filled: every direction held; hollow: some) and the obstacles, as far as drawn.
+void PaintLegend(cairo_t* cr, const Scene& scene, const Model& model, int width) {
+  struct Entry {
+    std::string text;
+    Rgb colour;
+    int mark;  // 0 swatch, 1 line, 2 filled square, 3 hollow square
+  };
+  std::vector<Entry> entries;
+  if (!model.triangles.empty()) {
+    entries.push_back({"upper face (as it lay flat)", kFabricFront, 0});
+    entries.push_back({"lower face", kFabricBack, 0});
+  }
+  if (!model.edges.empty()) entries.push_back({"chain", kChain, 1});
+  bool fully = false, partly = false;
+  for (int k = 0; k < model.num_nodes; ++k) {
+    const int held = HeldCoordinates(model, k);
+    fully = fully || held == (model.dimension != 2 ? 3 : 2);
+    partly = partly || (held > 0 && held < (model.dimension != 2 ? 3 : 2));
+  }
+  if (fully) entries.push_back({"fixed node", {0, 0, 0}, 2});
+  if (partly) entries.push_back({"partly fixed node", {0, 0, 0}, 3});
+  if (!scene.obstacles.empty()) entries.push_back({"obstacle", kObstacle, 0});
+  const double x = width - 210.0;
+  for (size_t k = 0; k < entries.size(); ++k) {
+    const Entry& entry = entries[k];
+    const double y = 24.0 + 18.0 * k;
+    cairo_set_source_rgb(cr, entry.colour.r, entry.colour.g, entry.colour.b);
+    if (entry.mark == 1) {
+      cairo_move_to(cr, x, y - 4);
+      cairo_line_to(cr, x + 14, y - 4);
+      cairo_set_line_width(cr, 2.5);
+      cairo_stroke(cr);
+    } else if (entry.mark == 3) {
+      cairo_rectangle(cr, x + 3.5, y - 7.5, 7, 7);
+      cairo_set_line_width(cr, 1.5);
+      cairo_stroke(cr);
+    } else {
+      const double side = entry.mark == 2 ? 7.0 : 12.0;
+      cairo_rectangle(cr, x + 7 - side / 2, y - 4 - side / 2, side, side);
+      cairo_fill(cr);
+    }
+    Text(cr, x + 22, y, entry.text, 12);
+  }
+}
+
+}  // namespace
+
 void DrawDrapeView(const Scene& scene, const Model& model, std::ostream& png,
                    const DrapeViewOptions& options) {
   assert(model.num_nodes > 0);
@@ -536,6 +583,7 @@ void DrawDrapeView(const Scene& scene, const Model& model, std::ostream& png,
   for (size_t k = 0; k < options.caption.size(); ++k) {
     Text(cr, 20, 70 + 20.0 * k, options.caption[k], 13);
   }
+  PaintLegend(cr, scene, model, options.width);
   PaintAxes(cr, camera, 45, options.height - 35);
   ScaleBar(cr, options.width - 200, options.height - 25, camera.scale, 140);
   WritePng(surface.get(), png);

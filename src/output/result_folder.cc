@@ -71,13 +71,30 @@ void Rename(const fs::path& from, const fs::path& to) {
 }  // namespace
 
 const std::vector<std::string>& ResultFileNames() {
-  static const std::vector<std::string> names = {"summary.json", "nodes.csv", "history.csv",
-                                                 "kinetic.csv",  "mesh.vtk",  "mesh.obj",
-                                                 "profile.csv",  "drape.png", "shadow.png"};
+  static const std::vector<std::string> names = {"summary.json",
+                                                 "nodes.csv",
+                                                 "history.csv",
+                                                 "kinetic.csv",
+                                                 "mesh.vtk",
+                                                 "mesh.obj",
+                                                 "profile.csv",
+                                                 "drape.png",
+                                                 "shadow.png",
+                                                 "scene.yaml",
+                                                 "kinetic_explicit-euler.csv",
+                                                 "kinetic_puiseux-dynamic.csv"};  // TraceFileName
   return names;
 }
 
-ResultFolderLock::ResultFolderLock(const fs::path& directory) {
+ResultFolderLock::ResultFolderLock(const fs::path& directory, bool remove_if_unused) {
+  if (remove_if_unused) {
+    const fs::path folder = fs::absolute(directory);
+    for (fs::path p = folder; !p.empty() && p != p.root_path(); p = p.parent_path()) {
+      std::error_code ignored;
+      if (fs::exists(p, ignored)) break;
+      created_ = p;
+    }
+  }
   fs::create_directories(directory);
   key_ = fs::weakly_canonical(directory).string();
   std::lock_guard<std::mutex> guard(HeldLocksMutex());
@@ -98,10 +115,13 @@ ResultFolderLock::ResultFolderLock(const fs::path& directory) {
 }
 
 ResultFolderLock::~ResultFolderLock() {
-  if (descriptor_ < 0) return;
-  std::lock_guard<std::mutex> guard(HeldLocksMutex());
-  HeldLocks().erase(key_);
-  ::close(descriptor_);  // releases the flock
+  if (descriptor_ >= 0) {
+    std::lock_guard<std::mutex> guard(HeldLocksMutex());
+    HeldLocks().erase(key_);
+    ::close(descriptor_);  // releases the flock
+  }
+  std::error_code ignored;
+  if (!created_.empty()) fs::remove_all(created_, ignored);
 }
 
 ResultFolder::ResultFolder(const fs::path& directory) : directory_(directory), lock_(directory) {

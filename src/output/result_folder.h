@@ -20,16 +20,22 @@ const std::vector<std::string>& ResultFileNames();
 // Holds the folder's lock for its lifetime; creates the folder. Throws std::runtime_error when
 // another process holds it ("another drape run is writing into ..."). Taking it again in the same
 // process (the command, then the writers) is allowed.
+//
+// With `remove_if_unused`, the folders the lock had to create are removed again when it is released
+// unless KeepFolder() was called: a run that takes the lock before it solves and then fails (a
+// model error found at solve time) leaves no folder behind.
 class ResultFolderLock {
  public:
-  explicit ResultFolderLock(const std::filesystem::path& directory);
+  explicit ResultFolderLock(const std::filesystem::path& directory, bool remove_if_unused = false);
   ~ResultFolderLock();
   ResultFolderLock(const ResultFolderLock&) = delete;
   ResultFolderLock& operator=(const ResultFolderLock&) = delete;
+  void KeepFolder() { created_.clear(); }
 
  private:
   std::string key_;
-  int descriptor_ = -1;  // -1: the lock was already held in this process
+  int descriptor_ = -1;            // -1: the lock was already held in this process
+  std::filesystem::path created_;  // the outermost folder created, to remove (empty: none)
 };
 
 class ResultFolder {

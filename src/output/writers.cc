@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -22,6 +23,8 @@
 #include "src/output/json.h"
 #include "src/output/render.h"
 #include "src/output/result_folder.h"
+#include "src/output/scene_yaml.h"
+#include "src/output/version.h"
 
 namespace drape {
 
@@ -47,18 +50,6 @@ std::string JsonMap(const Map& map, int depth, Format format) {
   members.reserve(map.size());
   for (const auto& [key, value] : map) members.emplace_back(key, format(value));
   return JsonObject(members, depth);
-}
-
-std::string FixedLetters(const Model& model, int node) {
-  std::string letters;
-  for (int c = 0; c < 3; ++c) {
-    if (model.fixed[3 * node + c]) letters += "xyz"[c];
-  }
-  return letters;
-}
-
-bool AnyFixed(const Model& model, int node) {
-  return model.fixed[3 * node] || model.fixed[3 * node + 1] || model.fixed[3 * node + 2];
 }
 
 // The certificate's force on a node (reaction where fixed, residual where free); NaN if the
@@ -105,11 +96,11 @@ std::string JsonVector(const Eigen::Vector3d& v) {
 
 // How deep the fabric sits in the obstacles' clearance layer (the contact penalty's accuracy), and
 // the force the obstacles exert on it, in total and per obstacle (in the scene's order), N.
-void AddContactMembers(const Scene& scene, const Model& model, const Certificate& certificate,
+void AddContactMembers(const Scene& scene, const RunResult& result,
                        std::vector<std::pair<std::string, std::string>>* members) {
   if (scene.obstacles.empty()) return;
-  const ContactReport contact =
-      MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
+  const ContactReport& contact = result.contact;
+  const Certificate& certificate = result.certificate;
   std::string by_obstacle = "[";
   for (size_t k = 0; k < certificate.contact_sum_by_obstacle.size(); ++k) {
     by_obstacle += (k ? ", " : "") + JsonVector(certificate.contact_sum_by_obstacle[k]);
@@ -178,9 +169,32 @@ std::string BalanceObject(const Certificate& certificate) {
                     1);
 }
 
+// summary.json's provenance: the format, drape's version, the command line, its --set overrides
+// and the material parameters in SI units (with their units).
+void AddProvenanceMembers(const Scene& scene, const Provenance& provenance,
+                          std::vector<std::pair<std::string, std::string>>* members) {
+  members->emplace_back("format_version", std::to_string(kResultFormatVersion));
+  members->emplace_back("drape_version", JsonString(DrapeVersion()));
+  members->emplace_back("command_line", JsonString(provenance.command_line));
+  std::string overrides = "[";
+  for (size_t k = 0; k < provenance.overrides.size(); ++k) {
+    overrides += (k ? ", " : "") + JsonString(provenance.overrides[k]);
+  }
+  members->emplace_back("overrides", overrides + "]");
+  std::vector<std::pair<std::string, std::string>> values = {
+      {"model", JsonString(scene.material.model)}};
+  std::vector<std::pair<std::string, std::string>> units;
+  for (const MaterialValue& value : MaterialSiValues(scene.material)) {
+    values.emplace_back(value.key, JsonNumber(value.value));
+    units.emplace_back(value.key, JsonString(value.unit));
+  }
+  values.emplace_back("units", JsonObject(units, 2));
+  members->emplace_back("material_si", JsonObject(values, 1));
+}
+
 void WriteSummary(const Scene& scene, const Model& model, const RunResult& result,
                   const std::optional<DrapeAnalysis>& drape, const LevelsReport* levels,
-                  std::ostream& out) {
+                  const Provenance& provenance, std::ostream& out) {
   const Certificate& certificate = result.certificate;
   const SolverSummary& summary = result.summary;
   std::vector<std::pair<std::string, double>> energy{{"total", certificate.energy}};
@@ -217,11 +231,12 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
     members.emplace_back("state_problem", JsonString(certificate.unsound));
   }
   if (drape) AddDrapeMembers(*drape, &members);
-  AddContactMembers(scene, model, certificate, &members);
+  AddContactMembers(scene, result, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics",
                        JsonMap(summary.statistics, 1, [](double v) { return JsonNumber(v); }));
   if (levels) AddLevelsMembers(*levels, &members);
+  AddProvenanceMembers(scene, provenance, &members);
   out << JsonObject(members, 0) << "\n";
 }
 
@@ -232,15 +247,38 @@ double ContactForce(const RunResult& result, int k) {
   return k < static_cast<int>(forces.size()) ? forces[k] : NAN;
 }
 
+// The certificate's force split by the node's constraint: the reaction on the fixed coordinates
+// (0 on free ones) and the residual on the free ones (0 on fixed ones), N.
+double Reaction(const Model& model, const RunResult& result, int k) {
+  return model.fixed[k] ? NodeForce(result, k) : 0.0;
+}
+double Residual(const Model& model, const RunResult& result, int k) {
+  return model.fixed[k] ? 0.0 : NodeForce(result, k);
+}
+
+// 1 where an obstacle pushes on the node (the contact penalty is active), else 0.
+int InContact(const RunResult& result, int node) {
+  for (int c = 0; c < 3; ++c) {
+    const double force = ContactForce(result, 3 * node + c);
+    if (std::isfinite(force) && force != 0.0) return 1;
+  }
+  return 0;
+}
+
+// nodes.csv (format kResultFormatVersion): units in every header, booleans as 0/1.
 void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) {
-  out << "id,i,j,x,y,z,fixed,fx,fy,fz,contact_fx,contact_fy,contact_fz\n";
+  out << "id,i,j,x_m,y_m,z_m,fixed_x,fixed_y,fixed_z,in_contact,reaction_x_N,reaction_y_N,"
+         "reaction_z_N,residual_x_N,residual_y_N,residual_z_N,contact_x_N,contact_y_N,"
+         "contact_z_N\n";
   for (int node = 0; node < model.num_nodes; ++node) {
     const auto ij = node < static_cast<int>(model.grid_index.size()) ? model.grid_index[node]
                                                                      : std::array<int, 2>{-1, -1};
     out << node << ',' << ij[0] << ',' << ij[1];
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(model.positions[3 * node + c]);
-    out << ',' << FixedLetters(model, node);
-    for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(NodeForce(result, 3 * node + c));
+    for (int c = 0; c < 3; ++c) out << ',' << (model.fixed[3 * node + c] ? 1 : 0);
+    out << ',' << InContact(result, node);
+    for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(Reaction(model, result, 3 * node + c));
+    for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(Residual(model, result, 3 * node + c));
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(ContactForce(result, 3 * node + c));
     out << '\n';
   }
@@ -275,27 +313,54 @@ void WriteVectors(const std::string& name, const std::function<double(int)>& val
   }
 }
 
-// Legacy ASCII VTK polydata: the surface triangles, the line elements, and per node the
-// displacement from the start, the certificate's force and whether the node is (partly) fixed.
+double Distance(const std::vector<double>& x, int a, int b) {
+  return (NodeAt(x, a) - NodeAt(x, b)).norm();
+}
+
+double TriangleArea(const std::vector<double>& x, const std::array<int, 3>& t) {
+  const Eigen::Vector3d a = NodeAt(x, t[0]), b = NodeAt(x, t[1]), c = NodeAt(x, t[2]);
+  return 0.5 * (b - a).cross(c - a).norm();
+}
+
+// The cells' strain from the start (model.initial): A/A₀ − 1 for a triangle, L/L₀ − 1 for a line
+// element; 0 where the start is degenerate.
+std::vector<double> CellStrains(const Model& model) {
+  std::vector<double> strains;
+  strains.reserve(model.triangles.size() + model.edges.size());
+  const bool known = model.initial.size() == model.positions.size();
+  for (const auto& t : model.triangles) {
+    const double rest = known ? TriangleArea(model.initial, t) : 0.0;
+    strains.push_back(rest > 0.0 ? TriangleArea(model.positions, t) / rest - 1.0 : 0.0);
+  }
+  for (const auto& e : model.edges) {
+    const double rest = known ? Distance(model.initial, e[0], e[1]) : 0.0;
+    strains.push_back(rest > 0.0 ? Distance(model.positions, e[0], e[1]) / rest - 1.0 : 0.0);
+  }
+  return strains;
+}
+
+// Legacy ASCII VTK unstructured grid: triangles (VTK_TRIANGLE) and line elements (VTK_LINE); per
+// node its id, displacement from the start, reaction, residual and contact force (N), the
+// per-coordinate fixed mask (0/1 × 3) and in_contact (0/1); per cell the strain (CellStrains).
 void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, std::ostream& out) {
   std::string title = "drape " + scene.name;
   std::replace(title.begin(), title.end(), '\n', ' ');
-  out << "# vtk DataFile Version 3.0\n" << title.substr(0, 250) << "\nASCII\nDATASET POLYDATA\n";
+  out << "# vtk DataFile Version 3.0\n"
+      << title.substr(0, 250) << "\nASCII\nDATASET UNSTRUCTURED_GRID\n";
   out << "POINTS " << model.num_nodes << " double\n";
   for (int node = 0; node < model.num_nodes; ++node) {
-    out << FormatNumber(model.positions[3 * node]) << ' '
-        << FormatNumber(model.positions[3 * node + 1]) << ' '
-        << FormatNumber(model.positions[3 * node + 2]) << '\n';
+    const auto p = model.position(node);
+    out << FormatNumber(p.x()) << ' ' << FormatNumber(p.y()) << ' ' << FormatNumber(p.z()) << '\n';
   }
-  if (!model.triangles.empty()) {
-    out << "POLYGONS " << model.triangles.size() << ' ' << 4 * model.triangles.size() << '\n';
-    for (const auto& t : model.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-  }
-  if (!model.edges.empty()) {
-    out << "LINES " << model.edges.size() << ' ' << 3 * model.edges.size() << '\n';
-    for (const auto& e : model.edges) out << "2 " << e[0] << ' ' << e[1] << '\n';
-  }
+  const size_t cells = model.triangles.size() + model.edges.size();
+  out << "CELLS " << cells << ' ' << 4 * model.triangles.size() + 3 * model.edges.size() << '\n';
+  for (const auto& t : model.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  for (const auto& e : model.edges) out << "2 " << e[0] << ' ' << e[1] << '\n';
+  out << "CELL_TYPES " << cells << '\n';
+  for (size_t k = 0; k < cells; ++k) out << (k < model.triangles.size() ? 5 : 3) << '\n';
   out << "POINT_DATA " << model.num_nodes << '\n';
+  out << "SCALARS id int 1\nLOOKUP_TABLE default\n";
+  for (int node = 0; node < model.num_nodes; ++node) out << node << '\n';
   WriteVectors(
       "displacement",
       [&model](int k) {
@@ -304,23 +369,85 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
       },
       model.num_nodes, out);
   WriteVectors(
-      "force", [&result](int k) { return NodeForce(result, k); }, model.num_nodes, out);
+      "reaction", [&](int k) { return Reaction(model, result, k); }, model.num_nodes, out);
+  WriteVectors(
+      "residual", [&](int k) { return Residual(model, result, k); }, model.num_nodes, out);
   WriteVectors(
       "contact_force", [&result](int k) { return ContactForce(result, k); }, model.num_nodes, out);
-  out << "SCALARS fixed int 1\nLOOKUP_TABLE default\n";
-  for (int node = 0; node < model.num_nodes; ++node) out << (AnyFixed(model, node) ? 1 : 0) << '\n';
+  out << "SCALARS fixed int 3\nLOOKUP_TABLE default\n";
+  for (int node = 0; node < model.num_nodes; ++node) {
+    out << (model.fixed[3 * node] ? 1 : 0) << ' ' << (model.fixed[3 * node + 1] ? 1 : 0) << ' '
+        << (model.fixed[3 * node + 2] ? 1 : 0) << '\n';
+  }
+  out << "SCALARS in_contact int 1\nLOOKUP_TABLE default\n";
+  for (int node = 0; node < model.num_nodes; ++node) out << InContact(result, node) << '\n';
+  if (cells == 0) return;
+  out << "CELL_DATA " << cells << "\nSCALARS strain double 1\nLOOKUP_TABLE default\n";
+  for (double strain : CellStrains(model)) out << FormatNumber(strain) << '\n';
 }
 
-// Wavefront OBJ: vertices, triangular faces and line elements (1-based indices).
-void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
-  out << "# drape: " << scene.name << "\n";
+// Area-weighted vertex normals of the surface at the solved positions (zero where no triangle).
+std::vector<Eigen::Vector3d> VertexNormals(const Model& model) {
+  std::vector<Eigen::Vector3d> normals(model.num_nodes, Eigen::Vector3d::Zero());
+  for (const auto& t : model.triangles) {
+    const Eigen::Vector3d a = model.position(t[0]), b = model.position(t[1]),
+                          c = model.position(t[2]);
+    const Eigen::Vector3d n = (b - a).cross(c - a);  // twice the area, along the normal
+    for (int v : t) normals[v] += n;
+  }
+  for (auto& n : normals) {
+    if (n.norm() > 0.0) n.normalize();
+  }
+  return normals;
+}
+
+// The flat pattern as texture coordinates: the start positions on their two widest axes, scaled
+// by the larger extent into [0, 1] (the aspect ratio kept).
+std::vector<std::array<double, 2>> PatternCoordinates(const Model& model) {
+  const bool known = model.initial.size() == model.positions.size();
+  const std::vector<double>& start = known ? model.initial : model.positions;
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
   for (int node = 0; node < model.num_nodes; ++node) {
-    out << "v " << FormatNumber(model.positions[3 * node]) << ' '
-        << FormatNumber(model.positions[3 * node + 1]) << ' '
-        << FormatNumber(model.positions[3 * node + 2]) << '\n';
+    const Eigen::Vector3d p = NodeAt(start, node);
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  const Eigen::Vector3d extent = high - low;
+  int narrowest = 0;
+  extent.minCoeff(&narrowest);
+  const int u = narrowest == 0 ? 1 : 0, v = narrowest == 2 ? 1 : 2;
+  const double scale = std::max({extent[u], extent[v], 1e-300});
+  std::vector<std::array<double, 2>> uv;
+  uv.reserve(model.num_nodes);
+  for (int node = 0; node < model.num_nodes; ++node) {
+    const auto p = NodeAt(start, node);
+    uv.push_back({(p[u] - low[u]) / scale, (p[v] - low[v]) / scale});
+  }
+  return uv;
+}
+
+// Wavefront OBJ: vertices (z up, as solved), and for a surface the vertex normals and the flat
+// pattern as texture coordinates (f v/vt/vn), then line elements (1-based).
+void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
+  out << "# drape: " << scene.name << " (z up, m)\n";
+  for (int node = 0; node < model.num_nodes; ++node) {
+    const auto p = model.position(node);
+    out << "v " << FormatNumber(p.x()) << ' ' << FormatNumber(p.y()) << ' ' << FormatNumber(p.z())
+        << '\n';
+  }
+  if (!model.triangles.empty()) {
+    for (const auto& [u, v] : PatternCoordinates(model)) {
+      out << "vt " << FormatNumber(u) << ' ' << FormatNumber(v) << '\n';
+    }
+    for (const Eigen::Vector3d& n : VertexNormals(model)) {
+      out << "vn " << FormatNumber(n.x()) << ' ' << FormatNumber(n.y()) << ' '
+          << FormatNumber(n.z()) << '\n';
+    }
   }
   for (const auto& t : model.triangles) {
-    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    out << "f";
+    for (int v : t) out << ' ' << v + 1 << '/' << v + 1 << '/' << v + 1;
+    out << '\n';
   }
   for (const auto& e : model.edges) out << "l " << e[0] + 1 << ' ' << e[1] + 1 << '\n';
 }
@@ -356,6 +483,38 @@ bool Requested(const Scene& scene, const std::string& what) {
 
 }  // namespace
 
+std::string TraceFileName(const std::string& solver) { return "kinetic_" + solver + ".csv"; }
+
+std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
+  static const char* const mass_keys[] = {"density", "node_mass", "total_mass"};
+  static const char* const mass_units[] = {"kg/m^2", "kg", "kg"};
+  const int mass = static_cast<int>(material.mass_kind);
+  std::vector<MaterialValue> values = {{mass_keys[mass], material.mass_value, mass_units[mass]}};
+  if (material.model == "finite_volume") {
+    const FiniteVolumeSpec& fv = material.finite_volume;
+    values.insert(values.end(), {{"E_warp", fv.E_warp, "N/m"},
+                                 {"E_weft", fv.E_weft, "N/m"},
+                                 {"nu_warp", fv.nu_warp, "1"},
+                                 {"nu_weft", fv.nu_weft, "1"},
+                                 {"G", fv.G, "N/m"},
+                                 {"D_warp", fv.D_warp, "N*m"},
+                                 {"D_weft", fv.D_weft, "N*m"},
+                                 {"D_12", fv.D_12, "N*m"}});
+    return values;
+  }
+  const std::pair<const char*, const SpringFamilySpec*> families[] = {
+      {"structural", &material.springs.structural},
+      {"shear", &material.springs.shear},
+      {"flexion", &material.springs.flexion}};
+  values.reserve(values.size() + 2 * std::size(families));
+  for (const auto& [name, family] : families) {
+    if (!family->present) continue;
+    values.push_back({std::string(name) + ".warp", family->warp, "N/m"});
+    values.push_back({std::string(name) + ".weft", family->weft, "N/m"});
+  }
+  return values;
+}
+
 void CheckOutputWritable(const std::string& directory) {
   const fs::path folder = fs::absolute(fs::path(directory));
   // The outermost folder this check creates: removed again, so a run that fails later (a model
@@ -384,17 +543,19 @@ void CheckOutputWritable(const std::string& directory) {
   }
 }
 
-void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
-                  const std::string& directory, const LevelsReport* levels) {
+void WriteOutputs(const Scene& scene, const Model& model, const SolveReport& report,
+                  const std::string& directory, const Provenance& provenance) {
   ResultFolder result_folder(directory);  // the files go to its staging folder, then move in
   const fs::path& folder = result_folder.staging();
-  std::optional<DrapeAnalysis> drape;
-  if (HasDrapeCoefficient(scene, model)) drape = AnalyseDrape(scene, model);
+  const RunResult& result = report.result;
+  const std::optional<DrapeAnalysis>& drape = report.drape;
+  const LevelsReport* levels = report.levels ? &*report.levels : nullptr;
   if (Requested(scene, "summary")) {
     WriteAtomically(folder / "summary.json", [&](std::ostream& out) {
-      WriteSummary(scene, model, result, drape, levels, out);
+      WriteSummary(scene, model, result, drape, levels, provenance, out);
     });
   }
+  WriteAtomically(folder / "scene.yaml", [&](std::ostream& out) { WriteSceneYaml(scene, out); });
   if (Requested(scene, "nodes")) {
     WriteAtomically(folder / "nodes.csv",
                     [&](std::ostream& out) { WriteNodes(model, result, out); });
@@ -406,7 +567,7 @@ void WriteOutputs(const Scene& scene, const Model& model, const RunResult& resul
   // The per-step trace of the methods that record one goes with the history.
   if ((Requested(scene, "history") || Requested(scene, "kinetic")) &&
       !result.summary.trace_columns.empty()) {
-    WriteAtomically(folder / "kinetic.csv",
+    WriteAtomically(folder / TraceFileName(result.summary.solver),
                     [&](std::ostream& out) { WriteTrace(result.summary, out); });
   }
   if (Requested(scene, "vtk")) {

@@ -5,11 +5,11 @@
 #define DRAPE_SRC_OUTPUT_WRITERS_H_
 
 #include <string>
+#include <vector>
 
-#include "src/analysis/levels.h"
+#include "src/analysis/solve_report.h"
 #include "src/model/model.h"
 #include "src/scene/scene.h"
-#include "src/solvers/run.h"
 
 namespace drape {
 
@@ -17,12 +17,35 @@ namespace drape {
 // that an unwritable folder costs no solving). Throws std::runtime_error saying why not.
 void CheckOutputWritable(const std::string& directory);
 
+// The version of the result files' layout (summary.json's `format_version`, the `# format` line
+// of nodes.csv); raised whenever a file changes its columns or keys.
+constexpr int kResultFormatVersion = 2;
+
+// How a result was made, recorded in summary.json.
+struct Provenance {
+  std::string command_line;            // the command as run, shell-quoted
+  std::vector<std::string> overrides;  // the --set key.path=value overrides, in order
+};
+
+// One material parameter in SI units, as the model uses it (after any KES or Peirce conversion).
+struct MaterialValue {
+  std::string key;   // the scene key under material (density, E_warp, structural.warp, ...)
+  double value = 0;  // SI
+  std::string unit;  // "kg/m^2", "N/m", "N*m", "kg", "1"
+};
+std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material);
+
+// The per-step trace of a method that records one (`kinetic` or `history` in output.write): one
+// file name per method, since each method has its own columns: kinetic_<method>.csv.
+std::string TraceFileName(const std::string& solver);
+
 // Writes what scene.output.write asks for into `directory` (created if needed), as a whole
 // (src/output/result_folder.h): files of an earlier run that this one does not write are removed.
-// `levels` (of a `solver.levels` run, else null) adds the `levels` and `extrapolation` members to
-// summary.json.
-void WriteOutputs(const Scene& scene, const Model& model, const RunResult& result,
-                  const std::string& directory, const LevelsReport* levels = nullptr);
+// A `solver.levels` run's figures (report.levels) add the `levels` and `extrapolation` members to
+// summary.json. scene.yaml (the scene as solved, src/output/scene_yaml.h) is always written;
+// `provenance` goes into summary.json.
+void WriteOutputs(const Scene& scene, const Model& model, const SolveReport& report,
+                  const std::string& directory, const Provenance& provenance = {});
 
 }  // namespace drape
 

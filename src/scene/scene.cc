@@ -12,6 +12,6 @@ std::string Locate(const Location& where, const std::string& what) {
 }  // namespace
 
 InputError::InputError(const Location& where, const std::string& what)
-    : std::runtime_error(Locate(where, what)) {}
+    : std::runtime_error(Locate(where, what)), where_(where), problem_(what) {}
 
 }  // namespace drape

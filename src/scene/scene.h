@@ -24,10 +24,19 @@ struct Location {
 };
 
 // A user-input error: the message is "file:line:column: key.path: what is wrong".
+// The location and the problem are kept apart (where(), problem()) for a caller that relocates
+// the error (a fit file's parameter that names a bad scene key).
 class InputError : public std::runtime_error {
  public:
   InputError(const Location& where, const std::string& what);
-  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+  explicit InputError(const std::string& message)
+      : std::runtime_error(message), problem_(message) {}
+  const Location& where() const { return where_; }  // line 0 when it has no location
+  const std::string& problem() const { return problem_; }
+
+ private:
+  Location where_;
+  std::string problem_;
 };
 
 struct MeshSpec {
@@ -140,15 +149,18 @@ struct LoadsSpec {
   Location where;
 };
 
+// One rigid body. Its kinds, and which keys each takes, are the registry's
+// (src/model/obstacle_kinds.h), checked when the model is built; the loader reads each key with
+// its range.
 struct ObstacleSpec {
-  enum class Kind { kSphere, kDisk, kCylinder, kBox, kPlane, kPin };
-  Kind kind = Kind::kPlane;
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // sphere, disk, cylinder; pin position
+  std::string kind;  // "sphere", "disk", ... (a row of ObstacleKinds())
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // sphere, disk, cylinder; pin `position`
   double radius = 0.0;
   double height = 0.0;                                                           // cylinder
   Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // box
-  Eigen::Vector3d normal{0.0, 0.0, 1.0};  // plane (point in `center`)
+  Eigen::Vector3d normal{0.0, 0.0, 1.0};  // plane (its `point` in `center`), normalised
   double friction = 0.0;
+  std::map<std::string, Location> given;  // the keys written, with where each value is
   Location where;
 };
 

@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -706,50 +707,44 @@ LoadsSpec ReadLoads(const YamlValue& value) {
 
 // ------------------------------------------------------------------------------ obstacles
 
-struct ObstacleKind {
-  ObstacleSpec::Kind kind;
-  std::vector<std::string> keys;  // besides friction
-};
-
-const std::map<std::string, ObstacleKind>& ObstacleKinds() {
-  static const std::map<std::string, ObstacleKind> kinds = {
-      {"sphere", {ObstacleSpec::Kind::kSphere, {"center", "radius"}}},
-      {"disk", {ObstacleSpec::Kind::kDisk, {"center", "radius"}}},
-      {"cylinder", {ObstacleSpec::Kind::kCylinder, {"center", "radius", "height"}}},
-      {"box", {ObstacleSpec::Kind::kBox, {"min", "max"}}},
-      {"plane", {ObstacleSpec::Kind::kPlane, {"point", "normal"}}},
-      {"pin", {ObstacleSpec::Kind::kPin, {"position"}}},
-  };
-  return kinds;
+// Every key an obstacle may have; which kinds take which is the registry's
+// (src/model/obstacle_kinds.h), checked when the model is built.
+const std::vector<std::string>& ObstacleKeys() {
+  static const std::vector<std::string> keys = {"center", "radius", "height",   "min",     "max",
+                                                "point",  "normal", "position", "friction"};
+  return keys;
 }
 
-ObstacleSpec ReadObstacleShape(const std::string& name, const YamlValue& value) {
-  const ObstacleKind& kind = ObstacleKinds().at(name);
-  std::vector<std::string> keys = kind.keys;
-  keys.push_back("friction");
-  const YamlMap map(value, keys);
+// Reads one key into the obstacle, with its range.
+void ReadObstacleKey(const std::string& key, const YamlValue& value, ObstacleSpec* obstacle) {
+  obstacle->given[key] = value.where;
+  if (key == "center" || key == "position" || key == "point") obstacle->center = ReadVector3(value);
+  if (key == "radius") obstacle->radius = ReadPositive(value);
+  if (key == "height") obstacle->height = ReadPositive(value);
+  if (key == "min") obstacle->min = ReadVector3(value);
+  if (key == "max") obstacle->max = ReadVector3(value);
+  if (key == "friction") obstacle->friction = ReadNonNegative(value);
+  if (key == "normal") {
+    obstacle->normal = ReadVector3(value);
+    if (!(obstacle->normal.norm() > 0.0)) Fail(value, "must not be the zero vector");
+    obstacle->normal.normalize();
+  }
+}
+
+ObstacleSpec ReadObstacle(const YamlValue& item) {
+  const YamlMap outer(item);
+  const auto kinds = outer.Keys();
+  if (kinds.empty()) Fail(item, "expected one obstacle (- sphere: {...})");
+  if (kinds.size() > 1) {
+    throw InputError(outer.KeyLocation(kinds[1]),
+                     "one obstacle per list item ('" + kinds[0] + "' is given too)");
+  }
+  const YamlValue value = outer.Get(kinds[0]);
   ObstacleSpec obstacle;
-  obstacle.kind = kind.kind;
+  obstacle.kind = kinds[0];
   obstacle.where = value.where;
-  if (Contains(kind.keys, "center")) obstacle.center = ReadVector3(map.Get("center"));
-  if (Contains(kind.keys, "radius")) obstacle.radius = ReadPositive(map.Get("radius"));
-  if (Contains(kind.keys, "height")) obstacle.height = ReadPositive(map.Get("height"));
-  if (Contains(kind.keys, "position")) obstacle.center = ReadVector3(map.Get("position"));
-  if (Contains(kind.keys, "point")) obstacle.center = ReadVector3(map.Get("point"));
-  if (Contains(kind.keys, "normal")) {
-    const YamlValue normal = map.Get("normal");
-    obstacle.normal = ReadVector3(normal);
-    if (!(obstacle.normal.norm() > 0.0)) Fail(normal, "must not be the zero vector");
-    obstacle.normal.normalize();
-  }
-  if (Contains(kind.keys, "min")) {
-    obstacle.min = ReadVector3(map.Get("min"));
-    obstacle.max = ReadVector3(map.Get("max"));
-    if (!(obstacle.min.array() < obstacle.max.array()).all()) {
-      Fail(map.Get("max"), "max must exceed min in every coordinate");
-    }
-  }
-  if (const auto friction = map.Find("friction")) obstacle.friction = ReadNonNegative(*friction);
+  const YamlMap map(value, ObstacleKeys());
+  for (const std::string& key : map.Keys()) ReadObstacleKey(key, map.Get(key), &obstacle);
   return obstacle;
 }
 
@@ -757,19 +752,8 @@ std::vector<ObstacleSpec> ReadObstacles(const YamlValue& value) {
   if (!value.get().IsSequence() && !value.get().IsNull()) {
     Fail(value, "expected a list of obstacles (- sphere: {...}), got " + Describe(value.get()));
   }
-  std::vector<std::string> names;
-  for (const auto& entry : ObstacleKinds()) names.push_back(entry.first);
   std::vector<ObstacleSpec> obstacles;
-  for (const auto& item : ReadList(value)) {
-    const YamlMap map(item, names);
-    const auto keys = map.Keys();
-    if (keys.empty()) Fail(item, "expected one obstacle: " + JoinNames(names));
-    if (keys.size() > 1) {
-      throw InputError(map.KeyLocation(keys[1]),
-                       "one obstacle per list item ('" + keys[0] + "' is given too)");
-    }
-    obstacles.push_back(ReadObstacleShape(keys[0], map.Get(keys[0])));
-  }
+  for (const auto& item : ReadList(value)) obstacles.push_back(ReadObstacle(item));
   return obstacles;
 }
 
@@ -919,6 +903,18 @@ Scene LoadScene(const std::string& path, const std::vector<std::string>& overrid
   ApplyOverrides(document, overrides, &origins);
   ReadScene(YamlRoot(document, origins), &scene);
   return scene;
+}
+
+std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::string& key) {
+  auto three = [](const Eigen::Vector3d& v) { return std::vector<double>{v.x(), v.y(), v.z()}; };
+  if (key == "center" || key == "position" || key == "point") return three(obstacle.center);
+  if (key == "min") return three(obstacle.min);
+  if (key == "max") return three(obstacle.max);
+  if (key == "normal") return three(obstacle.normal);
+  if (key == "radius") return {obstacle.radius};
+  if (key == "height") return {obstacle.height};
+  assert(key == "friction" && "an obstacle key ReadObstacleKey does not read");
+  return {obstacle.friction};
 }
 
 }  // namespace drape

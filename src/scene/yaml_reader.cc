@@ -280,11 +280,11 @@ std::optional<double> ParseNumber(const std::string& text, std::string* error) {
   }
   if (std::abs(number) > kLargestInputMagnitude ||
       (number != 0.0 && std::abs(number) < kSmallestInputMagnitude)) {
-    std::ostringstream text;
-    text << quoted << " is out of range: numbers in a scene lie between " << kSmallestInputMagnitude
-         << " and " << kLargestInputMagnitude
-         << " in magnitude (or are 0), so that their products stay finite";
-    *error = text.str();
+    std::ostringstream message;
+    message << quoted << " is out of range: numbers in a scene lie between "
+            << kSmallestInputMagnitude << " and " << kLargestInputMagnitude
+            << " in magnitude (or are 0), so that their products stay finite";
+    *error = message.str();
     return std::nullopt;
   }
   return number;

@@ -21,26 +21,85 @@ std::string FirstNonFinite(const std::vector<double>& values) {
   return "";
 }
 
-// No result may hold NaN or infinity: a run whose positions or nodal forces are not finite stops
-// here, located at the scene's solver section, and nothing is written.
-void RequireFinite(const Scene& scene, const Model& model, const RunResult& result,
-                   const std::string& method) {
-  std::string where = FirstNonFinite(model.positions), what = "position";
-  if (where.empty()) {
-    where = FirstNonFinite(result.certificate.node_forces);
-    what = "force";
+bool AllFinite(const std::vector<double>& values) {
+  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
+
+// The last iterate at which the positions, the energy and the residual were all finite.
+struct LastFinite {
+  std::vector<double> positions;
+  int iteration = -1;  // -1: none recorded yet (the start is used)
+};
+
+// What is not finite in a solver's final state, as "a non-finite position at node N (x)"; empty
+// if all is finite.
+std::string NonFiniteState(const Model& model, const Certificate& certificate) {
+  std::string where = FirstNonFinite(model.positions);
+  if (!where.empty()) return "a non-finite position at " + where;
+  where = FirstNonFinite(certificate.node_forces);
+  if (!where.empty()) return "a non-finite force at " + where;
+  if (certificate.evaluable) return "";
+  // Finite positions whose energy overflows: name the node that moved farthest from its start.
+  int farthest = 0;
+  double distance = -1.0;
+  for (int node = 0; node < model.num_nodes && model.initial.size() == model.positions.size();
+       ++node) {
+    const double d = (Eigen::Vector3d(model.positions.data() + 3 * node) -
+                      Eigen::Vector3d(model.initial.data() + 3 * node))
+                         .norm();
+    if (d > distance) {
+      distance = d;
+      farthest = node;
+    }
   }
-  if (where.empty() && !result.certificate.evaluable) {
-    where = "the final positions";
-    what = "energy or force";
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "a non-finite energy or force at the final positions (node %d moved farthest, "
+                "%.3g m from its start)",
+                farthest, distance);
+  return text;
+}
+
+// No result may hold NaN or infinity. A solver whose state stopped being finite is taken back to
+// its last finite iterate, which is certified and saved, marked not converged; its termination
+// says where the values stopped being finite. The history and trace keep their finite rows only.
+// If there is no finite iterate to go back to, the run is refused (InputError, nothing written).
+void ReturnToLastFinite(const Scene& scene, const std::string& method, const LastFinite& last,
+                        Model& model, RunResult* result) {
+  const std::string what = NonFiniteState(model, result->certificate);
+  if (what.empty()) return;
+  const std::string after = " after " + std::to_string(result->summary.iterations) +
+                            " iterations (" + result->summary.termination + ")";
+  const std::vector<double>& back = last.iteration >= 0 ? last.positions : model.initial;
+  if (static_cast<int>(back.size()) == model.num_dofs()) model.positions = back;
+  // Constraint forces (Provot's) were those of the final state: they do not hold at this one.
+  result->summary.constraint_forces.clear();
+  result->certificate = ComputeCertificate(model, model.positions.data());
+  if (!NonFiniteState(model, result->certificate).empty()) {
+    throw InputError(scene.solver.where,
+                     method + " produced " + what + after +
+                         ": the scene's values or the method's step are too large for double "
+                         "precision; nothing written");
   }
-  if (where.empty()) return;
-  throw InputError(scene.solver.where,
-                   method + " produced a non-finite " + what + " at " + where + " after " +
-                       std::to_string(result.summary.iterations) + " iterations (" +
-                       result.summary.termination +
-                       "): the scene's values or the method's step are too large for double "
-                       "precision; nothing written");
+  SolverSummary& summary = result->summary;
+  summary.converged = false;
+  summary.residual_floor = 0.0;
+  summary.termination = "non-finite state: " + method + " produced " + what + after +
+                        "; the last finite iterate (iteration " +
+                        std::to_string(std::max(last.iteration, 0)) + ") is saved";
+  auto& history = summary.history;
+  history.erase(std::remove_if(history.begin(), history.end(),
+                               [](const IterationRecord& r) {
+                                 return !std::isfinite(r.energy) ||
+                                        !std::isfinite(r.relative_residual) ||
+                                        !std::isfinite(r.time_s);
+                               }),
+                history.end());
+  summary.trace.erase(
+      std::remove_if(summary.trace.begin(), summary.trace.end(),
+                     [](const std::vector<double>& row) { return !AllFinite(row); }),
+      summary.trace.end());
+  result->non_finite = true;
 }
 
 }  // namespace
@@ -56,7 +115,16 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   if (auto it = scene.solver.method_options.find(method); it != scene.solver.method_options.end()) {
     options.method_options = it->second;
   }
-  options.on_iteration = on_iteration;
+  // Keeps the last finite iterate (an O(n) check and copy per iteration) for ReturnToLastFinite.
+  LastFinite last;
+  options.on_iteration = [&](const IterationRecord& record) {
+    if (std::isfinite(record.energy) && std::isfinite(record.relative_residual) &&
+        AllFinite(model.positions)) {
+      last.positions = model.positions;
+      last.iteration = record.iteration;
+    }
+    return !on_iteration || on_iteration(record);
+  };
 
   RunResult result;
   result.summary = info->make()->Solve(model, options);
@@ -64,7 +132,8 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   const std::vector<double>* constraint =
       result.summary.constraint_forces.empty() ? nullptr : &result.summary.constraint_forces;
   result.certificate = ComputeCertificate(model, model.positions.data(), constraint);
-  RequireFinite(scene, model, result, method);
+  ReturnToLastFinite(scene, method, last, model, &result);
+  result.contact = MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
   result.residual_floor = RelativeResidualFloor(model, model.positions.data());
   if (result.certificate.unsound.empty()) {
     result.stability = AnalyseStability(model, model.positions.data());
@@ -73,23 +142,35 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
     result.stability.stable = false;
   }
   // The solver's claim stands only if the forces recomputed at its final positions confirm it: to
-  // the tolerance, or (when it stopped at the round-off floor) to the floor measured here.
+  // the tolerance, or (when it stopped at the round-off floor) to the floor measured here; and the
+  // whole fabric balances (reactions + contact + constraint = −(weight + loads), to what the free
+  // residual forces can account for).
   result.at_floor = result.summary.converged && result.summary.residual_floor > 0.0;
   const double accepted = result.at_floor
                               ? std::max(options.tolerance, kFloorFactor * result.residual_floor)
                               : options.tolerance;
-  result.converged = result.summary.converged && result.certificate.evaluable &&
-                     result.certificate.unsound.empty() &&
-                     result.certificate.relative_residual <= accepted;
+  const Certificate& certificate = result.certificate;
+  const bool residual_confirmed = certificate.relative_residual <= accepted;
+  result.converged = result.summary.converged && certificate.evaluable &&
+                     certificate.unsound.empty() && residual_confirmed && certificate.balanced;
+  std::string& termination = result.summary.termination;
   if (result.summary.converged && !result.converged) {
-    char text[200];
-    std::snprintf(text, sizeof text, "; but the recomputed relative residual is %.3g",
-                  result.certificate.relative_residual);
-    result.summary.termination += result.certificate.unsound.empty()
-                                      ? std::string(text)
-                                      : "; but " + result.certificate.unsound;
-  } else if (!result.certificate.unsound.empty()) {
-    result.summary.termination += "; " + result.certificate.unsound;
+    char text[240];
+    if (!certificate.unsound.empty()) {
+      termination += "; but " + certificate.unsound;
+    } else if (!residual_confirmed) {
+      std::snprintf(text, sizeof text, "; but the recomputed relative residual is %.3g",
+                    certificate.relative_residual);
+      termination += text;
+    } else {
+      std::snprintf(text, sizeof text,
+                    "; but the forces do not balance: reactions + contact + constraint differ "
+                    "from the weight and loads by %.3g of the reference force",
+                    certificate.balance_error);
+      termination += text;
+    }
+  } else if (!certificate.unsound.empty()) {
+    termination += "; " + certificate.unsound;
   }
   return result;
 }

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
 #include "src/numerics/round_off_floor.h"
@@ -18,18 +19,23 @@ struct RunResult {
   SolverSummary summary;    // what the solver says
   Certificate certificate;  // recomputed at the final positions
   Stability stability;      // stable = false whenever certificate.unsound says why
+  ContactReport contact;    // the penetration into the obstacles' clearance (with obstacles)
   bool converged = false;   // the solver's claim, confirmed by the certificate
   // The relative residual's round-off floor at the final positions (src/numerics/round_off_floor.h)
   // and whether the solve stopped there above the tolerance (then converged: the tolerance is
   // below what double precision can certify).
   double residual_floor = 0.0;
   bool at_floor = false;
+  // The solver's state stopped being finite: what is saved is its last finite iterate, not
+  // converged, and the termination says where (src/solvers/run.cc, ReturnToLastFinite).
+  bool non_finite = false;
   // Converged, but not to a stable minimum (a saddle: stability.min_eigenvalue < 0).
   bool Saddle() const { return converged && stability.computed && !stability.stable; }
 };
 
 // Solves with scene.solver (method, tolerance, limits, method options). `on_iteration` may be
-// empty. Throws InputError if the method is unknown or refuses the model (e.g. too large).
+// empty. Throws InputError if the method is unknown or refuses the model (e.g. too large), or if
+// its state stopped being finite before any finite iterate was recorded.
 RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
                    const std::function<bool(const IterationRecord&)>& on_iteration = {});
 

@@ -8,14 +8,24 @@
 // alternatives and their failures reported as such. Precision: the cost is a sum of shifts (~|f| ×
 // size per loaded node) and Ceres accepts a step by its cost change, so these methods stop when the
 // change falls under the cost's roundoff — measured at relative residuals of 1e-9 to 1e-6.
+//
+// Obstacles: no trial point may be reached from the last accepted iterate by a node passing
+// through an obstacle (src/model/contact.h). An ObstacleGuard (a ceres::EvaluationCallback) sees
+// every new trial point; one that crosses makes the guard's residual block fail to evaluate, which
+// Ceres treats as a step of infinite cost: rejected, and the trust region shrinks.
+#include <ceres/evaluation_callback.h>
 #include <ceres/iteration_callback.h>
 #include <ceres/problem.h>
+#include <ceres/sized_cost_function.h>
 #include <ceres/solver.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "src/model/ceres_problem.h"
+#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/solvers/solvers.h"
 
@@ -23,13 +33,64 @@ namespace drape {
 
 namespace {
 
+// Remembers the last accepted iterate and judges each new trial point against it.
+class ObstacleGuard : public ceres::EvaluationCallback {
+ public:
+  explicit ObstacleGuard(const Model& model) : model_(model), iterate_(model.positions) {}
+
+  // With an evaluation callback, Ceres has copied the trial point into model.positions.
+  void PrepareForEvaluation(bool /*evaluate_jacobians*/, bool new_evaluation_point) override {
+    if (!new_evaluation_point) return;
+    crossing_ = ObstacleSafeFraction(model_, iterate_.data(), model_.positions.data()) < 1.0;
+    if (crossing_) ++refused_;
+  }
+  // model.positions is the accepted iterate.
+  void Accept() { iterate_ = model_.positions; }
+  bool crossing() const { return crossing_; }
+  int refused() const { return refused_; }
+
+ private:
+  const Model& model_;
+  std::vector<double> iterate_;
+  bool crossing_ = false;
+  int refused_ = 0;
+};
+
+// A residual that is always 0 but cannot be evaluated at a point the guard refuses.
+class GuardResidual : public ceres::SizedCostFunction<1, 3> {
+ public:
+  explicit GuardResidual(const ObstacleGuard& guard) : guard_(guard) {}
+  bool Evaluate(double const* const* /*parameters*/, double* residuals,
+                double** jacobians) const override {
+    if (guard_.crossing()) return false;
+    residuals[0] = 0.0;
+    if (jacobians && jacobians[0]) std::fill(jacobians[0], jacobians[0] + 3, 0.0);
+    return true;
+  }
+
+ private:
+  const ObstacleGuard& guard_;
+};
+
+// Adds the guard's residual on the first node that is not fully fixed (Ceres drops a residual
+// whose blocks are all constant). False if every node is fixed.
+bool AddGuard(Model& model, const ObstacleGuard& guard, ceres::Problem* problem) {
+  for (int node = 0; node < model.num_nodes; ++node) {
+    if (model.fixed[3 * node] && model.fixed[3 * node + 1] && model.fixed[3 * node + 2]) continue;
+    problem->AddResidualBlock(new GuardResidual(guard), nullptr, model.positions.data() + 3 * node);
+    return true;
+  }
+  return false;
+}
+
 class MonitorCallback : public ceres::IterationCallback {
  public:
-  MonitorCallback(const Model& model, IterationMonitor* monitor)
-      : model_(model), monitor_(monitor) {}
+  MonitorCallback(const Model& model, ObstacleGuard* guard, IterationMonitor* monitor)
+      : model_(model), guard_(guard), monitor_(monitor) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& iteration) override {
     if (iteration.iteration > 0 && !iteration.step_is_successful) return ceres::SOLVER_CONTINUE;
+    if (guard_) guard_->Accept();
     double energy = 0.0;
     if (!EvaluateEnergy(model_, model_.positions.data(), &energy, &gradient_)) {
       monitor_->Stop("energy not finite at the iterate");
@@ -44,6 +105,7 @@ class MonitorCallback : public ceres::IterationCallback {
 
  private:
   const Model& model_;
+  ObstacleGuard* guard_;  // null without obstacles
   IterationMonitor* monitor_;
   std::vector<double> gradient_;
   bool stopped_ = false;
@@ -56,9 +118,14 @@ class CeresLeastSquaresSolver : public Solver {
   SolverSummary Solve(Model& model, const SolverOptions& options) const override {
     SolverSummary summary;
     IterationMonitor monitor(model, options, &summary);
-    ceres::Problem problem;
+    ObstacleGuard guard(model);
+    ceres::Problem::Options problem_options;
+    const bool guarded = !model.obstacles.empty();
+    if (guarded) problem_options.evaluation_callback = &guard;
+    ceres::Problem problem(problem_options);
     BuildProblem(model, &problem);
-    MonitorCallback callback(model, &monitor);
+    if (guarded) AddGuard(model, guard, &problem);
+    MonitorCallback callback(model, guarded ? &guard : nullptr, &monitor);
 
     ceres::Solver::Options ceres_options;
     ceres_options.trust_region_strategy_type = strategy_;
@@ -82,6 +149,7 @@ class CeresLeastSquaresSolver : public Solver {
     }
     summary.statistics["successful_steps"] = ceres_summary.num_successful_steps;
     summary.statistics["unsuccessful_steps"] = ceres_summary.num_unsuccessful_steps;
+    if (guarded) summary.statistics["steps_refused_at_obstacles"] = guard.refused();
     return summary;
   }
 

@@ -174,13 +174,24 @@ class ProvotConstraint {
   std::vector<Eigen::Vector3d> directions_;
 };
 
-// A stable step for the undamped scheme: 1/ω_max with ω_max² ≤ max_i 2 Σ_springs k / m_i
-// (Gershgorin's bound on M⁻¹K for the springs' axial stiffness), penalty terms left out.
+// A stable step for the undamped scheme: 1/ω_max with ω_max² ≤ max_i 2 Σ k / m_i (Gershgorin's
+// bound on M⁻¹K) over the springs' axial stiffness and, for a node with contact terms, each
+// contact's stiffness where the stiffness rule keeps it, U'' = 2 k g at g = f t
+// (src/model/contact.h). Without that, a node resting on an obstacle bounced on the stiff
+// penalty and the scheme gained energy (a sheet dropped onto a pin was flung off it).
 double DefaultTimeStep(const Model& model) {
   std::vector<double> stiffness(model.num_nodes, 0.0);
   for (const SpringLink& spring : ModelSprings(model)) {
     stiffness[spring.a] += spring.stiffness;
     stiffness[spring.b] += spring.stiffness;
+  }
+  if (!model.contact_terms.empty()) {
+    const double contact = 2.0 * ContactStiffness(model.contact, model) * kAllowedPenetration *
+                           model.contact.thickness;
+    for (const auto& [term, obstacle] : model.contact_terms) {
+      (void)obstacle;
+      stiffness[model.terms[term]->nodes()[0]] += contact;
+    }
   }
   double omega_squared = 0.0;
   for (int n = 0; n < model.num_nodes; ++n) {

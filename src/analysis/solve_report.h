@@ -1,0 +1,41 @@
+// A solve and what drape concludes from it, each computed once, for every command that reports
+// it (drape solve's files and stdout line, drape compare): the solver's result with its
+// certificate, stability and contact report (src/solvers/run.h), the drape analysis of a scene
+// with a drape coefficient, and the per-level figures of a `solver.levels` run.
+#ifndef DRAPE_SRC_ANALYSIS_SOLVE_REPORT_H_
+#define DRAPE_SRC_ANALYSIS_SOLVE_REPORT_H_
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "src/analysis/drape_analysis.h"
+#include "src/analysis/levels.h"
+#include "src/model/model.h"
+#include "src/scene/scene.h"
+#include "src/solvers/run.h"
+
+namespace drape {
+
+struct SolveReport {
+  RunResult result;
+  std::optional<DrapeAnalysis> drape;  // when HasDrapeCoefficient(scene, model)
+  std::optional<LevelsReport> levels;  // when scene.solver.levels > 1
+};
+
+// Solves the scene with `method` (on scene.solver.levels nested lattices when that is > 1) and
+// analyses the final state. `on_iteration` may be empty.
+SolveReport SolveAndReport(const Scene& scene, Model& model, const std::string& method,
+                           const std::function<bool(const IterationRecord&)>& on_iteration = {});
+
+// The report of a state already solved (`result` from RunSolve at the model's positions): the
+// drape analysis added.
+SolveReport ReportOf(const Scene& scene, const Model& model, RunResult result);
+
+// The drape coefficient `drape compare` and the fit compare: Cusick's with a support disc, else
+// A_shadow / A_flat; NaN for a scene without one.
+double ReportedDrapeCoefficient(const SolveReport& report);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_ANALYSIS_SOLVE_REPORT_H_

@@ -1,0 +1,210 @@
+#include "src/model/obstacle_kinds.h"
+
+#include <algorithm>
+#include <cassert>
+#include <limits>
+
+#include "costs/box_contact.h"
+#include "costs/cylinder_contact.h"
+#include "costs/disk_contact.h"
+#include "costs/plane_contact.h"
+#include "costs/sphere_contact.h"
+
+namespace drape {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A row whose distance and contact term come from the functor `make(obstacle, t, k)` returns
+// (the term is named "<kind>_contact").
+template <typename MakeFunctor>
+ObstacleKind Row(std::string name, std::vector<std::string> keys, std::string doc, bool support,
+                 MakeFunctor make) {
+  ObstacleKind kind;
+  kind.name = name;
+  kind.keys = std::move(keys);
+  kind.doc = std::move(doc);
+  kind.support = support;
+  kind.distance = [make](const ObstacleSpec& obstacle, const double* x) {
+    return make(obstacle, 0.0, 0.0).Distance(x);
+  };
+  kind.make_term = [make, type = name + "_contact"](const ObstacleSpec& obstacle, int node,
+                                                    double clearance, double stiffness,
+                                                    double shift) {
+    return MakeTerm(type, {node}, make(obstacle, clearance, stiffness), shift);
+  };
+  kind.check = [](const ObstacleSpec&) {};
+  return kind;
+}
+
+ObstaclePart Sphere(const Eigen::Vector3d& centre, double radius) {
+  ObstaclePart part;
+  part.shape = ObstaclePart::Shape::kSphere;
+  part.a = centre;
+  part.radius = radius;
+  return part;
+}
+
+ObstaclePart Cylinder(const Eigen::Vector3d& top_centre, double radius, double height,
+                      bool capped) {
+  ObstaclePart part;
+  part.shape = ObstaclePart::Shape::kCylinder;
+  part.a = top_centre;
+  part.radius = radius;
+  part.height = height;
+  part.capped = capped;
+  return part;
+}
+
+ObstacleKind SphereRow() {
+  ObstacleKind row = Row("sphere", {"center", "radius"}, "`center` [3], `radius` > 0", false,
+                         [](const ObstacleSpec& o, double t, double k) {
+                           return SphereContact::Create(o.center.data(), o.radius, t, k);
+                         });
+  row.draw = [](const ObstacleSpec& o, const DrawingFrame&) -> std::vector<ObstaclePart> {
+    return {Sphere(o.center, o.radius)};
+  };
+  row.lowest_z = [](const ObstacleSpec& o) { return o.center.z() - o.radius; };
+  return row;
+}
+
+// A drape tester's pedestal top, drawn on a stem (a tenth of its radius) down to the floor.
+ObstacleKind DiskRow() {
+  ObstacleKind row = Row("disk", {"center", "radius"},
+                         "`center` [3], `radius` > 0 — a pedestal top, as in a drape tester", true,
+                         [](const ObstacleSpec& o, double t, double k) {
+                           return DiskContact::Create(o.center.data(), o.radius, t, k);
+                         });
+  row.draw = [](const ObstacleSpec& o, const DrawingFrame& frame) -> std::vector<ObstaclePart> {
+    const double stem = std::max(o.center.z() - frame.floor_z, 0.02 * o.radius);
+    return {Cylinder(o.center, o.radius, 0.02 * o.radius, true),
+            Cylinder(o.center, 0.1 * o.radius, stem, false)};
+  };
+  row.lowest_z = [](const ObstacleSpec&) { return kInfinity; };
+  return row;
+}
+
+ObstacleKind CylinderRow() {
+  ObstacleKind row =
+      Row("cylinder", {"center", "radius", "height"},
+          "`center` [3] (the centre of its top face), `radius` > 0, `height` > 0 "
+          "(it extends downward, like a pedestal)",
+          false, [](const ObstacleSpec& o, double t, double k) {
+            return CylinderContact::Create(o.center.data(), o.radius, o.height, t, k);
+          });
+  row.draw = [](const ObstacleSpec& o, const DrawingFrame&) -> std::vector<ObstaclePart> {
+    return {Cylinder(o.center, o.radius, o.height, true)};
+  };
+  row.lowest_z = [](const ObstacleSpec& o) { return o.center.z() - o.height; };
+  return row;
+}
+
+ObstacleKind BoxRow() {
+  ObstacleKind row = Row("box", {"min", "max"}, "`min` [3], `max` [3] (max > min)", false,
+                         [](const ObstacleSpec& o, double t, double k) {
+                           return BoxContact::Create(o.min.data(), o.max.data(), t, k);
+                         });
+  row.draw = [](const ObstacleSpec& o, const DrawingFrame&) {
+    ObstaclePart part;
+    part.shape = ObstaclePart::Shape::kBox;
+    part.a = o.min;
+    part.b = o.max;
+    return std::vector<ObstaclePart>{part};
+  };
+  row.lowest_z = [](const ObstacleSpec& o) { return o.min.z(); };
+  row.check = [](const ObstacleSpec& o) {
+    if (!(o.min.array() < o.max.array()).all()) {
+      throw InputError(o.given.at("max"), "max must exceed min in every coordinate");
+    }
+  };
+  return row;
+}
+
+// The scene gives the plane's `point` in ObstacleSpec::center.
+ObstacleKind PlaneRow() {
+  ObstacleKind row =
+      Row("plane", {"point", "normal"}, "`point` [3], `normal` [3] (not zero; normalised)", false,
+          [](const ObstacleSpec& o, double t, double k) {
+            return PlaneContact::Create(o.center.data(), o.normal.data(), t, k);
+          });
+  row.draw = [](const ObstacleSpec& o, const DrawingFrame&) {
+    ObstaclePart part;
+    part.shape = ObstaclePart::Shape::kPlane;
+    part.a = o.center;
+    part.b = o.normal.normalized();
+    return std::vector<ObstaclePart>{part};
+  };
+  row.lowest_z = [](const ObstacleSpec&) { return -kInfinity; };
+  return row;
+}
+
+// A point support: a sphere of radius 0 around its tip (costs/sphere_contact.h), drawn as a thin
+// stem down to the floor. The scene gives its `position` in ObstacleSpec::center.
+ObstacleKind PinRow() {
+  ObstacleKind row = Row("pin", {"position"}, "`position` [3]", true,
+                         [](const ObstacleSpec& o, double t, double k) {
+                           return SphereContact::Create(o.center.data(), 0.0, t, k);
+                         });
+  row.draw = [](const ObstacleSpec& o, const DrawingFrame& frame) -> std::vector<ObstaclePart> {
+    const double stem = std::max(o.center.z() - frame.floor_z, 0.05 * frame.extent);
+    return {Cylinder(o.center, 0.006 * frame.extent, stem, true)};
+  };
+  row.lowest_z = [](const ObstacleSpec&) { return kInfinity; };
+  return row;
+}
+
+std::string KindNames() {
+  std::string names;
+  for (const ObstacleKind& kind : ObstacleKinds()) names += (names.empty() ? "" : ", ") + kind.name;
+  return names;
+}
+
+const ObstacleKind* FindKind(const std::string& name) {
+  for (const ObstacleKind& kind : ObstacleKinds()) {
+    if (kind.name == name) return &kind;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+const std::vector<ObstacleKind>& ObstacleKinds() {
+  static const std::vector<ObstacleKind> kinds = {SphereRow(), DiskRow(),  CylinderRow(),
+                                                  BoxRow(),    PlaneRow(), PinRow()};
+  return kinds;
+}
+
+const ObstacleKind& CheckedObstacleKind(const ObstacleSpec& obstacle) {
+  const ObstacleKind* kind = FindKind(obstacle.kind);
+  if (kind == nullptr) {
+    throw InputError(obstacle.where, "unknown obstacle '" + obstacle.kind +
+                                         "' (expected one of: " + KindNames() + ")");
+  }
+  for (const auto& [key, where] : obstacle.given) {
+    if (key != "friction" &&
+        std::find(kind->keys.begin(), kind->keys.end(), key) == kind->keys.end()) {
+      std::string keys;
+      for (const std::string& name : kind->keys) keys += name + ", ";
+      throw InputError(
+          where, "a " + kind->name + " takes no '" + key + "' (its keys: " + keys + "friction)");
+    }
+  }
+  for (const std::string& key : kind->keys) {
+    if (obstacle.given.count(key) == 0) {
+      Location where = obstacle.where;
+      where.key += "." + key;
+      throw InputError(where, "required key '" + key + "' is missing");
+    }
+  }
+  kind->check(obstacle);
+  return *kind;
+}
+
+const ObstacleKind& ObstacleKindOf(const ObstacleSpec& obstacle) {
+  const ObstacleKind* kind = FindKind(obstacle.kind);
+  assert(kind != nullptr && "an obstacle kind the model build did not check");
+  return *kind;
+}
+
+}  // namespace drape

@@ -1,0 +1,399 @@
+#include "src/output/scene_yaml.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "src/model/obstacle_kinds.h"
+#include "src/output/json.h"
+#include "src/scene/scene_loader.h"
+#include "src/scene/solver_methods.h"
+
+namespace drape {
+
+namespace {
+
+// The shortest of 15, 16 or 17 significant digits that reads back as exactly `value`.
+std::string Exact(double value) {
+  for (int digits = 15; digits < 17; ++digits) {
+    const std::string text = FormatNumber(value, digits);
+    if (std::strtod(text.c_str(), nullptr) == value) return text;
+  }
+  return FormatNumber(value);
+}
+
+// Numbers that read back exactly, lists in flow style.
+void Number(YAML::Emitter& out, double value) { out << YAML::Value << Exact(value); }
+
+void Key(YAML::Emitter& out, const std::string& key) { out << YAML::Key << key; }
+
+void Numbers(YAML::Emitter& out, const double* values, int count) {
+  out << YAML::Value << YAML::Flow << YAML::BeginSeq;
+  for (int k = 0; k < count; ++k) out << Exact(values[k]);
+  out << YAML::EndSeq;
+}
+
+void Vector3(YAML::Emitter& out, const Eigen::Vector3d& v) { Numbers(out, v.data(), 3); }
+
+std::string Absolute(const std::string& path) {
+  return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
+}
+
+void WriteGridMesh(const MeshSpec& mesh, YAML::Emitter& out) {
+  if (mesh.u.empty()) {
+    Key(out, "size");
+    Numbers(out, mesh.size.data(), 2);
+  } else {
+    Key(out, "u");
+    Numbers(out, mesh.u.data(), static_cast<int>(mesh.u.size()));
+  }
+  if (!mesh.v.empty()) {
+    Key(out, "v");
+    Numbers(out, mesh.v.data(), static_cast<int>(mesh.v.size()));
+  }
+  Key(out, "nodes");
+  out << YAML::Value << YAML::Flow << YAML::BeginSeq << mesh.nodes[0] << mesh.nodes[1]
+      << YAML::EndSeq;
+  Key(out, "plane");
+  out << YAML::Value << mesh.plane;
+  Key(out, "origin");
+  Vector3(out, mesh.origin);
+}
+
+void WriteChainMesh(const MeshSpec& mesh, YAML::Emitter& out) {
+  Key(out, "closed");
+  out << YAML::Value << mesh.closed;
+  if (!mesh.points.empty()) {
+    Key(out, "points");
+    out << YAML::Value << YAML::BeginSeq;
+    for (const auto& point : mesh.points) {
+      out << YAML::Flow << YAML::BeginSeq << Exact(point.x()) << Exact(point.y())
+          << Exact(point.z()) << YAML::EndSeq;
+    }
+    out << YAML::EndSeq;
+    return;
+  }
+  Key(out, "length");
+  Number(out, mesh.length);
+  Key(out, "nodes");
+  out << YAML::Value << mesh.chain_nodes;
+  Key(out, "direction");
+  Vector3(out, mesh.direction);
+  Key(out, "origin");
+  Vector3(out, mesh.origin);
+}
+
+void WriteMesh(const MeshSpec& mesh, YAML::Emitter& out) {
+  static const char* const kinds[] = {"grid", "circle", "arc", "chain", "file"};
+  Key(out, "mesh");
+  out << YAML::Value << YAML::BeginMap;
+  Key(out, "kind");
+  out << YAML::Value << kinds[static_cast<int>(mesh.kind)];
+  switch (mesh.kind) {
+    case MeshSpec::Kind::kGrid:
+      WriteGridMesh(mesh, out);
+      break;
+    case MeshSpec::Kind::kCircle:
+      Key(out, "radius");
+      Number(out, mesh.radius);
+      Key(out, "spacing");
+      Number(out, mesh.spacing);
+      Key(out, "origin");
+      Vector3(out, mesh.origin);
+      break;
+    case MeshSpec::Kind::kArc:
+      Key(out, "radius");
+      Number(out, mesh.radius);
+      Key(out, "rings");
+      out << YAML::Value << mesh.rings;
+      Key(out, "spokes");
+      out << YAML::Value << mesh.spokes;
+      Key(out, "origin");
+      Vector3(out, mesh.origin);
+      break;
+    case MeshSpec::Kind::kChain:
+      WriteChainMesh(mesh, out);
+      break;
+    case MeshSpec::Kind::kFile:
+      Key(out, "path");
+      out << YAML::Value << Absolute(mesh.path);
+      break;
+  }
+  Key(out, "max_nodes");
+  out << YAML::Value << mesh.max_nodes;
+  out << YAML::EndMap;
+}
+
+void WriteFamily(const std::string& name, const SpringFamilySpec& family, YAML::Emitter& out) {
+  if (!family.present) return;
+  Key(out, name);
+  out << YAML::Value << YAML::Flow << YAML::BeginMap;
+  Key(out, "warp");
+  Number(out, family.warp);
+  Key(out, "weft");
+  Number(out, family.weft);
+  out << YAML::EndMap;
+}
+
+void WriteSprings(const SpringsSpec& springs, YAML::Emitter& out) {
+  Key(out, "springs");
+  out << YAML::Value << YAML::BeginMap;
+  WriteFamily("structural", springs.structural, out);
+  WriteFamily("shear", springs.shear, out);
+  WriteFamily("flexion", springs.flexion, out);
+  Key(out, "rest_length");
+  if (springs.rest_length == SpringsSpec::RestLength::kGiven) {
+    Number(out, springs.rest_length_value);
+  } else {
+    out << YAML::Value
+        << (springs.rest_length == SpringsSpec::RestLength::kZero ? "zero" : "initial");
+  }
+  Key(out, "tension_only");
+  out << YAML::Value << springs.tension_only;
+  if (springs.stretch_limit) {
+    Key(out, "stretch_limit");
+    Number(out, *springs.stretch_limit);
+  }
+  out << YAML::EndMap;
+}
+
+void WriteFiniteVolume(const FiniteVolumeSpec& fv, YAML::Emitter& out) {
+  Key(out, "finite_volume");
+  out << YAML::Value << YAML::BeginMap;
+  const std::pair<const char*, double> values[] = {
+      {"E_warp", fv.E_warp},   {"E_weft", fv.E_weft}, {"nu_warp", fv.nu_warp},
+      {"nu_weft", fv.nu_weft}, {"G", fv.G},           {"D_warp", fv.D_warp},
+      {"D_weft", fv.D_weft},   {"D_12", fv.D_12}};
+  for (const auto& [key, value] : values) {
+    Key(out, key);
+    Number(out, value);
+  }
+  out << YAML::EndMap;
+}
+
+void WriteMaterial(const MaterialSpec& material, YAML::Emitter& out) {
+  static const char* const mass_keys[] = {"density", "node_mass", "total_mass"};
+  Key(out, "material");
+  out << YAML::Value << YAML::BeginMap;
+  Key(out, "model");
+  out << YAML::Value << material.model;
+  Key(out, mass_keys[static_cast<int>(material.mass_kind)]);
+  Number(out, material.mass_value);
+  if (material.model == "springs") {
+    WriteSprings(material.springs, out);
+  } else {
+    WriteFiniteVolume(material.finite_volume, out);
+  }
+  out << YAML::EndMap;
+}
+
+void WriteSelector(const NodeSelector& selector, YAML::Emitter& out) {
+  Key(out, "nodes");
+  out << YAML::Value << YAML::Flow << YAML::BeginMap;
+  switch (selector.kind) {
+    case NodeSelector::Kind::kEdge:
+    case NodeSelector::Kind::kCorner:
+      Key(out, selector.kind == NodeSelector::Kind::kEdge ? "edge" : "corner");
+      out << YAML::Value << selector.name;
+      break;
+    case NodeSelector::Kind::kIds:
+      Key(out, "ids");
+      out << YAML::Value << YAML::Flow << selector.ids;
+      break;
+    case NodeSelector::Kind::kIj:
+      Key(out, "ij");
+      out << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      for (const auto& ij : selector.ij) {
+        out << YAML::Flow << YAML::BeginSeq << ij[0] << ij[1] << YAML::EndSeq;
+      }
+      out << YAML::EndSeq;
+      break;
+    case NodeSelector::Kind::kBox:
+      Key(out, "box");
+      out << YAML::Value << YAML::Flow << YAML::BeginMap;
+      Key(out, "min");
+      Vector3(out, selector.min);
+      Key(out, "max");
+      Vector3(out, selector.max);
+      out << YAML::EndMap;
+      break;
+    case NodeSelector::Kind::kWithin:
+      Key(out, "within");
+      out << YAML::Value << YAML::Flow << YAML::BeginMap;
+      Key(out, "center");
+      Vector3(out, selector.center);
+      Key(out, "radius");
+      Number(out, selector.radius);
+      out << YAML::EndMap;
+      break;
+    case NodeSelector::Kind::kAll:
+      Key(out, "all");
+      out << YAML::Value << true;
+      break;
+  }
+  out << YAML::EndMap;
+}
+
+void WriteFixed(const std::vector<FixedSpec>& fixed, YAML::Emitter& out) {
+  Key(out, "fixed");
+  out << YAML::Value << YAML::BeginSeq;
+  for (const FixedSpec& spec : fixed) {
+    out << YAML::BeginMap;
+    WriteSelector(spec.nodes, out);
+    Key(out, "dofs");
+    out << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (int c = 0; c < 3; ++c) {
+      if (spec.dofs[c]) out << std::string(1, "xyz"[c]);
+    }
+    out << YAML::EndSeq;
+    Key(out, "move");
+    Vector3(out, spec.move);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndSeq;
+}
+
+void WriteForce(const ForceSpec& force, YAML::Emitter& out) {
+  out << YAML::BeginMap;
+  WriteSelector(force.nodes, out);
+  switch (force.kind) {
+    case ForceSpec::Kind::kTotal:
+    case ForceSpec::Kind::kEach:
+      Key(out, force.kind == ForceSpec::Kind::kTotal ? "total" : "each");
+      Vector3(out, force.value);
+      break;
+    case ForceSpec::Kind::kValues:
+      Key(out, "values");
+      out << YAML::Value << YAML::BeginSeq;
+      for (const auto& value : force.values) {
+        out << YAML::Flow << YAML::BeginSeq << Exact(value.x()) << Exact(value.y())
+            << Exact(value.z()) << YAML::EndSeq;
+      }
+      out << YAML::EndSeq;
+      break;
+    case ForceSpec::Kind::kRamp:
+      Key(out, "ramp");
+      out << YAML::Value << YAML::BeginMap;
+      Key(out, "from");
+      Vector3(out, force.value);
+      Key(out, "to");
+      Vector3(out, force.ramp_to);
+      out << YAML::EndMap;
+      break;
+  }
+  out << YAML::EndMap;
+}
+
+void WriteLoads(const LoadsSpec& loads, YAML::Emitter& out) {
+  Key(out, "loads");
+  out << YAML::Value << YAML::BeginMap;
+  if (loads.gravity) {
+    Key(out, "gravity");
+    Vector3(out, *loads.gravity);
+  }
+  Key(out, "forces");
+  out << YAML::Value << YAML::BeginSeq;
+  for (const ForceSpec& force : loads.forces) WriteForce(force, out);
+  out << YAML::EndSeq;
+  if (loads.pressure) {
+    Key(out, "pressure");
+    Number(out, loads.pressure->pressure);
+  }
+  out << YAML::EndMap;
+}
+
+// The kind's keys (src/model/obstacle_kinds.h) and friction, with the values the loader read.
+void WriteObstacle(const ObstacleSpec& obstacle, YAML::Emitter& out) {
+  out << YAML::BeginMap;
+  Key(out, obstacle.kind);
+  out << YAML::Value << YAML::BeginMap;
+  std::vector<std::string> keys = ObstacleKindOf(obstacle).keys;
+  keys.push_back("friction");
+  for (const std::string& key : keys) {
+    Key(out, key);
+    const std::vector<double> value = ObstacleKeyValue(obstacle, key);
+    if (value.size() == 3) {
+      Vector3(out, Eigen::Vector3d(value[0], value[1], value[2]));
+    } else {
+      Number(out, value.at(0));
+    }
+  }
+  out << YAML::EndMap << YAML::EndMap;
+}
+
+// The method, the tolerance, the limits in effect and the method's options (given, else their
+// defaults where the catalogue has a finite one); other methods' option sections as given.
+void WriteSolver(const SolverSpec& solver, YAML::Emitter& out) {
+  Key(out, "solver");
+  out << YAML::Value << YAML::BeginMap;
+  Key(out, "method");
+  out << YAML::Value << solver.method;
+  Key(out, "tolerance");
+  Number(out, solver.tolerance);
+  Key(out, "max_iterations");
+  out << YAML::Value << EffectiveMaxIterations(solver, solver.method);
+  Key(out, "time_limit");
+  Number(out, EffectiveTimeLimit(solver, solver.method));
+  Key(out, "levels");
+  out << YAML::Value << solver.levels;
+  std::map<std::string, std::map<std::string, double>> options = solver.method_options;
+  if (const SolverMethod* method = FindSolverMethod(solver.method)) {
+    for (const MethodOption& option : method->options) {
+      if (option.default_value && std::isfinite(*option.default_value)) {
+        options[solver.method].emplace(option.key, *option.default_value);
+      }
+    }
+  }
+  for (const auto& [name, values] : options) {
+    if (values.empty()) continue;
+    Key(out, name);
+    out << YAML::Value << YAML::BeginMap;
+    for (const auto& [key, value] : values) {
+      Key(out, key);
+      Number(out, value);
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
+}  // namespace
+
+void WriteSceneYaml(const Scene& scene, std::ostream& stream) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  Key(out, "name");
+  out << YAML::Value << scene.name;
+  Key(out, "dimension");
+  out << YAML::Value << scene.dimension;
+  WriteMesh(scene.mesh, out);
+  WriteMaterial(scene.material, out);
+  WriteFixed(scene.fixed, out);
+  WriteLoads(scene.loads, out);
+  Key(out, "obstacles");
+  out << YAML::Value << YAML::BeginSeq;
+  for (const ObstacleSpec& obstacle : scene.obstacles) WriteObstacle(obstacle, out);
+  out << YAML::EndSeq;
+  Key(out, "contact");
+  out << YAML::Value << YAML::BeginMap;
+  Key(out, "thickness");
+  Number(out, scene.contact.thickness);
+  out << YAML::EndMap;
+  WriteSolver(scene.solver, out);
+  Key(out, "output");
+  out << YAML::Value << YAML::BeginMap;
+  Key(out, "directory");
+  out << YAML::Value << Absolute(scene.output.directory);
+  Key(out, "write");
+  out << YAML::Value << YAML::Flow << scene.output.write;
+  out << YAML::EndMap;
+  out << YAML::EndMap;
+  stream << "# drape: the scene as solved (--set overrides applied, defaults filled in, SI units)\n"
+         << out.c_str() << "\n";
+}
+
+}  // namespace drape

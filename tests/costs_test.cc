@@ -1,0 +1,276 @@
+// One typed test over every functor in costs/: its derivatives (energy, gradient, Hessian, and the
+// fast path against the nested-Jet reference) at a generic state and at its rest or flat state, and
+// Ceres' GradientChecker on the residual path the ceres-* solvers use (Term::NewCostFunction).
+// Each functor's own test file checks its physics (closed forms, invariances); this one makes sure
+// no functor in costs/ is left out: `Costs.EveryFunctorIsListed` reads costs/ and fails for a
+// functor without a Sample below.
+#include <ceres/gradient_checker.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "costs/box_contact.h"
+#include "costs/constant_force_potential.h"
+#include "costs/cylinder_contact.h"
+#include "costs/disk_contact.h"
+#include "costs/fv_bending.h"
+#include "costs/fv_membrane.h"
+#include "costs/plane_contact.h"
+#include "costs/pressure_potential.h"
+#include "costs/sphere_contact.h"
+#include "costs/spring_stretch.h"
+#include "costs/stretch_limit_barrier.h"
+#include "costs/tension_only_spring.h"
+#include "costs/zero_length_spring.h"
+#include "src/model/term.h"
+#include "tests/term_checks.h"
+#include "tests/test_scenes.h"
+
+namespace drape {
+namespace {
+
+// Tolerances, relative to the largest entry.
+constexpr double kDifferenceTolerance = 1e-6;  // central differences, step 1e-6 × the state's size
+constexpr double kCeresTolerance = 1e-6;       // GradientChecker's relative precision
+// GradientChecker's first finite-difference step (Ridders' extrapolation shrinks it), relative to
+// each coordinate: within the smooth part of every sample (a contact's node stays inside the
+// clearance layer, ~5 mm deep; a finite volume's arms are ~1 cm).
+constexpr double kCeresInitialStep = 1e-4;
+// The least-squares shift of potentials (src/model/term.h), J: above any sample's |energy|, so
+// that the residual √(2 (E + shift)) is smooth at every state below.
+constexpr double kShift = 10.0;
+
+// A functor with the states its checks run at (3 coordinates per node, nodes 0, 1, ...): a
+// generic one, and its rest (flat, unstretched) state or, for contacts, a node inside the
+// clearance layer.
+template <typename Functor>
+struct Sample;
+
+constexpr double kClearance = 0.01, kContactStiffness = 1e4;
+const double kOrigin[3] = {0, 0, 0}, kUp[3] = {0, 0, 1};
+
+template <>
+struct Sample<SpringStretch> {
+  static constexpr const char* kName = "SpringStretch";
+  static SpringStretch Make() { return SpringStretch::Create(100.0, 1.0); }
+  static std::vector<std::vector<double>> States() {
+    return {{0.1, -0.2, 0.3, 1.0, 0.4, -0.2}, {0, 0, 0, 1, 0, 0}};
+  }
+};
+
+template <>
+struct Sample<TensionOnlySpring> {
+  static constexpr const char* kName = "TensionOnlySpring";
+  static TensionOnlySpring Make() { return TensionOnlySpring::Create(100.0, 1.0); }
+  static std::vector<std::vector<double>> States() {
+    return {{0.1, -0.2, 0.3, 1.2, 0.4, -0.2}, {0, 0, 0, 0.5, 0, 0}};
+  }
+};
+
+template <>
+struct Sample<ZeroLengthSpring> {
+  static constexpr const char* kName = "ZeroLengthSpring";
+  static ZeroLengthSpring Make() { return ZeroLengthSpring::Create(50.0); }
+  static std::vector<std::vector<double>> States() {
+    return {{0.1, -0.2, 0.3, 1.2, 0.4, -0.2}, {0.3, 0.3, 0.3, 0.3, 0.3, 0.3}};
+  }
+};
+
+template <>
+struct Sample<StretchLimitBarrier> {
+  static constexpr const char* kName = "StretchLimitBarrier";
+  static StretchLimitBarrier Make() { return StretchLimitBarrier::Create(1e3, 1.1); }
+  static std::vector<std::vector<double>> States() {
+    return {{0.1, -0.2, 0.3, 1.3, 0.4, -0.2}, {0, 0, 0, 1, 0, 0}};
+  }
+};
+
+template <>
+struct Sample<ConstantForcePotential> {
+  static constexpr const char* kName = "ConstantForcePotential";
+  static ConstantForcePotential Make() {
+    const double force[3] = {0.5, -1.0, 2.0}, reference[3] = {0.1, 0.2, 0.3};
+    return ConstantForcePotential::Create(force, reference);
+  }
+  static std::vector<std::vector<double>> States() { return {{0.4, -0.3, 0.9}, {0.1, 0.2, 0.3}}; }
+};
+
+template <>
+struct Sample<PressurePotential> {
+  static constexpr const char* kName = "PressurePotential";
+  static PressurePotential Make() { return PressurePotential::Create(3.0, 0.2, -0.1); }
+  static std::vector<std::vector<double>> States() {
+    return {{0.1, -0.2, 0.3, 1.2, 0.4, -0.2}, {1, 0, 0, 0, 0, 1}};
+  }
+};
+
+template <>
+struct Sample<SphereContact> {
+  static constexpr const char* kName = "SphereContact";
+  static SphereContact Make() {
+    return SphereContact::Create(kOrigin, 1.0, kClearance, kContactStiffness);
+  }
+  static std::vector<std::vector<double>> States() {
+    return {{0.3, 0.4, 0.87}, {0.0, 0.0, 1.004}};  // inside the layer
+  }
+};
+
+template <>
+struct Sample<PlaneContact> {
+  static constexpr const char* kName = "PlaneContact";
+  static PlaneContact Make() {
+    return PlaneContact::Create(kOrigin, kUp, kClearance, kContactStiffness);
+  }
+  static std::vector<std::vector<double>> States() { return {{0.3, 0.4, 0.006}, {0, 0, 0.002}}; }
+};
+
+template <>
+struct Sample<DiskContact> {
+  static constexpr const char* kName = "DiskContact";
+  static DiskContact Make() {
+    return DiskContact::Create(kOrigin, 1.0, kClearance, kContactStiffness);
+  }
+  static std::vector<std::vector<double>> States() {
+    return {{0.3, 0.4, 0.005}, {1.003, 0.002, 0.004}};  // over the disc, beyond its rim
+  }
+};
+
+template <>
+struct Sample<CylinderContact> {
+  static constexpr const char* kName = "CylinderContact";
+  static CylinderContact Make() {
+    return CylinderContact::Create(kOrigin, 1.0, 1.0, kClearance, kContactStiffness);
+  }
+  static std::vector<std::vector<double>> States() {
+    return {{0.3, 0.4, 0.005}, {0.6, 0.8 + 0.004, -0.5}};  // over the top, beside the side
+  }
+};
+
+template <>
+struct Sample<BoxContact> {
+  static constexpr const char* kName = "BoxContact";
+  static BoxContact Make() {
+    const double min[3] = {-1, -1, -1}, max[3] = {1, 1, 0};
+    return BoxContact::Create(min, max, kClearance, kContactStiffness);
+  }
+  static std::vector<std::vector<double>> States() {
+    return {{0.3, 0.4, 0.006}, {1.002, 1.003, 0.004}};  // over the top, near a corner
+  }
+};
+
+template <>
+struct Sample<FvMembrane> {
+  static constexpr const char* kName = "FvMembrane";
+  static FvMembrane Make() { return FvMembrane::Create(80.0, 60.0, 15.0, 5.0, 0.01, 0.012); }
+  static std::vector<std::vector<double>> States() {  // nodes P, A, B
+    return {{0.001, -0.002, 0.001, 0.011, 0.001, 0.003, -0.001, 0.013, -0.002},
+            {0, 0, 0, 0.01, 0, 0, 0, 0.012, 0}};
+  }
+};
+
+template <>
+struct Sample<FvBendingEdge> {
+  static constexpr const char* kName = "FvBendingEdge";
+  static FvBendingEdge Make() { return FvBendingEdge::Create(2e-5, 0.01, 1e-4); }
+  static std::vector<std::vector<double>> States() {  // nodes a, P, b
+    return {{-0.01, 0.001, 0.002, 0, 0, 0, 0.0098, -0.001, 0.003},
+            {-0.01, 0, 0, 0, 0, 0, 0.01, 0, 0}};
+  }
+};
+
+template <>
+struct Sample<FvBending> {
+  static constexpr const char* kName = "FvBending";
+  static FvBending Make() { return FvBending::Create(2e-5, 1.5e-5, 5e-6, 0.01, 0.012, 1.2e-4); }
+  static std::vector<std::vector<double>> States() {  // nodes W, P, E, S, N
+    return {{-0.01, 0.001, 0.002, 0, 0, 0, 0.0098, -0.001, 0.003, 0.001, -0.012, 0.002, -0.001,
+             0.0118, 0.003},
+            {-0.01, 0, 0, 0, 0, 0, 0.01, 0, 0, 0, -0.012, 0, 0, 0.012, 0}};
+  }
+};
+
+template <typename Functor>
+std::unique_ptr<Term> SampleTerm() {
+  std::vector<int> nodes(Functor::kNumNodes);
+  for (int k = 0; k < Functor::kNumNodes; ++k) nodes[k] = k;
+  return MakeTerm(Sample<Functor>::kName, nodes, Sample<Functor>::Make(), kShift);
+}
+
+template <typename Functor>
+class CostsTest : public ::testing::Test {};
+
+using Functors = ::testing::Types<SpringStretch, TensionOnlySpring, ZeroLengthSpring,
+                                  StretchLimitBarrier, ConstantForcePotential, PressurePotential,
+                                  SphereContact, PlaneContact, DiskContact, CylinderContact,
+                                  BoxContact, FvMembrane, FvBendingEdge, FvBending>;
+
+class FunctorNames {
+ public:
+  template <typename Functor>
+  static std::string GetName(int) {
+    return Sample<Functor>::kName;
+  }
+};
+
+TYPED_TEST_SUITE(CostsTest, Functors, FunctorNames);
+
+TYPED_TEST(CostsTest, DerivativesMatchDifferencesAndTheNestedJetReference) {
+  const auto term = SampleTerm<TypeParam>();
+  for (const std::vector<double>& state : Sample<TypeParam>::States()) {
+    SCOPED_TRACE(::testing::Message() << "state " << ::testing::PrintToString(state));
+    testing::ExpectDerivativesMatchDifferences(*term, state, kDifferenceTolerance);
+  }
+}
+
+TYPED_TEST(CostsTest, CeresGradientCheckerAcceptsTheResidualPath) {
+  const auto term = SampleTerm<TypeParam>();
+  const std::unique_ptr<ceres::CostFunction> cost(term->NewCostFunction());
+  ceres::NumericDiffOptions difference;
+  difference.ridders_relative_initial_step_size = kCeresInitialStep;
+  const ceres::GradientChecker checker(
+      cost.get(), static_cast<const std::vector<const ceres::Manifold*>*>(nullptr), difference);
+  for (std::vector<double> state : Sample<TypeParam>::States()) {
+    std::vector<const double*> blocks(TypeParam::kNumNodes);
+    for (int k = 0; k < TypeParam::kNumNodes; ++k) blocks[k] = state.data() + 3 * k;
+    // No ProbeResults unless it fails: its inline destructor frees Eigen storage that Ceres
+    // allocated, which AddressSanitizer builds of this file read as a heap overflow (Eigen's
+    // alignment bookkeeping differs between this translation unit and Debian's libceres there).
+    if (!checker.Probe(blocks.data(), kCeresTolerance, nullptr)) {
+      ceres::GradientChecker::ProbeResults results;
+      checker.Probe(blocks.data(), kCeresTolerance, &results);
+      ADD_FAILURE() << "state " << ::testing::PrintToString(state) << "\n" << results.error_log;
+    }
+  }
+}
+
+template <typename... Functor>
+std::set<std::string> NamesOf(::testing::Types<Functor...>*) {
+  return {Sample<Functor>::kName...};
+}
+
+// Every struct in costs/ with a kNumNodes (a functor a Term wraps) has a Sample above.
+TEST(Costs, EveryFunctorIsListed) {
+  std::set<std::string> in_costs;
+  const std::regex functor(R"(^struct (\w+) \{$)");
+  for (const auto& entry : std::filesystem::directory_iterator(testing::SourcePath("costs"))) {
+    std::ifstream file(entry.path());
+    std::string line, current;
+    while (std::getline(file, line)) {
+      std::smatch match;
+      if (std::regex_match(line, match, functor)) current = match[1];
+      if (!current.empty() && line.find("static constexpr int kNumNodes") != std::string::npos) {
+        in_costs.insert(current);
+      }
+    }
+  }
+  EXPECT_EQ(in_costs, NamesOf(static_cast<Functors*>(nullptr)));
+}
+
+}  // namespace
+}  // namespace drape
