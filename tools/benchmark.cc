@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -161,32 +162,47 @@ void PrintSplits(const std::vector<std::pair<int, Row>>& splits) {
   }
 }
 
-int SolverComparisonMain(int argc, char** argv) {
+// The options of `benchmark solvers`; false (after the usage line) on an unknown one.
+struct SolverComparisonOptions {
   std::vector<int> sizes = {50, 100, 256};
   std::vector<std::string> solvers;
-  for (const auto& info : AllSolvers()) solvers.push_back(info.name);
   double cap = 600.0, newton_cap = -1.0;
   std::string scene_file = "configs/hard/two_corner_sheet.yaml";  // run from the repository root
+};
+
+bool ReadSolverComparisonOptions(int argc, char** argv, SolverComparisonOptions* options) {
+  for (const auto& info : AllSolvers()) options->solvers.push_back(info.name);
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
     if (key == "--sizes") {
-      sizes.clear();
-      for (const auto& part : Split(value)) sizes.push_back(std::atoi(part.c_str()));
+      options->sizes.clear();
+      for (const auto& part : Split(value)) options->sizes.push_back(std::atoi(part.c_str()));
     } else if (key == "--solvers") {
-      solvers = Split(value);
+      options->solvers = Split(value);
     } else if (key == "--scene") {
-      scene_file = value;
+      options->scene_file = value;
     } else if (key == "--cap") {
-      cap = std::atof(value.c_str());
+      options->cap = std::atof(value.c_str());
     } else if (key == "--newton-cap") {
-      newton_cap = std::atof(value.c_str());
+      options->newton_cap = std::atof(value.c_str());
     } else {
       std::fprintf(stderr,
                    "usage: benchmark [--sizes 50,100] [--solvers a,b] [--cap s] [--newton-cap s] "
                    "[--scene file]\n");
-      return 2;
+      return false;
     }
   }
+  return true;
+}
+
+int SolverComparisonMain(int argc, char** argv) {
+  SolverComparisonOptions options;
+  if (!ReadSolverComparisonOptions(argc, argv, &options)) return 2;
+  const std::vector<int>& sizes = options.sizes;
+  const std::vector<std::string>& solvers = options.solvers;
+  const double cap = options.cap;
+  double newton_cap = options.newton_cap;
+  const std::string& scene_file = options.scene_file;
   if (newton_cap <= 0.0) newton_cap = cap;
   std::printf(
       "| nodes | dofs | solver | iterations | wall s | rel. residual | energy J | "
@@ -282,6 +298,7 @@ SolveRun RunDrape(const std::string& binary, const BenchScene& scene, double cap
   const pid_t child = fork();
   if (child == 0) {
     std::vector<char*> argv;
+    argv.reserve(args.size() + 1);
     for (auto& arg : args) argv.push_back(arg.data());
     argv.push_back(nullptr);
     if (!freopen("/dev/null", "w", stdout)) _exit(127);
@@ -541,9 +558,14 @@ int ScenesMain(int argc, char** argv) {
 }  // namespace drape
 
 int main(int argc, char** argv) {
-  drape::RunLibrariesOnOneThread();  // as drape does (src/numerics/library_threads.h)
-  if (argc > 1 && std::string(argv[1]) == "solvers") {
-    return drape::SolverComparisonMain(argc - 1, argv + 1);
+  try {
+    drape::RunLibrariesOnOneThread();  // as drape does (src/numerics/library_threads.h)
+    if (argc > 1 && std::string(argv[1]) == "solvers") {
+      return drape::SolverComparisonMain(argc - 1, argv + 1);
+    }
+    return drape::ScenesMain(argc, argv);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "benchmark: %s\n", error.what());
+    return 1;
   }
-  return drape::ScenesMain(argc, argv);
 }

@@ -162,6 +162,29 @@ void ParallelFor(int count, int threads, const Work& work) {
 
 constexpr int kTermsPerBlock = 8192;  // local results held at once: a few MB
 
+// One term's energy, gradient and Hessian at `positions`, and when `projected` is given, its
+// Hessian made semidefinite there (`*changed` whether that changed it). False if not evaluable.
+bool EvaluateTerm(const Term& term, const double* positions, EigenvalueFilter filter,
+                  double* energy, double* gradient, double* hessian, double* projected,
+                  bool* changed) {
+  *changed = false;
+  if (!term.EnergyHessian(positions, energy, gradient, hessian)) return false;
+  if (projected == nullptr) return true;
+  const int n = term.num_coordinates();
+  std::copy(hessian, hessian + n * n, projected);
+  *changed = ProjectToPositiveSemidefinite(filter, n, projected);
+  return true;
+}
+
+// Adds a term's n×n local matrix into the global values, entry k to destination[k] (< 0: a fixed
+// coordinate's entry, left out).
+void AddLocalMatrix(const int* destination, int n, const double* local,
+                    std::vector<double>* values) {
+  for (int k = 0; k < n * n; ++k) {
+    if (destination[k] >= 0) (*values)[destination[k]] += local[k];
+  }
+}
+
 }  // namespace
 
 int DefaultAssemblyThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
@@ -194,18 +217,13 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
     ParallelFor(count, threads_, [&](int begin, int end) {
       for (int i = begin; i < end; ++i) {
         const int t = first + i;
-        const Term& term = *model_.terms[t];
-        const int n = term.num_coordinates();
-        double* hessian = block_hessian_.data() + term_offsets_[t] - base;
-        block_status_[i] =
-            term.EnergyHessian(positions, &block_energy_[i],
-                               block_gradient_.data() + block_gradient_offsets_[i], hessian)
-                ? kEvaluated
-                : kFailed;
-        if (!project || block_status_[i] == kFailed) continue;
-        double* projected = block_projected_.data() + term_offsets_[t] - base;
-        std::copy(hessian, hessian + n * n, projected);
-        if (ProjectToPositiveSemidefinite(filter_, n, projected)) block_status_[i] = kProjected;
+        const int offset = term_offsets_[t] - base;
+        bool changed = false;
+        const bool evaluated = EvaluateTerm(
+            *model_.terms[t], positions, filter_, &block_energy_[i],
+            block_gradient_.data() + block_gradient_offsets_[i], block_hessian_.data() + offset,
+            project ? block_projected_.data() + offset : nullptr, &changed);
+        block_status_[i] = !evaluated ? kFailed : (changed ? kProjected : kEvaluated);
       }
     });
     for (int i = 0; i < count; ++i) {
@@ -219,16 +237,11 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
       const double* local_gradient = block_gradient_.data() + block_gradient_offsets_[i];
       for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
       const int* destination = destinations_.data() + term_offsets_[t];
-      const double* local_hessian = block_hessian_.data() + term_offsets_[t] - base;
-      for (int k = 0; k < n * n; ++k) {
-        if (destination[k] >= 0) values_[destination[k]] += local_hessian[k];
-      }
+      AddLocalMatrix(destination, n, block_hessian_.data() + term_offsets_[t] - base, &values_);
       if (!project) continue;
       if (block_status_[i] == kProjected) ++assembly->projected_terms;
-      const double* local_projected = block_projected_.data() + term_offsets_[t] - base;
-      for (int k = 0; k < n * n; ++k) {
-        if (destination[k] >= 0) projected_[destination[k]] += local_projected[k];
-      }
+      AddLocalMatrix(destination, n, block_projected_.data() + term_offsets_[t] - base,
+                     &projected_);
     }
   }
   return std::isfinite(assembly->energy);
