@@ -16,10 +16,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Top to bottom; fit and compare are side by side (neither includes the other).
-const std::vector<std::set<std::string>> kLayers = {{"cli"},      {"fit", "compare"}, {"output"},
-                                                    {"analysis"}, {"solvers"},        {"numerics"},
-                                                    {"model"},    {"costs"},          {"scene"}};
+// Top to bottom; fit, compare and sweep are side by side (none includes another).
+const std::vector<std::set<std::string>> kLayers = {{"cli"},      {"fit", "compare", "sweep"},
+                                                    {"parallel"}, {"output"},
+                                                    {"analysis"}, {"solvers"},
+                                                    {"numerics"}, {"model"},
+                                                    {"costs"},    {"scene"}};
 
 // Includes that break the rule today, each to be removed (not added to): none.
 const std::set<std::pair<std::string, std::string>> kKnownExceptions = {};
