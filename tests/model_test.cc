@@ -261,6 +261,61 @@ TEST(Model, AppliedForcesAreWeightPlusLoads) {
   for (int k = 0; k < model.num_dofs(); ++k) EXPECT_NEAR(-gradient[k], model.applied[k], 1e-12);
 }
 
+// `traction` and `pressure` are forces per unit area: each selected node gets its lumped area
+// (the area its mass is lumped from) times the traction, or times p along the initial normal.
+// On a flat sheet in the x-y plane the normal is +z (the grid's triangles run counterclockwise
+// seen from +z), so a pressure p is the traction [0, 0, p]; on the whole sheet their sum is
+// p × the sheet's area. A pressure needs a surface: on a chain it is refused where written.
+TEST(Model, TractionAndPressureAreLumpedByArea) {
+  Scene scene = Sheet(5, 4);
+  ForceSpec traction;
+  traction.nodes.kind = NodeSelector::Kind::kAll;
+  traction.kind = ForceSpec::Kind::kTraction;
+  traction.value = {2.0, 0.0, -3.0};
+  scene.loads.forces = {traction};
+  const Model by_traction = BuildModel(scene);
+  const double area = 0.6 * 0.4;
+  EXPECT_NEAR((AppliedSum(by_traction) - area * traction.value).norm(), 0.0, 1e-14);
+  // A corner node carries a quarter of one cell, an inner node a whole cell.
+  const double cell = (0.6 / 4) * (0.4 / 3);
+  EXPECT_NEAR(by_traction.applied[3 * 0 + 2], -3.0 * cell / 4, 1e-15);
+  EXPECT_NEAR(by_traction.applied[3 * 6 + 2], -3.0 * cell, 1e-15);
+
+  ForceSpec pressure;
+  pressure.nodes.kind = NodeSelector::Kind::kIds;
+  pressure.nodes.ids = {6, 7, 8, 11, 12, 13};  // the inner nodes
+  pressure.kind = ForceSpec::Kind::kPressure;
+  pressure.pressure = 40.0;
+  ForceSpec as_traction = pressure;
+  as_traction.kind = ForceSpec::Kind::kTraction;
+  as_traction.value = {0.0, 0.0, 40.0};
+  scene.loads.forces = {pressure};
+  const Model by_pressure = BuildModel(scene);
+  scene.loads.forces = {as_traction};
+  const Model by_vertical_traction = BuildModel(scene);
+  for (int k = 0; k < by_pressure.num_dofs(); ++k) {
+    EXPECT_NEAR(by_pressure.applied[k], by_vertical_traction.applied[k], 1e-14) << k;
+  }
+  EXPECT_NEAR(AppliedSum(by_pressure).z(), 40.0 * 6 * cell, 1e-13);
+
+  Scene chain;
+  chain.file = "scene.yaml";
+  chain.mesh.kind = MeshSpec::Kind::kChain;
+  chain.mesh.nodes = {5, 1};
+  chain.mesh.length = 1.0;
+  chain.material = scene.material;
+  NodeSelector first;
+  first.kind = NodeSelector::Kind::kIds;
+  first.ids = {0};
+  chain.fixed = {Fixed(first)};
+  pressure.where = Location{"scene.yaml", 12, 7, "loads.forces[0]"};
+  pressure.nodes.ids = {1, 2};
+  chain.loads.forces = {pressure};
+  const std::string message = ErrorOf(chain);
+  EXPECT_EQ(message.rfind("scene.yaml:12:7: loads.forces[0]: ", 0), 0u) << message;
+  EXPECT_NE(message.find("needs a surface mesh"), std::string::npos) << message;
+}
+
 TEST(Model, LoadsWithNothingFixedAlongThemHaveNoMinimum) {
   Scene scene = Sheet(3, 3);
   scene.loads.gravity = kGravity;

@@ -140,6 +140,55 @@ TEST(Regions, StripWithAStiffHalfMatchesBeamTheory) {
   EXPECT_NEAR(ratio, expected, 2e-3);  // 1 if the region were ignored, 0.5 over the whole strip
 }
 
+// The plate with its tip (the last three columns, x >= 6 cm) a named region, pushed down by a
+// pressure given on that region by name, or on the same box written out.
+std::string PlateWithTipPressure(const std::string& tip_selection) {
+  std::string text = Plate(
+      "regions:\n"
+      "  - name: tip\n"
+      "    nodes: {box: {min: [0.055, -1, -1], max: [1, 1, 1]}}\n"
+      "    density: 0.12\n");
+  const std::string gravity = "  gravity: [0, 0, -9.81]\n";
+  text.replace(text.find(gravity), gravity.size(),
+               gravity + "  forces:\n    - nodes: " + tip_selection + "\n      pressure: -2\n");
+  return text;
+}
+
+// A load on a region by name is the load on the region's selection: the same applied forces
+// (p × the lumped area of the 15 tip nodes, along -z) and the same equilibrium, which balances.
+TEST(Regions, APressureOnANamedRegionIsThePressureOnItsNodes) {
+  const Scene by_name = SceneFromText(PlateWithTipPressure("{region: tip}"), "i");
+  const Scene by_box =
+      SceneFromText(PlateWithTipPressure("{box: {min: [0.055, -1, -1], max: [1, 1, 1]}}"), "j");
+  Model named = BuildModel(by_name);
+  Model boxed = BuildModel(by_box);
+  const Mesh mesh = BuildMesh(by_name.mesh);
+  double tip_area = 0.0;
+  for (size_t k = 0; k < mesh.nodes.size(); ++k) {
+    if (mesh.nodes[k].x() > 0.055) tip_area += mesh.area[k];
+  }
+  EXPECT_NEAR(tip_area, 0.025 * 0.04, 1e-15);  // 2.5 columns of 1 cm cells
+  Eigen::Vector3d load = Eigen::Vector3d::Zero();
+  for (int k = 0; k < named.num_nodes; ++k) {
+    load +=
+        Eigen::Vector3d(named.applied[3 * k], named.applied[3 * k + 1], named.applied[3 * k + 2]) -
+        named.mass[k] * Eigen::Vector3d(0, 0, -9.81);
+  }
+  EXPECT_NEAR((load - Eigen::Vector3d(0, 0, -2.0 * tip_area)).norm(), 0.0, 1e-15);
+  EXPECT_EQ(named.applied, boxed.applied);
+
+  const RunResult a = RunSolve(by_name, named, "newton");
+  const RunResult b = RunSolve(by_box, boxed, "newton");
+  ASSERT_TRUE(a.converged) << a.summary.termination;
+  EXPECT_TRUE(a.certificate.balanced);
+  EXPECT_TRUE(a.stability.stable);
+  EXPECT_EQ(named.positions, boxed.positions);
+  // The load bends the plate further than its weight alone.
+  Model unloaded = BuildModel(SceneFromText(Plate(""), "k"));
+  ASSERT_TRUE(RunSolve(SceneFromText(Plate(""), "l"), unloaded, "newton").converged);
+  EXPECT_LT(testing::Position(named, 8).z(), testing::Position(unloaded, 8).z() - 1e-4);
+}
+
 // Overlapping regions: the later one wins, key by key; nodes in no region keep the scene's
 // material; the counts say how many nodes each region selects and keeps.
 TEST(Regions, TheLaterRegionWinsKeyByKey) {

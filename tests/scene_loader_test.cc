@@ -419,6 +419,60 @@ regions:
                        "9:5: regions[0]: the region overrides nothing"));
 }
 
+// A named region is selected by `{region: name}` wherever a selection is written (supports,
+// loads, spring lines, later regions): the loader puts the region's own selection there, located
+// where the region wrote it. Traction and pressure are read as forces per unit area.
+TEST_F(SceneLoaderTest, RegionReferencesBecomeTheRegionsSelection) {
+  const Scene scene = Load(std::string(kMinimal) + R"(  lines:
+    - nodes: {region: hem}
+      structural: 50
+regions:
+  - name: hem
+    nodes: {row: 0}
+    density: 0.4
+  - nodes: {region: hem}
+    density: 0.5
+fixed:
+  - nodes: {region: hem}
+loads:
+  forces:
+    - nodes: {region: hem}
+      traction: [0, 0, -2]
+    - nodes: {all: true}
+      pressure: 30
+)");
+  ASSERT_EQ(scene.regions.size(), 2u);
+  EXPECT_EQ(scene.regions[0].name, "hem");
+  EXPECT_TRUE(scene.regions[1].name.empty());
+  for (const NodeSelector* selector : {&scene.material.lines[0].nodes, &scene.regions[1].nodes,
+                                       &scene.fixed[0].nodes, &scene.loads.forces[0].nodes}) {
+    EXPECT_TRUE(selector->region.empty());
+    EXPECT_EQ(selector->kind, NodeSelector::Kind::kRow);
+    EXPECT_EQ(selector->index, 0);
+    EXPECT_EQ(selector->where.key, "regions[0].nodes.row");  // errors point at the region
+  }
+  EXPECT_EQ(scene.loads.forces[0].kind, ForceSpec::Kind::kTraction);
+  EXPECT_EQ(scene.loads.forces[0].value, Eigen::Vector3d(0, 0, -2));
+  EXPECT_EQ(scene.loads.forces[1].kind, ForceSpec::Kind::kPressure);
+  EXPECT_EQ(scene.loads.forces[1].pressure, 30.0);
+
+  const std::string regions =
+      std::string(kMinimal) + "regions:\n  - name: hem\n    nodes: {row: 0}\n    density: 0.4\n";
+  EXPECT_TRUE(Contains(Error(regions + "fixed:\n  - nodes: {region: rim}\n"),
+                       "13:21: fixed[0].nodes.region: no region named 'rim' (named regions: hem)"));
+  EXPECT_TRUE(Contains(Error(regions + "  - name: hem\n    nodes: {row: 1}\n    density: 0.3\n"),
+                       "12:11: regions[1].name: another region is already named 'hem'"));
+  EXPECT_TRUE(Contains(
+      Error(std::string(kMinimal) + "regions:\n  - nodes: {region: late}\n    density: 0.4\n"
+                                    "  - name: late\n    nodes: {row: 1}\n    density: 0.3\n"),
+      "9:21: regions[0].nodes.region: no region named 'late' before this one"));
+  EXPECT_TRUE(Contains(Error(std::string(kMinimal) + "fixed:\n  - nodes: {region: hem}\n"),
+                       "9:21: fixed[0].nodes.region: no region named 'hem' (no region is named"));
+  EXPECT_TRUE(Contains(Error(std::string(kMinimal) +
+                             "loads:\n  forces:\n    - nodes: {all: true}\n      pressure: [1]\n"),
+                       "11:17: loads.forces[0].pressure: expected a number"));
+}
+
 TEST_F(SceneLoaderTest, SpecsCarryTheirLocations) {
   const Scene scene = Load(std::string(kMinimal) + R"(loads:
   gravity: [0, 0, -9.81]

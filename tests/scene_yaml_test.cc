@@ -60,7 +60,8 @@ TEST(SceneYaml, EveryConfigRoundTrips) {
 }
 
 // Springs beside a finite-volume fabric, spring lines and regions (every kind of key, the row,
-// column and outside selectors) are written back, and the scene they load into builds the same
+// column and outside selectors, a region's name), loads on a region by name, traction and pressure
+// are written back, and the scene they load into builds the same
 // model: the same terms, masses and energy at a perturbed configuration.
 TEST(SceneYaml, HoldsSpringsLinesAndRegions) {
   const Scene scene = testing::LoadConfig(
@@ -69,7 +70,9 @@ TEST(SceneYaml, HoldsSpringsLinesAndRegions) {
        "material.lines[0].nodes={row: 4}",
        "regions=[{nodes: {column: 3}, D_warp: 3.0e-5, nu_warp: 0.1, structural: {warp: 50, weft: "
        "40}, tension_only: false}, {nodes: {outside: {center: [0, 0, 0], radius: 0.15}}, "
-       "density: 0.3}]"});
+       "density: 0.3, name: rim}]",
+       "loads.forces=[{nodes: {region: rim}, pressure: -1.5}, {nodes: {all: true}, traction: [0, "
+       "0.5, 0]}]"});
   const Scene again = RoundTrip(scene, "combined");
   EXPECT_EQ(SceneText(again), SceneText(scene));
   ASSERT_EQ(again.regions.size(), 2u);
@@ -79,7 +82,14 @@ TEST(SceneYaml, HoldsSpringsLinesAndRegions) {
   EXPECT_EQ(again.regions[1].nodes.kind, NodeSelector::Kind::kOutside);
   EXPECT_EQ(again.material.lines[0].nodes.kind, NodeSelector::Kind::kRow);
   EXPECT_TRUE(again.material.springs.present);
+  EXPECT_EQ(again.regions[1].name, "rim");
+  ASSERT_EQ(again.loads.forces.size(), 2u);
+  EXPECT_EQ(again.loads.forces[0].kind, ForceSpec::Kind::kPressure);
+  EXPECT_EQ(again.loads.forces[0].pressure, -1.5);
+  EXPECT_EQ(again.loads.forces[0].nodes.kind, NodeSelector::Kind::kOutside);
+  EXPECT_EQ(again.loads.forces[1].kind, ForceSpec::Kind::kTraction);
   const Model model = BuildModel(scene), rebuilt = BuildModel(again);
+  EXPECT_EQ(rebuilt.applied, model.applied);
   EXPECT_EQ(rebuilt.TermCounts(), model.TermCounts());
   EXPECT_EQ(model.TermCounts().at("line"), 8);
   EXPECT_GT(model.TermCounts().at("shear"), 0);

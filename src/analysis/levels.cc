@@ -66,8 +66,12 @@ void CheckScalable(const Scene& scene) {
     Refuse(scene, "needs the mass as density or total_mass (a mass per node changes with h)");
   }
   for (const ForceSpec& force : scene.loads.forces) {
-    if (force.kind != ForceSpec::Kind::kTotal) {
-      Refuse(scene, "needs forces given as `total` (a force per node changes with h)");
+    const bool per_area =
+        force.kind == ForceSpec::Kind::kTraction || force.kind == ForceSpec::Kind::kPressure;
+    if (force.kind != ForceSpec::Kind::kTotal && !per_area) {
+      Refuse(scene,
+             "needs forces given as `total`, `traction` or `pressure` (a force per node changes "
+             "with h)");
     }
   }
 }

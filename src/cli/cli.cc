@@ -237,8 +237,10 @@ int Check(const Arguments& arguments, std::ostream& out) {
   out << "\n";
   for (size_t r = 0; r < model.region_counts.size(); ++r) {
     const Model::RegionCount& count = model.region_counts[r];
-    out << "region " << r << " (line " << scene.regions[r].where.line << "): " << count.selected
-        << " nodes, " << count.last << " of them in no later region\n";
+    const std::string& name = scene.regions[r].name;
+    out << "region " << r << (name.empty() ? "" : " '" + name + "'") << " (line "
+        << scene.regions[r].where.line << "): " << count.selected << " nodes, " << count.last
+        << " of them in no later region\n";
   }
   out << std::flush;
   return kExitConverged;

@@ -24,12 +24,15 @@
 // 2-D (dimension: 2) every node's y is fixed as well.
 // Loads: gravity m·g on every node with mass, forces `total` shared equally among the selected
 // nodes, `each` on every one, `values` one per selected node in id order, or a `ramp` from `from`
-// to `to` (see RampParameters); one linear potential per loaded node, measured from its start.
+// to `to` (see RampParameters), a `traction` (Pa) or a `pressure` (Pa, along the initial normal)
+// times each node's lumped area (AreaForces); one linear potential per loaded node, measured from
+// its start. Selections `{region: name}` are the named region's own (resolved by the loader).
 // Pressure (loads.pressure) on a closed chain: one PressurePotential per link of the loop, the
 // loop oriented so that its initial x–z area is positive (p > 0 inflates). It is a follower load,
 // not a constant one, so it is not counted in `applied`.
 #include "src/model/model.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -303,11 +306,54 @@ std::vector<double> RampParameters(const std::vector<int>& nodes, const Mesh& me
   return parameters;
 }
 
+// The unit normal of the initial surface at each node: the sum of its triangles' area vectors
+// (right-hand rule over each triangle's node order), normalised; zero where a node has none.
+std::vector<Eigen::Vector3d> NodeNormals(const Mesh& mesh) {
+  std::vector<Eigen::Vector3d> normals(mesh.nodes.size(), Eigen::Vector3d::Zero());
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3d area_vector =
+        (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]);
+    for (int node : t) normals[node] += area_vector;
+  }
+  for (auto& normal : normals) {
+    if (normal.norm() > 0.0) normal.normalize();
+  }
+  return normals;
+}
+
+// `traction` (Pa) or `pressure` (Pa along the initial normal) on each selected node, times the
+// node's lumped area (its lumped length on a chain: then N/m). Dead loads: their direction and
+// area are the initial surface's.
+std::vector<Eigen::Vector3d> AreaForces(const ForceSpec& spec, const std::vector<int>& nodes,
+                                        const Mesh& mesh) {
+  const std::vector<double> weights = MassWeights(mesh);
+  std::vector<Eigen::Vector3d> normals;
+  if (spec.kind == ForceSpec::Kind::kPressure) {
+    if (mesh.triangles.empty()) {
+      throw InputError(spec.where,
+                       "a pressure on selected nodes needs a surface mesh (triangles); a closed "
+                       "2-D chain takes loads.pressure, a follower pressure on the whole loop");
+    }
+    normals = NodeNormals(mesh);
+  }
+  std::vector<Eigen::Vector3d> forces;
+  for (int node : nodes) {
+    const Eigen::Vector3d per_area = spec.kind == ForceSpec::Kind::kPressure
+                                         ? Eigen::Vector3d(spec.pressure * normals[node])
+                                         : spec.value;
+    forces.push_back(weights[node] * per_area);
+  }
+  return forces;
+}
+
 // The force on each selected node, in the order of `nodes`.
 std::vector<Eigen::Vector3d> NodeForces(const ForceSpec& spec, const std::vector<int>& nodes,
                                         const Mesh& mesh) {
   const size_t n = nodes.size();
   switch (spec.kind) {
+    case ForceSpec::Kind::kTraction:
+    case ForceSpec::Kind::kPressure:
+      return AreaForces(spec, nodes, mesh);
     case ForceSpec::Kind::kTotal:
       return std::vector<Eigen::Vector3d>(n, spec.value / static_cast<double>(n));
     case ForceSpec::Kind::kEach:

@@ -6,6 +6,7 @@
 #include "src/model/selection.h"
 
 #include <algorithm>
+#include <cassert>
 #include <map>
 #include <sstream>
 #include <string>
@@ -176,6 +177,7 @@ std::vector<int> SelectWithin(const NodeSelector& selector, const Mesh& mesh) {
 }  // namespace
 
 std::vector<int> SelectNodes(const NodeSelector& selector, const Mesh& mesh) {
+  assert(selector.region.empty() && "the loader resolves {region: name} selections");
   std::vector<int> ids;
   switch (selector.kind) {
     case NodeSelector::Kind::kEdge:

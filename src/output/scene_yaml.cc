@@ -261,6 +261,10 @@ void WriteRegions(const std::vector<RegionSpec>& regions, YAML::Emitter& out) {
   out << YAML::Value << YAML::BeginSeq;
   for (const RegionSpec& region : regions) {
     out << YAML::BeginMap;
+    if (!region.name.empty()) {
+      Key(out, "name");
+      out << YAML::Value << region.name;
+    }
     WriteSelector(region.nodes, out);
     if (region.density) {
       Key(out, "density");
@@ -320,6 +324,14 @@ void WriteForce(const ForceSpec& force, YAML::Emitter& out) {
             << Exact(value.z()) << YAML::EndSeq;
       }
       out << YAML::EndSeq;
+      break;
+    case ForceSpec::Kind::kTraction:
+      Key(out, "traction");
+      Vector3(out, force.value);
+      break;
+    case ForceSpec::Kind::kPressure:
+      Key(out, "pressure");
+      Number(out, force.pressure);
       break;
     case ForceSpec::Kind::kRamp:
       Key(out, "ramp");

@@ -79,6 +79,9 @@ struct NodeSelector {
   Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // box
   Eigen::Vector3d center = Eigen::Vector3d::Zero();                              // within, outside
   double radius = 0.0;                                                           // within, outside
+  // `{region: NAME}`: the named region's own selection. The loader replaces such a selector by a
+  // copy of that region's selection, so `region` is empty in a loaded Scene.
+  std::string region;
   Location where;
 };
 
@@ -133,6 +136,7 @@ struct MaterialSpec {
 // A region (`regions:`): material values overriding the scene's material for the selected nodes
 // (src/model/regions.h). Only what is given overrides; a later region overrides an earlier one.
 struct RegionSpec {
+  std::string name;  // optional; loads, supports and lines select the region by `{region: name}`
   NodeSelector nodes;
   std::optional<double> density;                // kg/m² (material.density)
   std::map<std::string, double> finite_volume;  // E_warp, E_weft, nu_warp, nu_weft, G, D_* (SI)
@@ -153,12 +157,14 @@ struct ForceSpec {
   NodeSelector nodes;
   // kTotal: `value` shared equally; kEach: `value` on every node; kValues: `values[k]` on the k-th
   // selected node in id order; kRamp: from `value` (first node) to `ramp_to` (last node), linear
-  // in the node's position along the selection.
-  enum class Kind { kTotal, kEach, kValues, kRamp };
+  // in the node's position along the selection; kTraction: `value` (Pa) times each node's lumped
+  // area; kPressure: `pressure` (Pa) times each node's lumped area along its initial normal.
+  enum class Kind { kTotal, kEach, kValues, kRamp, kTraction, kPressure };
   Kind kind = Kind::kTotal;
   Eigen::Vector3d value = Eigen::Vector3d::Zero();    // N
   std::vector<Eigen::Vector3d> values;                // N, kValues
   Eigen::Vector3d ramp_to = Eigen::Vector3d::Zero();  // N, kRamp
+  double pressure = 0.0;                              // Pa, kPressure
   Location values_where;                              // the `values` list (kValues)
   Location where;
 };

@@ -597,6 +597,9 @@ void ReadSelectorKind(const std::string& kind, const YamlValue& value, NodeSelec
     const YamlMap within(value, {"center", "radius"});
     selector->center = ReadVector3(within.Get("center"));
     selector->radius = ReadPositive(within.Get("radius"));
+  } else if (kind == "region") {
+    selector->region = ReadString(value);
+    if (selector->region.empty()) Fail(value, "expected the name of a region, got an empty name");
   } else {
     selector->kind = NodeSelector::Kind::kAll;
     if (!ReadBool(value)) Fail(value, "'all: false' selects nothing; write all: true");
@@ -604,8 +607,8 @@ void ReadSelectorKind(const std::string& kind, const YamlValue& value, NodeSelec
 }
 
 NodeSelector ReadSelector(const YamlValue& value) {
-  static const std::vector<std::string> kinds = {"edge",   "corner", "ids",    "ij",      "row",
-                                                 "column", "box",    "within", "outside", "all"};
+  static const std::vector<std::string> kinds = {
+      "edge", "corner", "ids", "ij", "row", "column", "box", "within", "outside", "all", "region"};
   if (!value.get().IsMap()) {
     Fail(value, "expected a node selection such as {edge: top} or {ids: [0, 3]}, got " +
                     Describe(value.get()));
@@ -670,13 +673,26 @@ void ReadRegionKey(const std::string& key, const YamlValue& value, RegionSpec* r
   }
 }
 
+// A region's `name`: a non-empty text, given to one region only.
+std::string ReadRegionName(const YamlValue& value, const std::vector<RegionSpec>& earlier) {
+  const std::string name = ReadString(value);
+  if (name.empty()) Fail(value, "expected a name for the region, got an empty name");
+  for (const RegionSpec& region : earlier) {
+    if (region.name == name) {
+      Fail(value, "another region is already named '" + name + "' (at line " +
+                      std::to_string(region.where.line) + ")");
+    }
+  }
+  return name;
+}
+
 std::vector<RegionSpec> ReadRegions(const YamlValue& value, const MaterialSpec& material) {
   if (!value.get().IsSequence() && !value.get().IsNull()) {
     Fail(value,
          "expected a list of regions (- nodes: ..., D_warp: ...), got " + Describe(value.get()));
   }
-  std::vector<std::string> keys = {"nodes", "density", "structural",
-                                   "shear", "flexion", "tension_only"};
+  std::vector<std::string> keys = {"nodes",   "density",      "structural", "shear",
+                                   "flexion", "tension_only", "name"};
   for (const FiniteVolumeKey& fv : FiniteVolumeKeys()) keys.push_back(fv.key);
   std::vector<RegionSpec> regions;
   for (const auto& item : ReadList(value)) {
@@ -684,14 +700,15 @@ std::vector<RegionSpec> ReadRegions(const YamlValue& value, const MaterialSpec& 
     RegionSpec region;
     region.where = item.where;
     region.nodes = ReadSelector(map.Get("nodes"));
+    if (const auto name = map.Find("name")) region.name = ReadRegionName(*name, regions);
     for (const std::string& key : map.Keys()) {
-      if (key == "nodes") continue;
+      if (key == "nodes" || key == "name") continue;
       CheckRegionKeyApplies(map, key, material);
       ReadRegionKey(key, map.Get(key), &region);
     }
     if (region.given.empty()) {
       Fail(item, "the region overrides nothing: give one or more of " +
-                     JoinNames(std::vector<std::string>(keys.begin() + 1, keys.end())));
+                     JoinNames(std::vector<std::string>(keys.begin() + 1, keys.end() - 1)));
     }
     regions.push_back(region);
   }
@@ -755,7 +772,7 @@ void ReadForceRamp(const YamlValue& value, ForceSpec* force) {
 }
 
 ForceSpec ReadForce(const YamlValue& item) {
-  const YamlMap map(item, {"nodes", "total", "each", "values", "ramp"});
+  const YamlMap map(item, {"nodes", "total", "each", "values", "ramp", "traction", "pressure"});
   ForceSpec force;
   force.where = item.where;
   force.nodes = ReadSelector(map.Get("nodes"));
@@ -765,7 +782,8 @@ ForceSpec ReadForce(const YamlValue& item) {
   }
   if (given.size() > 1) {
     throw InputError(map.KeyLocation(given[1]),
-                     "give the force in one way only (total, each, values or ramp), not both: '" +
+                     "give the force in one way only (total, each, values, ramp, traction or "
+                     "pressure), not both: '" +
                          given[0] + "' is given too");
   }
   if (const auto values = map.Find("values")) {
@@ -778,13 +796,20 @@ ForceSpec ReadForce(const YamlValue& item) {
   } else if (const auto each = map.Find("each")) {
     force.kind = ForceSpec::Kind::kEach;
     force.value = ReadVector3(*each);
+  } else if (const auto traction = map.Find("traction")) {
+    force.kind = ForceSpec::Kind::kTraction;
+    force.value = ReadVector3(*traction);
+  } else if (const auto pressure = map.Find("pressure")) {
+    force.kind = ForceSpec::Kind::kPressure;
+    force.pressure = ReadNumber(*pressure);
   } else {
     Location where = item.where;
     where.key = ChildKey(item.where.key, "total");
     throw InputError(where,
                      "the force is missing: give total: [fx, fy, fz] (N, shared), "
                      "each: [fx, fy, fz] (N per node), values: [[fx, fy, fz], ...] (one per "
-                     "node) or ramp: {from: [...], to: [...]} (N per node)");
+                     "node), ramp: {from: [...], to: [...]} (N per node), traction: [tx, ty, "
+                     "tz] (Pa) or pressure: p (Pa, along the surface normal)");
   }
   return force;
 }
@@ -973,6 +998,48 @@ YamlValue OptionalSection(const YamlMap& top, const std::string& key) {
   return absent;
 }
 
+// ------------------------------------------------------------------- region references
+
+// Replaces `{region: NAME}` by a copy of the named region's selection. A region may refer only to
+// a region named before it (so references cannot loop).
+void ResolveRegionReference(const std::vector<RegionSpec>& regions, size_t visible,
+                            NodeSelector* selector) {
+  if (selector->region.empty()) return;
+  std::vector<std::string> names;
+  for (size_t r = 0; r < visible; ++r) {
+    if (regions[r].name == selector->region) {
+      *selector = regions[r].nodes;
+      return;
+    }
+    if (!regions[r].name.empty()) names.push_back(regions[r].name);
+  }
+  const bool named_later =
+      std::any_of(regions.begin() + static_cast<std::ptrdiff_t>(visible), regions.end(),
+                  [&](const RegionSpec& region) { return region.name == selector->region; });
+  std::string problem = "no region named '" + selector->region + "'";
+  if (named_later) {
+    problem += " before this one (a region may select only an earlier region)";
+  } else {
+    problem += names.empty() ? " (no region is named: give a region `name`)"
+                             : " (named regions: " + JoinNames(names) + ")";
+  }
+  throw InputError(selector->where, problem);
+}
+
+void ResolveRegionReferences(Scene* scene) {
+  auto& regions = scene->regions;
+  for (size_t r = 0; r < regions.size(); ++r) {
+    ResolveRegionReference(regions, r, &regions[r].nodes);
+  }
+  for (auto& line : scene->material.lines) {
+    ResolveRegionReference(regions, regions.size(), &line.nodes);
+  }
+  for (auto& fixed : scene->fixed) ResolveRegionReference(regions, regions.size(), &fixed.nodes);
+  for (auto& force : scene->loads.forces) {
+    ResolveRegionReference(regions, regions.size(), &force.nodes);
+  }
+}
+
 void ReadScene(const YamlValue& root, Scene* scene) {
   const YamlMap top(root, {"name", "dimension", "mesh", "material", "regions", "fixed", "loads",
                            "obstacles", "contact", "solver", "output"});
@@ -988,6 +1055,7 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   if (const auto v = top.Find("regions")) scene->regions = ReadRegions(*v, scene->material);
   if (const auto v = top.Find("fixed")) scene->fixed = ReadFixed(*v);
   if (const auto v = top.Find("loads")) scene->loads = ReadLoads(*v);
+  ResolveRegionReferences(scene);
   if (const auto v = top.Find("obstacles")) scene->obstacles = ReadObstacles(*v);
   scene->contact = ReadContact(OptionalSection(top, "contact"));
   scene->solver = ReadSolver(OptionalSection(top, "solver"));
