@@ -5,6 +5,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <limits>
@@ -33,6 +34,8 @@
 #include "src/scene/solver_methods.h"
 #include "src/solvers/run.h"
 #include "src/solvers/solver.h"
+#include "src/sweep/sweep.h"
+#include "src/sweep/sweep_file.h"
 
 namespace drape {
 
@@ -46,6 +49,8 @@ constexpr char kUsage[] =
     "       drape compare [OPTIONS] [--] SCENE.yaml...   (--solvers all|a,b,..., --out DIR,\n"
     "                     --repeat N, --time-limit S, --set key.path=value, --no-plots)\n"
     "       drape fit [OPTIONS] [--] FIT.yaml   (--out DIR, --method NAME, --set key.path=value)\n"
+    "       drape sweep [OPTIONS] [--] SWEEP.yaml   (-o/--out DIR, --only I, --task-id [I],\n"
+    "                   --threads N, --no-plots)\n"
     "       drape completion bash   (the bash completion script)\n"
     "       drape help | --help | --version;  drape COMMAND --help for a command's options\n";
 
@@ -289,6 +294,71 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
   return result.converged ? kExitConverged : kExitNotConverged;
 }
 
+// What the command line of `drape sweep` gives.
+struct SweepArguments {
+  std::string file;
+  std::optional<std::string> out;
+  std::optional<int> only;
+  std::optional<std::string> task_id;  // --task-id: a number, or empty for $SLURM_ARRAY_TASK_ID
+  int threads = 0;
+  bool no_plots = false;
+};
+
+// The task --only or --task-id names (--task-id alone: $SLURM_ARRAY_TASK_ID), checked against the
+// sweep's tasks.
+std::optional<int> OnlyTask(const SweepArguments& arguments, const SweepSpec& spec) {
+  std::optional<int> only = arguments.only;
+  if (arguments.task_id) {
+    if (only) throw UsageError("give --only or --task-id, not both");
+    std::string text = *arguments.task_id;
+    if (text.empty()) {
+      const char* slurm = std::getenv("SLURM_ARRAY_TASK_ID");
+      if (!slurm) throw UsageError("--task-id without a value needs $SLURM_ARRAY_TASK_ID");
+      text = slurm;
+    }
+    int value = -1;
+    if (!CLI::detail::lexical_cast(text, value) || value < 0) {
+      throw UsageError("--task-id: expected a task number >= 0, got '" + text + "'");
+    }
+    only = value;
+  }
+  const int count = static_cast<int>(spec.tasks.size());
+  if (only && (*only < 0 || *only >= count)) {
+    throw UsageError("task " + std::to_string(*only) + " is not in the sweep (its tasks are 0 to " +
+                     std::to_string(count - 1) + ")");
+  }
+  return only;
+}
+
+// `drape sweep`: every input checked before any solve; one progress line per finished task on
+// `err`. Exit 0 when every task (or the --only task) converged, 1 otherwise.
+int Sweep(const SweepArguments& arguments, const std::string& command_line, std::ostream& out,
+          std::ostream& err) {
+  const SweepSpec spec = LoadSweepFile(arguments.file);
+  SweepOptions options;
+  options.only = OnlyTask(arguments, spec);
+  if (arguments.out) options.out = *arguments.out;
+  options.threads = arguments.threads;
+  options.plots = !arguments.no_plots;
+  options.command_line = command_line;
+  EnableInterrupt();
+  SweepSummary summary;
+  try {
+    summary = RunSweep(spec, options, err);
+  } catch (const std::exception& error) {
+    err << "drape: cannot write the results: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  if (!summary.coordinator) return kExitConverged;
+  out << "sweep: " << summary.tasks << " tasks; " << summary.solved << " solved, "
+      << summary.skipped << " already done (skipped); " << summary.rows << " rows, "
+      << summary.converged << " converged" << (summary.interrupted ? "; interrupted" : "")
+      << "; results in " << summary.directory << "/sweep.csv" << std::endl;
+  const bool all = options.only ? summary.converged_tasks.count(*options.only) > 0
+                                : static_cast<int>(summary.converged_tasks.size()) == summary.tasks;
+  return all && !summary.interrupted ? kExitConverged : kExitNotConverged;
+}
+
 // The catalogue (src/scene/solver_methods.h): each method, its default limits and every option
 // with its default and range.
 int ListSolvers(std::ostream& out) {
@@ -496,6 +566,28 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       "override a key of every scene the fit solves (repeatable; value is YAML; the fitted "
       "parameters win)");
 
+  SweepArguments sweep_arguments;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep",
+      "solve a base scene over a grid, zip or sample of its keys (one task per variant, each in "
+      "OUT/tasks/NNNN); writes sweep.csv, sweep.html; reruns skip the finished tasks");
+  sweep->add_option("file", sweep_arguments.file, "sweep file (YAML)")->required();
+  sweep->add_option("-o,--out", sweep_arguments.out,
+                    "write into this folder (default: the sweep file's output.directory, else "
+                    "out/<sweep file name>)");
+  sweep->add_option("--only", sweep_arguments.only, "run only this task (0-based)");
+  sweep
+      ->add_option("--task-id", sweep_arguments.task_id,
+                   "run only this task; without a value, $SLURM_ARRAY_TASK_ID (a Slurm job array)")
+      ->expected(0, 1);
+  sweep
+      ->add_option("--threads", sweep_arguments.threads,
+                   "worker threads without MPI (0: the machine's cores)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  sweep->add_flag("--no-plots", sweep_arguments.no_plots,
+                  "write sweep.csv without running gnuplot");
+
   CLI::App* help = app.add_subcommand("help", "print this help");
 
   std::string shell;
@@ -537,6 +629,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     return RunCompare(compare_options, err, &out);
   }
   if (fit->parsed()) return Fit(arguments, out, err);
+  if (sweep->parsed()) return Sweep(sweep_arguments, arguments.command_line, out, err);
   if (check->parsed()) return Check(arguments, out);
   return Solve(arguments, out, err, options);
 }
