@@ -9,6 +9,9 @@
 //   in the order the tasks finish.
 // - What a task computes must depend only on its number, never on which worker ran it or when:
 //   that is what makes the results identical whatever the number of workers.
+// - `run` may be called on several threads at once, and while `collect` runs (local threads, and
+//   rank 0's own worker thread under MPI): it must not touch what another task or `collect`
+//   writes.
 //
 // Where the tasks run (src/parallel/process_group.h says which case this process is in):
 // - Alone (no MPI launcher, or `mpirun -np 1`): on `local_threads` threads of this process; the
