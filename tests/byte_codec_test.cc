@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -12,7 +13,13 @@
 namespace drape {
 namespace {
 
-bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+uint64_t BitsOf(double value) {
+  uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  return bits;
+}
+
+bool SameBits(double a, double b) { return BitsOf(a) == BitsOf(b); }
 
 TEST(ByteCodec, NumbersComeBackBitForBitInTheirOrder) {
   const std::vector<double> values = {0.1,
