@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <string>
@@ -20,7 +21,7 @@ TEST_P(SharedWorkThreads, ComputesEveryUnitOnceAndReturnsTheResultsInUnitOrder) 
   std::mutex mutex;
   std::map<int, int> computed;
   const std::vector<std::string> results = ComputeOnOwners(
-      7,
+      {3, 1, 4, 1, 5, 9, 2},
       [&](int unit) {
         {
           std::lock_guard<std::mutex> lock(mutex);
@@ -39,7 +40,7 @@ TEST_P(SharedWorkThreads, ComputesEveryUnitOnceAndReturnsTheResultsInUnitOrder) 
 TEST_P(SharedWorkThreads, AUnitThatThrowsIsAFarmErrorNamingIt) {
   try {
     ComputeOnOwners(
-        4,
+        {1, 1, 1, 1},
         [](int unit) {
           if (unit == 2) throw std::runtime_error("no equilibrium");
           return std::string("fine");
@@ -55,23 +56,32 @@ TEST_P(SharedWorkThreads, AUnitThatThrowsIsAFarmErrorNamingIt) {
 INSTANTIATE_TEST_SUITE_P(Threads, SharedWorkThreads, ::testing::Values(1, 2, 4));
 
 TEST(SharedWork, NoUnitsGiveNoResults) {
+  const std::vector<double> no_costs;
   EXPECT_TRUE(ComputeOnOwners(
-                  0, [](int) { return std::string("x"); }, 2)
+                  no_costs, [](int) { return std::string("x"); }, 2)
                   .empty());
 }
 
-TEST(SharedWork, AloneEveryUnitIsOwnedHereAndAFlagIsItsOwnAgreement) {
-  EXPECT_EQ(OwnerRank(5, Processes()), 0);
+TEST(SharedWork, AloneAFlagIsItsOwnAgreement) {
   EXPECT_TRUE(AnyProcess(true));
   EXPECT_FALSE(AnyProcess(false));
 }
 
-TEST(SharedWork, UnitsAreDealtToRanksInTurn) {
-  ProcessGroup group;
-  group.size = 3;
-  EXPECT_EQ(OwnerRank(0, group), 0);
-  EXPECT_EQ(OwnerRank(4, group), 1);
-  EXPECT_EQ(OwnerRank(8, group), 2);
+TEST(SharedWork, OwnersAreBalancedByCostTheCostliestFirst) {
+  const std::vector<double> costs = {3, 1, 4, 1, 5, 9, 2};
+  EXPECT_EQ(CostliestFirst(costs), (std::vector<int>{5, 4, 2, 0, 6, 1, 3}));
+  const std::vector<int> owners = BalancedOwners(costs, 2);
+  // Each unit, costliest first, goes to the less loaded rank (the lower one on a tie):
+  std::vector<double> load(2, 0.0);
+  for (const int unit : CostliestFirst(costs)) {
+    const int lighter = load[1] < load[0] ? 1 : 0;
+    EXPECT_EQ(owners[unit], lighter) << "unit " << unit;
+    load[owners[unit]] += costs[unit];
+  }
+  EXPECT_LE(std::abs(load[0] - load[1]), 1.0);
+  // Equal costs: dealt in turn, and one rank takes everything.
+  EXPECT_EQ(BalancedOwners({1, 1, 1, 1, 1}, 3), (std::vector<int>{0, 1, 2, 0, 1}));
+  EXPECT_EQ(BalancedOwners({7, 2, 5}, 1), (std::vector<int>{0, 0, 0}));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "src/parallel/byte_codec.h"
 #include "src/parallel/shared_work.h"
 #include "src/scene/scene_loader.h"
+#include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solver.h"
 
@@ -19,6 +20,7 @@ namespace drape {
 namespace {
 
 constexpr double kParameterStep = 1e-4;  // in u, for ∂g/∂u
+constexpr double kMeshFileCost = 1e4;    // nodes, for the owners of equilibria on mesh files
 
 std::string BlockLabel(const FitMeasurement& measurement) {
   switch (measurement.kind) {
@@ -71,6 +73,16 @@ FitProblem::FitProblem(const FitSpec& spec, int local_threads)
       blocks_.push_back(block);
       equilibria_[block.equilibrium].measured = true;
     }
+  }
+  const std::vector<double> theta = [&] {
+    std::vector<double> initial;
+    for (const auto& parameter : spec_.parameters) initial.push_back(parameter.initial);
+    return initial;
+  }();
+  for (const int e : MeasuredEquilibria()) {
+    // A mesh file's size is known once it is read: counted as a large mesh.
+    const double nodes = EstimatedNodes(SceneAt(equilibria_[e], theta).mesh);
+    unit_costs_.push_back(nodes > 0.0 ? nodes : kMeshFileCost);
   }
 }
 
@@ -286,8 +298,7 @@ void FitProblem::TakeOutcome(int e, const std::string& outcome, FitEvaluation* e
 FitEvaluation FitProblem::Evaluate(const std::vector<double>& u, bool cold) {
   const std::vector<int> solved = MeasuredEquilibria();
   const std::vector<std::string> outcomes = ComputeOnOwners(
-      static_cast<int>(solved.size()), [&](int k) { return SolveAndMeasure(solved[k], u, cold); },
-      local_threads_);
+      unit_costs_, [&](int k) { return SolveAndMeasure(solved[k], u, cold); }, local_threads_);
   FitEvaluation evaluation;
   evaluation.residuals.assign(num_residuals_, 0.0);
   evaluation.model_values.assign(blocks_.size(), 0.0);
@@ -404,8 +415,7 @@ bool FitProblem::ImplicitJacobian(Eigen::MatrixXd* jacobian) {
   jacobian->setZero(num_residuals_, p);
   const std::vector<int> solved = MeasuredEquilibria();
   const std::vector<std::string> outcomes = ComputeOnOwners(
-      static_cast<int>(solved.size()), [&](int k) { return JacobianRowsOf(solved[k]); },
-      local_threads_);
+      unit_costs_, [&](int k) { return JacobianRowsOf(solved[k]); }, local_threads_);
   for (size_t k = 0; k < solved.size(); ++k) {
     ByteReader reader(outcomes[k]);
     if (reader.Int() == 0) return false;

@@ -30,7 +30,8 @@
 // derivatives, are independent; each belongs to one owner (an MPI rank, e k mod ranks; or, in a
 // process alone, whichever of `local_threads` threads takes it), which alone solves it and keeps
 // its warm-start history (so each equilibrium starts from its own previous one, whatever the
-// number of ranks). The owner sends back the equilibrium's outcome (converged, iterations,
+// number of ranks). Owners are set once, by the equilibria's node counts (the largest first, each
+// to the least loaded rank). The owner sends back the equilibrium's outcome (converged, iterations,
 // positions) and its measurements' residuals, or its Jacobian rows; every process then assembles
 // r, J and the objective in the same order as a serial run: the same numbers, bit for bit, with
 // any number of ranks or threads. Under MPI every rank runs the same outer loop on these numbers;
@@ -153,6 +154,9 @@ class FitProblem {
 
   FitSpec spec_;
   std::vector<Scene> base_scenes_;  // each specimen at the initial parameters (disc radius etc.)
+  // Per measured equilibrium (MeasuredEquilibria() order), its expected cost: its mesh's node
+  // count. Sets which rank owns it under MPI (src/parallel/shared_work.h), once for the fit.
+  std::vector<double> unit_costs_;
   std::vector<FitEquilibrium> equilibria_;
   std::vector<ResidualBlock> blocks_;
   int num_residuals_ = 0;

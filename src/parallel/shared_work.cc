@@ -1,5 +1,6 @@
 #include "src/parallel/shared_work.h"
 
+#include <algorithm>
 #include <numeric>
 
 #include "src/parallel/byte_codec.h"
@@ -10,12 +11,12 @@
 namespace drape {
 namespace {
 
-std::vector<std::string> ComputeHere(int units, const UnitComputation& compute, int local_threads) {
-  std::vector<int> indices(units);
-  std::iota(indices.begin(), indices.end(), 0);
-  std::vector<std::string> results(units);
+std::vector<std::string> ComputeHere(const std::vector<double>& costs,
+                                     const UnitComputation& compute, int local_threads) {
+  std::vector<std::string> results(costs.size());
   RunLocalFarm(
-      indices, compute, [&](int unit, const std::string& result) { results[unit] = result; },
+      CostliestFirst(costs), compute,
+      [&](int unit, const std::string& result) { results[unit] = result; },
       EffectiveLocalThreads(local_threads));
   return results;
 }
@@ -23,9 +24,11 @@ std::vector<std::string> ComputeHere(int units, const UnitComputation& compute, 
 #ifdef DRAPE_WITH_MPI
 
 // This rank's units, each as: unit, failed (0/1), result or failure message.
-std::string ComputeMine(int units, const UnitComputation& compute, const ProcessGroup& group) {
+std::string ComputeMine(const std::vector<int>& owners, const UnitComputation& compute,
+                        const ProcessGroup& group) {
   ByteWriter writer;
-  for (int unit = group.rank; unit < units; unit += group.size) {
+  for (int unit = 0; unit < static_cast<int>(owners.size()); ++unit) {
+    if (owners[unit] != group.rank) continue;
     writer.Int(unit);
     try {
       const std::string result = compute(unit);
@@ -39,10 +42,12 @@ std::string ComputeMine(int units, const UnitComputation& compute, const Process
   return writer.bytes();
 }
 
-std::vector<std::string> ComputeAcrossRanks(int units, const UnitComputation& compute,
+std::vector<std::string> ComputeAcrossRanks(const std::vector<double>& costs,
+                                            const UnitComputation& compute,
                                             const ProcessGroup& group) {
-  const std::vector<std::string> gathered = mpi::AllGather(ComputeMine(units, compute, group));
-  std::vector<std::string> results(units);
+  const std::vector<std::string> gathered =
+      mpi::AllGather(ComputeMine(BalancedOwners(costs, group.size), compute, group));
+  std::vector<std::string> results(costs.size());
   std::string failure;
   for (size_t rank = 0; rank < gathered.size(); ++rank) {
     ByteReader reader(gathered[rank]);
@@ -64,15 +69,31 @@ std::vector<std::string> ComputeAcrossRanks(int units, const UnitComputation& co
 
 }  // namespace
 
-int OwnerRank(int unit, const ProcessGroup& group) { return unit % group.size; }
+std::vector<int> CostliestFirst(const std::vector<double>& costs) {
+  std::vector<int> order(costs.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return costs[a] > costs[b]; });
+  return order;
+}
 
-std::vector<std::string> ComputeOnOwners(int units, const UnitComputation& compute,
-                                         int local_threads) {
+std::vector<int> BalancedOwners(const std::vector<double>& costs, int ranks) {
+  std::vector<int> owners(costs.size(), 0);
+  std::vector<double> load(ranks, 0.0);
+  for (const int unit : CostliestFirst(costs)) {
+    const int rank = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    owners[unit] = rank;
+    load[rank] += costs[unit];
+  }
+  return owners;
+}
+
+std::vector<std::string> ComputeOnOwners(const std::vector<double>& costs,
+                                         const UnitComputation& compute, int local_threads) {
   const ProcessGroup& group = Processes();
 #ifdef DRAPE_WITH_MPI
-  if (group.IsDistributed()) return ComputeAcrossRanks(units, compute, group);
+  if (group.IsDistributed()) return ComputeAcrossRanks(costs, compute, group);
 #endif
-  return ComputeHere(units, compute, local_threads);
+  return ComputeHere(costs, compute, local_threads);
 }
 
 bool AnyProcess(bool flag) {

@@ -4,11 +4,14 @@
 // next (a fit's equilibrium and its warm starts); the results come back on every process in unit
 // order, so every process goes on with the same numbers, bit for bit.
 //
-// - Several MPI ranks: unit k belongs to rank k mod size, which computes its units in order;
-//   then every rank's results are gathered on every rank (MPI_Allgatherv). Every rank must call
-//   ComputeOnOwners with the same `units`, at the same point of its run.
-// - Alone: the units run on `local_threads` threads (any unit on any thread: the process owns
-//   them all, so the caller's state per unit must not be shared between units).
+// Each unit has an expected cost (e.g. its node count), which sets the owners once and for all
+// (BalancedOwners: the costliest first, each to the least loaded rank), so they never depend on
+// timing.
+// - Several MPI ranks: each rank computes its own units, in unit order; then every rank's
+//   results are gathered on every rank (MPI_Allgatherv). Every rank must call ComputeOnOwners
+//   with the same `costs`, at the same point of its run.
+// - Alone: the units run on `local_threads` threads, costliest first (any unit on any thread:
+//   the process owns them all, so the caller's state per unit must not be shared between units).
 //
 // A unit that throws: every process throws the same TaskFarmError ("task 2 failed on rank 1:
 // …", the unit's number as the task's) after the exchange, so no rank is left waiting.
@@ -24,12 +27,16 @@ namespace drape {
 
 using UnitComputation = std::function<std::string(int unit)>;
 
-// Every unit's result, in unit order, on every process.
-std::vector<std::string> ComputeOnOwners(int units, const UnitComputation& compute,
-                                         int local_threads);
+// Every unit's result, in unit order, on every process; unit k costs about costs[k].
+std::vector<std::string> ComputeOnOwners(const std::vector<double>& costs,
+                                         const UnitComputation& compute, int local_threads);
 
-// The rank that computes `unit` (0 when alone).
-int OwnerRank(int unit, const ProcessGroup& group);
+// The owning rank of each unit among `ranks`: units by decreasing cost (ties: the lower unit
+// first), each to the rank with the least cost so far (ties: the lower rank).
+std::vector<int> BalancedOwners(const std::vector<double>& costs, int ranks);
+
+// The units by decreasing cost (ties: the lower unit first).
+std::vector<int> CostliestFirst(const std::vector<double>& costs);
 
 // True on every process if `flag` is true on some process (alone: `flag`). A collective call
 // under MPI, like ComputeOnOwners.
