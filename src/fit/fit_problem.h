@@ -27,8 +27,8 @@
 // difference of the measurement function alone (no re-solve).
 //
 // In parallel (src/parallel/shared_work.h): the equilibria of an evaluation, and their implicit
-// derivatives, are independent; each belongs to one owner (an MPI rank, e k mod ranks; or, in a
-// process alone, whichever of `local_threads` threads takes it), which alone solves it and keeps
+// derivatives, are independent; each belongs to one owner (an MPI rank; or, in a process alone,
+// whichever of `local_threads` threads takes it), which alone solves it and keeps
 // its warm-start history (so each equilibrium starts from its own previous one, whatever the
 // number of ranks). Owners are set once, by the equilibria's node counts (the largest first, each
 // to the least loaded rank). The owner sends back the equilibrium's outcome (converged, iterations,
