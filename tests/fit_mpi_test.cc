@@ -1,8 +1,10 @@
 // A parallel `drape fit` gives the serial fit: the same fitted values, the same evaluations and
 // iterations, the same files (fit.json but its wall time, history.csv but its time column,
-// sensitivity.csv), with `--threads 3`, `mpirun -np 2` and `mpirun -np 3` (oversubscribed on 2
-// cores). The fit: one spring stiffness from the node positions of three hammocks of different
-// sizes (three equilibria, so that every rank of -np 3 owns one), measured with seeded noise.
+// sensitivity.csv, fit.png), with `--threads 3`, `mpirun -np 2` and `mpirun -np 3`
+// (oversubscribed on 2 cores). The fit: one spring stiffness from the node positions of three
+// hammocks of different sizes (three equilibria, so that every rank of -np 3 owns one), measured
+// with seeded noise. The first hammock, which fit.png draws, has the fewest nodes, so that another
+// rank than 0 owns it and rank 0 draws it from the positions it received.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,24 +21,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The hammock scene with its size replaced (`size` as in the scene: "[0.3, 0.3]").
-void WriteHammock(const std::string& size, const std::string& path) {
+// The hammock scene with its size and node counts replaced (as in the scene: "[0.3, 0.3]").
+void WriteHammock(const std::string& size, const std::string& nodes, const std::string& path) {
   std::ifstream in(SourcePath("configs/fit/sheet_springs.yaml"));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("size: [0.5, 0.5]"), 16, "size: " + size);
+  text.replace(text.find("nodes: [9, 9]"), 13, "nodes: " + nodes);
   WriteTextFile(path, text);
 }
 
-// Three hammocks (0.5, 0.4, 0.3 m) solved at k = 35 N/m, their positions with 0.5 mm noise, and
-// the fit file; returns its path.
+// Three hammocks (0.5, 0.4, 0.3 m; 7 × 7, 9 × 9, 8 × 8 nodes) solved at k = 35 N/m, their positions
+// with 0.5 mm noise, and the fit file; returns its path.
 std::string ThreeHammocksFit(const std::string& folder) {
   const char* sizes[] = {"[0.5, 0.5]", "[0.4, 0.4]", "[0.3, 0.3]"};
+  const char* nodes[] = {"[7, 7]", "[9, 9]", "[8, 8]"};
   std::string fit =
       "parameters:\n  - {key: material.springs.structural, initial: 20, bounds: [1, 1000], "
       "log: true}\nmeasurements:\n";
   for (int s = 0; s < 3; ++s) {
     const std::string name = "hammock" + std::to_string(s);
-    WriteHammock(sizes[s], folder + "/" + name + ".yaml");
+    WriteHammock(sizes[s], nodes[s], folder + "/" + name + ".yaml");
     Scene scene = LoadScene(folder + "/" + name + ".yaml", {"material.springs.structural=35"});
     scene.solver.tolerance = 1e-10;
     Model model = BuildModel(scene);
@@ -54,7 +58,7 @@ std::string ThreeHammocksFit(const std::string& folder) {
 }
 
 // The output files with what may differ between runs left out: fit.json's wall time,
-// history.csv's time column.
+// history.csv's time column (report.md has the time in its text, and repeats fit.json).
 std::string ComparableOutputs(const fs::path& folder) {
   std::string text;
   std::istringstream json(ReadWholeFile(folder / "fit.json"));
@@ -66,7 +70,7 @@ std::string ComparableOutputs(const fs::path& folder) {
     const size_t first = line.find(','), second = line.find(',', first + 1);
     text += line.substr(0, first) + line.substr(second) + "\n";
   }
-  return text + ReadWholeFile(folder / "sensitivity.csv");
+  return text + ReadWholeFile(folder / "sensitivity.csv") + ReadWholeFile(folder / "fit.png");
 }
 
 class FitMpi : public ::testing::TestWithParam<std::string> {};
