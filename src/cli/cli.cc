@@ -29,6 +29,8 @@
 #include "src/output/result_folder.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/parallel/process_group.h"
+#include "src/parallel/task_farm.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
@@ -81,6 +83,7 @@ struct Arguments {
   std::optional<std::string> solver;
   std::optional<std::string> out;
   std::optional<std::string> method;  // fit
+  int threads = 0;                    // fit: local threads (src/parallel/task_farm.h)
   std::vector<std::string> overrides;
 };
 
@@ -249,21 +252,10 @@ int Check(const Arguments& arguments, std::ostream& out) {
   return kExitConverged;
 }
 
-// `drape fit`: load the fit file (every input checked before any solve), run the outer loop with
-// a progress line per evaluation on `err`, write the outputs. Exit 0 converged, 1 not converged.
-int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
-  FitSpec spec = LoadFitFile(arguments.file, arguments.overrides);
-  if (arguments.method) {
-    if (!FindFitMethod(*arguments.method)) {
-      throw UsageError("unknown fit method '" + *arguments.method + "' (known: " + FitMethodList() +
-                       ")");
-    }
-    spec.method = *arguments.method;
-  }
-  if (arguments.out) spec.output_directory = *arguments.out;
-  FitProblem problem(spec);
-  FitOptions options;
-  options.on_evaluation = [&](const FitIterationRecord& record) {
+// The progress line of each fit evaluation, on `err`.
+std::function<void(const FitIterationRecord&)> FitProgressPrinter(const FitSpec& spec,
+                                                                  std::ostream& err) {
+  return [&spec, &err](const FitIterationRecord& record) {
     char text[120];
     std::snprintf(text, sizeof text, "fit %s: evaluation %d, %.2f s, objective %.6g (best %.6g)",
                   spec.method.c_str(), record.evaluation, record.time_s, record.objective,
@@ -276,12 +268,32 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
     }
     err << (record.inner_converged ? "" : " (an equilibrium did not converge)") << "\n";
   };
+}
+
+// `drape fit`: load the fit file (every input checked before any solve), run the outer loop with
+// a progress line per evaluation on `err`, write the outputs. Exit 0 converged, 1 not converged.
+int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
+  FitSpec spec = LoadFitFile(arguments.file, arguments.overrides);
+  if (arguments.method) {
+    if (!FindFitMethod(*arguments.method)) {
+      throw UsageError("unknown fit method '" + *arguments.method + "' (known: " + FitMethodList() +
+                       ")");
+    }
+    spec.method = *arguments.method;
+  }
+  if (arguments.out) spec.output_directory = *arguments.out;
+  // Under mpirun/srun every rank runs the fit in step; only the coordinator reports and writes.
+  const bool coordinator = Processes().IsCoordinator();
+  FitProblem problem(spec, arguments.threads);
+  FitOptions options;
+  if (coordinator) options.on_evaluation = FitProgressPrinter(spec, err);
   EnableInterrupt();
   const FitResult result = RunFit(problem, options);
   if (result.parameters.empty()) {
-    err << "drape fit: " << result.termination << "; nothing written\n";
+    if (coordinator) err << "drape fit: " << result.termination << "; nothing written\n";
     return kExitNotConverged;
   }
+  if (!coordinator) return result.converged ? kExitConverged : kExitNotConverged;
   try {
     WriteFitOutputs(problem, result, spec.output_directory);
   } catch (const std::exception& error) {
@@ -562,6 +574,9 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
                   "out/<fit file name>)");
   fit->add_option("--method", arguments.method,
                   "outer method instead of the fit file's (" + FitMethodList() + ")");
+  fit->add_option("--threads", arguments.threads, kLocalThreadsHelp)
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   fit->get_option("--set")->description(
       "override a key of every scene the fit solves (repeatable; value is YAML; the fitted "
       "parameters win)");
