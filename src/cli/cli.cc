@@ -357,6 +357,9 @@ int Sweep(const SweepArguments& arguments, const std::string& command_line, std:
   SweepSummary summary;
   try {
     summary = RunSweep(spec, options, err);
+  } catch (const TaskFarmError& error) {
+    err << "drape sweep: " << error.what() << "\n";
+    return kExitBadInput;
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;
@@ -595,9 +598,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       ->add_option("--task-id", sweep_arguments.task_id,
                    "run only this task; without a value, $SLURM_ARRAY_TASK_ID (a Slurm job array)")
       ->expected(0, 1);
-  sweep
-      ->add_option("--threads", sweep_arguments.threads,
-                   "worker threads without MPI (0: the machine's cores)")
+  sweep->add_option("--threads", sweep_arguments.threads, kLocalThreadsHelp)
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   sweep->add_flag("--no-plots", sweep_arguments.no_plots,
