@@ -419,6 +419,17 @@ const CLI::Validator kWholeNumber(
     },
     "N>=1", "whole number");
 
+// The whole text as an integer >= 0 (a thread count; 0: the machine's cores).
+const CLI::Validator kThreadCount(
+    [](const std::string& text) {
+      int value = 0;
+      if (!CLI::detail::lexical_cast(text, value) || value < 0) {
+        return "expected a whole number >= 0 (0: the machine's cores), got '" + text + "'";
+      }
+      return std::string();
+    },
+    "N>=0", "thread count");
+
 // The command as a shell would take it back: "drape solve 'my scene.yaml' --set a=1".
 std::string CommandLine(const std::vector<std::string>& args) {
   std::string line = "drape";
@@ -578,7 +589,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   fit->add_option("--method", arguments.method,
                   "outer method instead of the fit file's (" + FitMethodList() + ")");
   fit->add_option("--threads", arguments.threads, kLocalThreadsHelp)
-      ->check(CLI::NonNegativeNumber)
+      ->check(kThreadCount)
       ->capture_default_str();
   fit->get_option("--set")->description(
       "override a key of every scene the fit solves (repeatable; value is YAML; the fitted "

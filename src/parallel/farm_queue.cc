@@ -49,13 +49,13 @@ void OutcomeQueue::Push(TaskOutcome outcome) {
   ready_.notify_one();
 }
 
-std::optional<TaskOutcome> OutcomeQueue::Pop(int wait_ms) {
+std::optional<TaskOutcome> OutcomeQueue::Pop(int wait_us) {
   std::unique_lock<std::mutex> lock(mutex_);
   const auto has_outcome = [this] { return !outcomes_.empty(); };
-  if (wait_ms < 0) {
+  if (wait_us < 0) {
     ready_.wait(lock, has_outcome);
-  } else if (wait_ms > 0) {
-    ready_.wait_for(lock, std::chrono::milliseconds(wait_ms), has_outcome);
+  } else if (wait_us > 0) {
+    ready_.wait_for(lock, std::chrono::microseconds(wait_us), has_outcome);
   }
   if (outcomes_.empty()) return std::nullopt;
   TaskOutcome outcome = std::move(outcomes_.front());

@@ -43,8 +43,8 @@ TaskOutcome RunOneTask(const std::vector<int>& tasks, int index, const TaskRunne
 class OutcomeQueue {
  public:
   void Push(TaskOutcome outcome);
-  // The next outcome; waits for one (at most `wait_ms`, 0: no wait, -1: until one comes).
-  std::optional<TaskOutcome> Pop(int wait_ms);
+  // The next outcome; waits for one (at most `wait_us` µs; 0: no wait, -1: until one comes).
+  std::optional<TaskOutcome> Pop(int wait_us);
 
  private:
   std::mutex mutex_;

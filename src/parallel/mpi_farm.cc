@@ -20,6 +20,7 @@ constexpr int kTaskTag = 1701;
 constexpr int kResultTag = 1702;
 constexpr int kFailureTag = 1703;
 constexpr int kNoMoreTasks = -1;
+constexpr int kPollMicroseconds = 200;  // the coordinator's wait for its thread between MPI polls
 
 TaskFarmSummary WorkOnRank(const std::vector<int>& tasks, const TaskRunner& run,
                            const ProcessGroup& group) {
@@ -66,14 +67,14 @@ class Coordinator {
 
  private:
   // One step: a rank's message if one waits, else the local thread's outcome (waiting for it up
-  // to 1 ms while ranks are busy, so that their messages are seen within a millisecond).
+  // to kPollMicroseconds while ranks are busy, so that their messages are seen that soon).
   void Step() {
     MPI_Status status;
     if (busy_ranks_ > 0 && mpi::MessageWaiting(&status)) {
       ReceiveFrom(status);
       return;
     }
-    const auto outcome = queue_.Pop(busy_ranks_ > 0 ? 1 : -1);
+    const auto outcome = queue_.Pop(busy_ranks_ > 0 ? kPollMicroseconds : -1);
     if (!outcome) return;
     if (outcome->worker_done) {
       local_working_ = false;

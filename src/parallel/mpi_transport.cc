@@ -22,7 +22,7 @@ void Check(int code, const char* call) {
 
 void Backoff::Pause() {
   std::this_thread::sleep_for(std::chrono::microseconds(microseconds_));
-  microseconds_ = std::min(2 * microseconds_, 2000);
+  microseconds_ = std::min(2 * microseconds_, 500);
 }
 
 void Wait(MPI_Request* request) {

@@ -1,6 +1,7 @@
 #include "src/parallel/shared_work.h"
 
 #include <algorithm>
+#include <exception>
 #include <numeric>
 
 #include "src/parallel/byte_codec.h"
@@ -11,13 +12,27 @@
 namespace drape {
 namespace {
 
+// Alone, a unit's exception is kept as it is (an InputError stays one, out of memory stays
+// std::bad_alloc): every unit runs, then the lowest failed unit's exception is rethrown.
 std::vector<std::string> ComputeHere(const std::vector<double>& costs,
                                      const UnitComputation& compute, int local_threads) {
   std::vector<std::string> results(costs.size());
+  std::vector<std::exception_ptr> failures(costs.size());
+  const auto compute_keeping_failure = [&](int unit) {
+    try {
+      return compute(unit);
+    } catch (...) {
+      failures[unit] = std::current_exception();
+      return std::string();
+    }
+  };
   RunLocalFarm(
-      CostliestFirst(costs), compute,
+      CostliestFirst(costs), compute_keeping_failure,
       [&](int unit, const std::string& result) { results[unit] = result; },
       EffectiveLocalThreads(local_threads));
+  for (const auto& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
   return results;
 }
 

@@ -13,8 +13,10 @@
 // - Alone: the units run on `local_threads` threads, costliest first (any unit on any thread:
 //   the process owns them all, so the caller's state per unit must not be shared between units).
 //
-// A unit that throws: every process throws the same TaskFarmError ("task 2 failed on rank 1:
-// …", the unit's number as the task's) after the exchange, so no rank is left waiting.
+// A unit that throws: alone, every unit still runs and then the exception of the lowest failed
+// unit is rethrown as it was (an InputError stays one); under MPI every rank throws the same
+// TaskFarmError ("task 2 failed on rank 1: …", the unit's number as the task's) after the
+// exchange, so no rank is left waiting.
 #pragma once
 
 #include <functional>
