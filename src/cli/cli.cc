@@ -610,7 +610,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
                    "run only this task; without a value, $SLURM_ARRAY_TASK_ID (a Slurm job array)")
       ->expected(0, 1);
   sweep->add_option("--threads", sweep_arguments.threads, kLocalThreadsHelp)
-      ->check(CLI::NonNegativeNumber)
+      ->check(kThreadCount)
       ->capture_default_str();
   sweep->add_flag("--no-plots", sweep_arguments.no_plots,
                   "write sweep.csv without running gnuplot");

@@ -369,7 +369,9 @@ std::string TaskFolder(const std::string& directory, const SweepSpec& spec, int 
 }
 
 std::vector<std::string> TaskIdentities(const SweepSpec& spec) {
-  const std::string scene = "scene: " + fs::absolute(spec.scene_file).string() +
+  // The base scene by its name and its text (not its full path: a sweep folder moved with its
+  // scene, e.g. onto a cluster, keeps its finished tasks).
+  const std::string scene = "scene: " + fs::path(spec.scene_file).filename().string() +
                             "\nscene_fingerprint: " + Fingerprint(ReadFile(spec.scene_file)) + "\n";
   std::vector<std::string> identities(spec.tasks.size());
   for (const auto& chain : spec.chains) {  // in chain order: a task's source comes before it
