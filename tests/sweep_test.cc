@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "src/cli/cli.h"
+#include "src/solvers/solver.h"
 #include "tests/sweep_test_support.h"
 
 namespace drape::testing {
@@ -219,6 +220,22 @@ TEST(Sweep, LocalThreadsGiveTheSameRows) {
   EXPECT_EQ(summary.rows, 4);
   EXPECT_EQ(WithoutTime(ReadCsv(folder + "/one/sweep.csv")),
             WithoutTime(ReadCsv(folder + "/two/sweep.csv")));
+}
+
+TEST(Sweep, AnInterruptedSweepSavesNothingItDidNotFinish) {
+  const std::string folder = SweepTempDir("interrupted");
+  const SweepSpec spec = LoadSweepFile(WriteSweep(folder, kSmall));
+  RequestInterrupt();  // as a SIGINT or SIGTERM would: the solve stops at its next iteration
+  const SweepSummary stopped = SweepInto(spec, folder + "/out");
+  ClearInterrupt();
+  EXPECT_TRUE(stopped.interrupted);
+  EXPECT_EQ(stopped.solved, 0);
+  EXPECT_EQ(stopped.rows, 0);
+  EXPECT_EQ(ReadCsv(folder + "/out/sweep.csv").size(), 1u);  // the header alone
+  const SweepSummary rest = SweepInto(spec, folder + "/out");
+  EXPECT_FALSE(rest.interrupted);
+  EXPECT_EQ(rest.solved, 4);
+  EXPECT_EQ(rest.skipped, 0);
 }
 
 }  // namespace

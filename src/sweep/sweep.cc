@@ -414,7 +414,8 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   SweepSummary summary;
   summary.directory = options.out.empty() ? spec.output_directory : options.out;
   summary.tasks = static_cast<int>(spec.tasks.size());
-  CheckOutputWritable(summary.directory);
+  CheckOutputWritable(summary.directory);     // before any solve; it leaves no folder behind
+  fs::create_directories(summary.directory);  // sweep.csv is written even if no task finishes
   const Context context{spec, summary.directory, options.command_line, CsvLine(SweepColumns(spec)),
                         TaskIdentities(spec)};
   SweepTable table(context, log);
