@@ -276,15 +276,14 @@ std::vector<Figure> HeatMap(const SweepSpec& spec, const Table& table, Plotter& 
     const std::string data = plotter.Data("heatmap.dat", [&](std::ostream& out) { out << cells; });
     const std::string label =
         response == std::string("energy_J") ? "energy (J)" : "drape coefficient";
-    const std::string image = plotter.Draw(
-        "sweep_heatmap.gp", std::string(response) + "__map.png",
-        {{"input", data},
-         {"xtics", Tics(spec, x_axis)},
-         {"ytics", Tics(spec, y_axis)},
-         {"xlabel", AxisName(spec, x_axis)},
-         {"ylabel", AxisName(spec, y_axis)},
-         {"cblabel", label},
-         {"title", label + " over " + AxisName(spec, y_axis) + " × " + AxisName(spec, x_axis)}});
+    const std::string image = plotter.Draw("sweep_heatmap.gp", std::string(response) + "__map.png",
+                                           {{"input", data},
+                                            {"xtics", Tics(spec, x_axis)},
+                                            {"ytics", Tics(spec, y_axis)},
+                                            {"xlabel", AxisName(spec, x_axis)},
+                                            {"ylabel", AxisName(spec, y_axis)},
+                                            {"cblabel", label},
+                                            {"title", label}});
     if (image.empty()) return {};
     return {{image, label + " over the grid"}};
   }
