@@ -210,8 +210,10 @@ TaskOutcome SolveTask(const Context& context, int task, const std::vector<double
   return outcome;
 }
 
-// A task that throws is a failed row (saved, so a restart keeps it: it would fail again), unless
-// its folder is another run's (then nothing of it is written).
+// A task whose scene fails (an InputError at build or solve time, e.g. a method that refuses the
+// model) is a failed row, saved: it would fail again, so a restart keeps it. Any other failure
+// (out of memory, a file that cannot be written, another run holding the folder) depends on the
+// moment: its row goes into sweep.csv but not into the folder, and a restart solves it again.
 TaskOutcome RunTask(const Context& context, int task, const std::vector<double>* warm,
                     int warm_from) {
   std::string why;
@@ -220,12 +222,9 @@ TaskOutcome RunTask(const Context& context, int task, const std::vector<double>*
   } catch (const InputError& error) {
     why = error.what();
   } catch (const std::bad_alloc&) {
-    why = "out of memory";
+    return {"unsaved", CsvLine(FailedRow(context.spec, task, "out of memory")), {}};
   } catch (const std::exception& error) {
-    why = error.what();
-    if (why.find("another drape run") != std::string::npos) {
-      return {"unsaved", CsvLine(FailedRow(context.spec, task, why)), {}};
-    }
+    return {"unsaved", CsvLine(FailedRow(context.spec, task, error.what())), {}};
   }
   TaskOutcome outcome{"failed", CsvLine(FailedRow(context.spec, task, why)), {}};
   try {
