@@ -42,9 +42,10 @@ inline ProgramOutcome RunProgram(const std::string& command, const std::filesyst
 // Whether tests can run mpirun: built with MPI and the launcher found.
 inline bool MpiLauncherAvailable() { return std::string(DRAPE_MPIEXEC).size() > 0; }
 
-// `timeout 300 mpirun -np N` (the time limit turns a hang into exit status 124).
+// `timeout 120 mpirun -np N` (the time limit turns a hang into exit status 124; the runs of the
+// tests take a few seconds).
 inline std::string MpiRun(int ranks) {
-  return "timeout 300 " + std::string(DRAPE_MPIEXEC) + " -np " + std::to_string(ranks) + " ";
+  return "timeout 120 " + std::string(DRAPE_MPIEXEC) + " -np " + std::to_string(ranks) + " ";
 }
 
 }  // namespace drape::testing

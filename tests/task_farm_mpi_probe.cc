@@ -2,7 +2,9 @@
 // TASKS [--fail T] [--die T]` or alone: a task farm of TASKS tasks whose results are computed
 // from the task number alone. The coordinator prints `task <t> value <v> rank <r>` per collected
 // result (r: the rank that ran it), every process one `summary ...` line; `--fail T` makes task T
-// throw, `--die T` makes the process running task T exit at once, without finalising MPI.
+// throw, `--die T` makes the process running task T exit at once, without finalising MPI,
+// `--throw-on-rank R` makes rank R throw before the farm (the others wait for it: the probe then
+// aborts the job as drape's commands do).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,7 +25,8 @@ double TaskValue(int task) {
   return sum;
 }
 
-int Probe(int task_count, int fail_task, int die_task) {
+int Probe(int task_count, int fail_task, int die_task, int throwing_rank) {
+  if (drape::Processes().rank == throwing_rank) throw std::runtime_error("the probe's rank fails");
   std::vector<int> tasks(task_count);
   std::iota(tasks.begin(), tasks.end(), 0);
   const auto run = [&](int task) {
@@ -52,19 +55,29 @@ int FlagValue(int argc, char** argv, const std::string& flag) {
   return -1;
 }
 
+// The probe, its errors reported as drape reports a command's: the job is aborted when another
+// rank may be waiting (before ProcessGroupScope, in main, would wait for the other ranks).
+int ProbeReportingErrors(int argc, char** argv) {
+  try {
+    return Probe(std::atoi(argv[1]), FlagValue(argc, argv, "--fail"),
+                 FlagValue(argc, argv, "--die"), FlagValue(argc, argv, "--throw-on-rank"));
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "task_farm_mpi_probe: %s\n", error.what());
+  } catch (...) {
+    std::fprintf(stderr, "task_farm_mpi_probe: an unknown exception\n");
+  }
+  drape::AbortJobAfterError(3);
+  return 3;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: task_farm_mpi_probe TASKS [--fail T] [--die T]\n");
+    std::fprintf(stderr,
+                 "usage: task_farm_mpi_probe TASKS [--fail T] [--die T] [--throw-on-rank R]\n");
     return 2;
   }
-  try {
-    const drape::ProcessGroupScope processes;
-    return Probe(std::atoi(argv[1]), FlagValue(argc, argv, "--fail"),
-                 FlagValue(argc, argv, "--die"));
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "task_farm_mpi_probe: %s\n", error.what());
-    return 1;
-  }
+  const drape::ProcessGroupScope processes;
+  return ProbeReportingErrors(argc, argv);
 }

@@ -97,10 +97,20 @@ TEST_F(TaskFarmMpi, EveryTaskRunsOnceAndTheResultsEqualTheProcessAlone) {
 TEST_F(TaskFarmMpi, AFailingTaskIsReportedOnTheCoordinatorAndTheJobEnds) {
   const ProbeRun run = Probe(2, "--fail 5");
   EXPECT_NE(run.outcome.exit_status, 124) << "the job hung";
-  EXPECT_EQ(run.outcome.exit_status, 1) << run.outcome.err;
+  // The coordinator's error aborts the job as drape's commands do (AbortJobAfterError(3)).
+  EXPECT_EQ(run.outcome.exit_status, 3) << run.outcome.err;
   EXPECT_NE(run.outcome.err.find("task 5 failed"), std::string::npos) << run.outcome.err;
   EXPECT_EQ(run.values.count(5), 0u);
-  EXPECT_EQ(run.workers, 1) << "the worker rank returned normally";
+  EXPECT_EQ(run.workers, 1) << "the worker rank returned from the farm normally";
+}
+
+TEST_F(TaskFarmMpi, ARankWhoseCommandFailsAbortsTheJobInsteadOfLeavingTheOthersWaiting) {
+  // Rank 1 throws before the farm while rank 0 waits for its results: AbortJobAfterError ends
+  // the job with its status (3) instead of the hang that a plain return would leave.
+  const ProbeRun run = Probe(2, "--throw-on-rank 1");
+  EXPECT_NE(run.outcome.exit_status, 124) << "the job hung";
+  EXPECT_EQ(run.outcome.exit_status, 3) << run.outcome.err;
+  EXPECT_NE(run.outcome.err.find("the probe's rank fails"), std::string::npos) << run.outcome.err;
 }
 
 TEST_F(TaskFarmMpi, ARankThatDiesEndsTheJobWithAnErrorInsteadOfAHang) {

@@ -678,6 +678,8 @@ int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   } catch (const std::exception& error) {
     err << "drape: error: " << error.what() << "\n";
   }
+  err << std::flush;
+  AbortJobAfterError(kExitBadInput);  // under MPI: the other ranks may wait for this one
   return kExitBadInput;
 }
 

@@ -55,6 +55,17 @@ const ProcessGroup& Processes() {
 
 bool MpiStarted() { return mpi_started; }
 
+void AbortJobAfterError(int status) {
+  if (!mpi_started || mpi_finished || !Processes().IsDistributed()) return;
+#ifdef DRAPE_WITH_MPI
+  std::fflush(stdout);
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, status);
+#else
+  (void)status;
+#endif
+}
+
 void FinishProcesses() {
   if (!mpi_started || mpi_finished) return;
   mpi_finished = true;

@@ -41,6 +41,12 @@ bool MpiStarted();
 // returns. Every rank must call it.
 void FinishProcesses();
 
+// For an error that ends this process's command early (an exception that reached the command's
+// top): under MPI with several ranks the others may be waiting for this one in a collective call
+// and would wait forever, so the whole job is aborted (MPI_Abort, exit status `status`);
+// otherwise (alone, or MPI never started) does nothing.
+void AbortJobAfterError(int status);
+
 // Scoped FinishProcesses(), for main().
 class ProcessGroupScope {
  public:

@@ -104,8 +104,8 @@ std::vector<int> BalancedOwners(const std::vector<double>& costs, int ranks) {
 
 std::vector<std::string> ComputeOnOwners(const std::vector<double>& costs,
                                          const UnitComputation& compute, int local_threads) {
-  const ProcessGroup& group = Processes();
 #ifdef DRAPE_WITH_MPI
+  const ProcessGroup& group = Processes();
   if (group.IsDistributed()) return ComputeAcrossRanks(costs, compute, group);
 #endif
   return ComputeHere(costs, compute, local_threads);
