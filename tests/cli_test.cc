@@ -143,7 +143,7 @@ TEST_F(CliTest, HelpExitsZero) {
 
 // Every command has --help (its options, with defaults where they have one) on stdout, exit 0.
 TEST_F(CliTest, EveryCommandHasHelpThatExitsZero) {
-  for (const char* command : {"solve", "check", "solvers", "compare", "fit"}) {
+  for (const char* command : {"solve", "check", "solvers", "compare", "fit", "sweep"}) {
     const Outcome outcome = Drape({command, "--help"});
     EXPECT_EQ(outcome.exit_status, 0) << command << outcome.err;
     EXPECT_NE(outcome.out.find(std::string("Usage: drape ") + command), std::string::npos)
@@ -573,6 +573,50 @@ TEST_F(CliTest, ASecondRunIntoAHeldFolderIsRefusedBeforeItSolves) {
   EXPECT_FALSE(fs::exists(out_ / "nodes.csv"));
   const Outcome after = Drape({"solve", WriteScene()});  // the lock released: a run goes through
   EXPECT_EQ(after.exit_status, 0) << after.err;
+}
+
+// `drape sweep` on a coarse drape tester (a fraction of a second per task): the sweep file is
+// written next to a copy of the repository's cotton scene.
+std::string WriteSweepFile(const fs::path& folder, const std::string& grid) {
+  fs::copy_file(fs::path(DRAPE_SOURCE_DIR) / "configs/fv/drape_tester_cotton_30.yaml",
+                folder / "base.yaml");
+  std::ofstream(folder / "sweep.yaml") << "scene: base.yaml\nset: {mesh.spacing: 0.05}\ngrid:\n"
+                                       << grid;
+  return (folder / "sweep.yaml").string();
+}
+
+TEST_F(CliTest, SweepIsListedByHelp) {
+  EXPECT_NE(Drape({"help"}).out.find("drape sweep"), std::string::npos);
+  const std::vector<std::string> commands = SectionWords(Drape({"--help"}).out, "Subcommands:");
+  EXPECT_NE(std::find(commands.begin(), commands.end(), "sweep"), commands.end());
+}
+
+TEST_F(CliTest, ABadSweepFileExitsTwoAndWritesNothing) {
+  const std::string sweep = WriteSweepFile(
+      directory_, "  material.finite_volume.kes.W: [8, 12]\n  material.densty: [1]\n");
+  const Outcome outcome = Drape({"sweep", sweep, "-o", out_.string()});
+  EXPECT_EQ(outcome.exit_status, 2);
+  EXPECT_EQ(outcome.err.rfind(sweep + ":5:21: ", 0), 0u) << outcome.err;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+TEST_F(CliTest, SweepTaskIdComesFromTheSlurmArray) {
+  const std::string sweep = WriteSweepFile(directory_, "  material.finite_volume.kes.W: [8, 12]\n");
+  ::setenv("SLURM_ARRAY_TASK_ID", "1", 1);
+  const Outcome array = Drape({"sweep", sweep, "-o", out_.string(), "--task-id"});
+  ::unsetenv("SLURM_ARRAY_TASK_ID");
+  EXPECT_EQ(array.exit_status, 0) << array.err;
+  EXPECT_NE(array.out.find("2 tasks; 1 solved"), std::string::npos) << array.out;
+  EXPECT_TRUE(fs::exists(out_ / "tasks/0001/summary.json"));
+  EXPECT_FALSE(fs::exists(out_ / "tasks/0000"));
+  EXPECT_NE(array.err.find("sweep: task 1"), std::string::npos) << array.err;
+  // The rest of the sweep: task 0 solved, task 1 kept; every task converged, exit 0.
+  const Outcome rest = Drape({"sweep", sweep, "-o", out_.string(), "--no-plots"});
+  EXPECT_EQ(rest.exit_status, 0) << rest.err;
+  EXPECT_NE(rest.out.find("1 solved, 1 already done (skipped)"), std::string::npos) << rest.out;
+  EXPECT_EQ(Drape({"sweep", sweep, "--task-id", "2"}).exit_status, 2);
+  EXPECT_EQ(Drape({"sweep", sweep, "--only", "x"}).exit_status, 2);
+  EXPECT_EQ(Drape({"sweep", sweep, "--task-id", "0", "--only", "1"}).exit_status, 2);
 }
 
 }  // namespace

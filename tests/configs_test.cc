@@ -14,9 +14,11 @@ std::vector<std::string> SceneFiles() {
   std::vector<std::string> files;
   for (const auto& entry :
        std::filesystem::recursive_directory_iterator(testing::SourcePath("configs"))) {
-    const auto path = entry.path();
+    const auto& path = entry.path();
     if (path.extension() != ".yaml") continue;
     if (path.filename().string().rfind("fit", 0) == 0) continue;  // fit files: drape fit
+    // sweep files: drape sweep (tests/sweep_file_test.cc loads them)
+    if (path.filename().string().rfind("sweep", 0) == 0) continue;
     files.push_back(path.string());
   }
   return files;

@@ -104,10 +104,9 @@ std::string ScanFit(const std::string& folder, const std::string& method) {
   return path;
 }
 
-// Two specimens of one material (the hammock and a smaller copy), each with its own positions,
-// share the fitted stiffness.
-TEST(FitSolverTest, SharesParametersBetweenSpecimens) {
-  const std::string folder = FitTempDir("specimens");
+// Two specimens of one material (the hammock and a smaller copy), each with its own positions
+// (0.5 mm noise): the fit file's path.
+std::string TwoHammocksFit(const std::string& folder) {
   std::ifstream in(SourcePath("configs/fit/sheet_springs.yaml"));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("size: [0.5, 0.5]"), 16, "size: [0.3, 0.3]");
@@ -126,12 +125,46 @@ TEST(FitSolverTest, SharesParametersBetweenSpecimens) {
                     "[1, 1000], log: true}\nmeasurements:\n  - positions: {file: large.csv}\n"
                     "  - scene: small.yaml\n    measurements:\n      - positions: {file: "
                     "small.csv}\n");
-  FitProblem problem(LoadFitFile(folder + "/fit_two.yaml"));
+  return folder + "/fit_two.yaml";
+}
+
+// The two specimens share the fitted stiffness.
+TEST(FitSolverTest, SharesParametersBetweenSpecimens) {
+  FitProblem problem(LoadFitFile(TwoHammocksFit(FitTempDir("specimens"))));
   EXPECT_EQ(problem.blocks().size(), 2u);
   EXPECT_EQ(problem.equilibria().size(), 2u);
   const FitResult result = RunFit(problem);
   EXPECT_TRUE(result.converged) << result.termination;
   EXPECT_LT(RelativeError(result.parameters[0], 35.0), 0.02);
+}
+
+// The specimens solved on 1, 2 or 3 threads (each from its own previous equilibrium): the same
+// evaluations, iterations and numbers, bit for bit (tests/fit_mpi_test.cc: the same over MPI).
+TEST(FitSolverTest, AFitOnThreadsGivesTheSerialFitBitForBit) {
+  const FitSpec spec = LoadFitFile(TwoHammocksFit(FitTempDir("threads")));
+  for (const std::string method : {"bobyqa", "implicit-lm"}) {
+    FitSpec with_method = spec;
+    with_method.method = method;
+    FitProblem serial_problem(with_method, 1);
+    const FitResult serial = RunFit(serial_problem);
+    ASSERT_TRUE(serial.converged) << serial.termination;
+    for (const int threads : {2, 3}) {
+      SCOPED_TRACE(method + " on " + std::to_string(threads) + " threads");
+      FitProblem problem(with_method, threads);
+      const FitResult result = RunFit(problem);
+      EXPECT_EQ(result.parameters, serial.parameters);
+      EXPECT_EQ(result.objective, serial.objective);
+      EXPECT_EQ(result.jacobian, serial.jacobian);
+      EXPECT_EQ(result.standard_errors, serial.standard_errors);
+      ASSERT_EQ(result.history.size(), serial.history.size());
+      for (size_t k = 0; k < serial.history.size(); ++k) {
+        EXPECT_EQ(result.history[k].parameters, serial.history[k].parameters) << k;
+        EXPECT_EQ(result.history[k].objective, serial.history[k].objective) << k;
+        EXPECT_EQ(result.history[k].inner_iterations, serial.history[k].inner_iterations) << k;
+      }
+      EXPECT_EQ(result.final_evaluation.residuals, serial.final_evaluation.residuals);
+    }
+  }
 }
 
 // D_warp, D_weft and G from a scanned drape: a point cloud on the finite-volume drape's surface

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <limits>
@@ -28,11 +29,15 @@
 #include "src/output/result_folder.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/parallel/process_group.h"
+#include "src/parallel/task_farm.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/run.h"
 #include "src/solvers/solver.h"
+#include "src/sweep/sweep.h"
+#include "src/sweep/sweep_file.h"
 
 namespace drape {
 
@@ -46,6 +51,8 @@ constexpr char kUsage[] =
     "       drape compare [OPTIONS] [--] SCENE.yaml...   (--solvers all|a,b,..., --out DIR,\n"
     "                     --repeat N, --time-limit S, --set key.path=value, --no-plots)\n"
     "       drape fit [OPTIONS] [--] FIT.yaml   (--out DIR, --method NAME, --set key.path=value)\n"
+    "       drape sweep [OPTIONS] [--] SWEEP.yaml   (-o/--out DIR, --only I, --task-id [I],\n"
+    "                   --threads N, --no-plots)\n"
     "       drape completion bash   (the bash completion script)\n"
     "       drape help | --help | --version;  drape COMMAND --help for a command's options\n";
 
@@ -76,6 +83,7 @@ struct Arguments {
   std::optional<std::string> solver;
   std::optional<std::string> out;
   std::optional<std::string> method;  // fit
+  int threads = 0;                    // fit: local threads (src/parallel/task_farm.h)
   std::vector<std::string> overrides;
 };
 
@@ -246,21 +254,10 @@ int Check(const Arguments& arguments, std::ostream& out) {
   return kExitConverged;
 }
 
-// `drape fit`: load the fit file (every input checked before any solve), run the outer loop with
-// a progress line per evaluation on `err`, write the outputs. Exit 0 converged, 1 not converged.
-int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
-  FitSpec spec = LoadFitFile(arguments.file, arguments.overrides);
-  if (arguments.method) {
-    if (!FindFitMethod(*arguments.method)) {
-      throw UsageError("unknown fit method '" + *arguments.method + "' (known: " + FitMethodList() +
-                       ")");
-    }
-    spec.method = *arguments.method;
-  }
-  if (arguments.out) spec.output_directory = *arguments.out;
-  FitProblem problem(spec);
-  FitOptions options;
-  options.on_evaluation = [&](const FitIterationRecord& record) {
+// The progress line of each fit evaluation, on `err`.
+std::function<void(const FitIterationRecord&)> FitProgressPrinter(const FitSpec& spec,
+                                                                  std::ostream& err) {
+  return [&spec, &err](const FitIterationRecord& record) {
     char text[120];
     std::snprintf(text, sizeof text, "fit %s: evaluation %d, %.2f s, objective %.6g (best %.6g)",
                   spec.method.c_str(), record.evaluation, record.time_s, record.objective,
@@ -273,12 +270,32 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
     }
     err << (record.inner_converged ? "" : " (an equilibrium did not converge)") << "\n";
   };
+}
+
+// `drape fit`: load the fit file (every input checked before any solve), run the outer loop with
+// a progress line per evaluation on `err`, write the outputs. Exit 0 converged, 1 not converged.
+int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
+  FitSpec spec = LoadFitFile(arguments.file, arguments.overrides);
+  if (arguments.method) {
+    if (!FindFitMethod(*arguments.method)) {
+      throw UsageError("unknown fit method '" + *arguments.method + "' (known: " + FitMethodList() +
+                       ")");
+    }
+    spec.method = *arguments.method;
+  }
+  if (arguments.out) spec.output_directory = *arguments.out;
+  // Under mpirun/srun every rank runs the fit in step; only the coordinator reports and writes.
+  const bool coordinator = Processes().IsCoordinator();
+  FitProblem problem(spec, arguments.threads);
+  FitOptions options;
+  if (coordinator) options.on_evaluation = FitProgressPrinter(spec, err);
   EnableInterrupt();
   const FitResult result = RunFit(problem, options);
   if (result.parameters.empty()) {
-    err << "drape fit: " << result.termination << "; nothing written\n";
+    if (coordinator) err << "drape fit: " << result.termination << "; nothing written\n";
     return kExitNotConverged;
   }
+  if (!coordinator) return result.converged ? kExitConverged : kExitNotConverged;
   try {
     WriteFitOutputs(problem, result, spec.output_directory);
   } catch (const std::exception& error) {
@@ -289,6 +306,74 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
       << result.evaluations << " evaluations, objective " << result.objective << " ("
       << result.termination << "); results in " << spec.output_directory << std::endl;
   return result.converged ? kExitConverged : kExitNotConverged;
+}
+
+// What the command line of `drape sweep` gives.
+struct SweepArguments {
+  std::string file;
+  std::optional<std::string> out;
+  std::optional<int> only;
+  std::optional<std::string> task_id;  // --task-id: a number, or empty for $SLURM_ARRAY_TASK_ID
+  int threads = 0;
+  bool no_plots = false;
+};
+
+// The task --only or --task-id names (--task-id alone: $SLURM_ARRAY_TASK_ID), checked against the
+// sweep's tasks.
+std::optional<int> OnlyTask(const SweepArguments& arguments, const SweepSpec& spec) {
+  std::optional<int> only = arguments.only;
+  if (arguments.task_id) {
+    if (only) throw UsageError("give --only or --task-id, not both");
+    std::string text = *arguments.task_id;
+    if (text.empty()) {
+      const char* slurm = std::getenv("SLURM_ARRAY_TASK_ID");
+      if (!slurm) throw UsageError("--task-id without a value needs $SLURM_ARRAY_TASK_ID");
+      text = slurm;
+    }
+    int value = -1;
+    if (!CLI::detail::lexical_cast(text, value) || value < 0) {
+      throw UsageError("--task-id: expected a task number >= 0, got '" + text + "'");
+    }
+    only = value;
+  }
+  const int count = static_cast<int>(spec.tasks.size());
+  if (only && (*only < 0 || *only >= count)) {
+    throw UsageError("task " + std::to_string(*only) + " is not in the sweep (its tasks are 0 to " +
+                     std::to_string(count - 1) + ")");
+  }
+  return only;
+}
+
+// `drape sweep`: every input checked before any solve; one progress line per finished task on
+// `err`. Exit 0 when every task (or the --only task) converged, 1 otherwise.
+int Sweep(const SweepArguments& arguments, const std::string& command_line, std::ostream& out,
+          std::ostream& err) {
+  const SweepSpec spec = LoadSweepFile(arguments.file);
+  SweepOptions options;
+  options.only = OnlyTask(arguments, spec);
+  if (arguments.out) options.out = *arguments.out;
+  options.threads = arguments.threads;
+  options.plots = !arguments.no_plots;
+  options.command_line = command_line;
+  EnableInterrupt();
+  SweepSummary summary;
+  try {
+    summary = RunSweep(spec, options, err);
+  } catch (const TaskFarmError& error) {
+    err << "drape sweep: " << error.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& error) {
+    err << "drape: cannot write the results: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  if (!summary.coordinator) return kExitConverged;
+  out << "sweep: " << summary.tasks << " tasks; " << summary.solved << " solved, "
+      << summary.skipped << " already done (skipped); " << summary.rows << " rows, "
+      << summary.converged << " converged" << (summary.interrupted ? "; interrupted" : "")
+      << "; results in " << summary.directory << "/sweep.csv" << std::endl;
+  const bool all = options.only ? summary.converged_tasks.count(*options.only) > 0
+                                : static_cast<int>(summary.converged_tasks.size()) == summary.tasks;
+  return all && !summary.interrupted ? kExitConverged : kExitNotConverged;
 }
 
 // The catalogue (src/scene/solver_methods.h): each method, its default limits and every option
@@ -335,6 +420,17 @@ const CLI::Validator kWholeNumber(
       return std::string();
     },
     "N>=1", "whole number");
+
+// The whole text as an integer >= 0 (a thread count; 0: the machine's cores).
+const CLI::Validator kThreadCount(
+    [](const std::string& text) {
+      int value = 0;
+      if (!CLI::detail::lexical_cast(text, value) || value < 0) {
+        return "expected a whole number >= 0 (0: the machine's cores), got '" + text + "'";
+      }
+      return std::string();
+    },
+    "N>=0", "thread count");
 
 // The command as a shell would take it back: "drape solve 'my scene.yaml' --set a=1".
 std::string CommandLine(const std::vector<std::string>& args) {
@@ -494,9 +590,32 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
                   "out/<fit file name>)");
   fit->add_option("--method", arguments.method,
                   "outer method instead of the fit file's (" + FitMethodList() + ")");
+  fit->add_option("--threads", arguments.threads, kLocalThreadsHelp)
+      ->check(kThreadCount)
+      ->capture_default_str();
   fit->get_option("--set")->description(
       "override a key of every scene the fit solves (repeatable; value is YAML; the fitted "
       "parameters win)");
+
+  SweepArguments sweep_arguments;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep",
+      "solve a base scene over a grid, zip or sample of its keys (one task per variant, each in "
+      "OUT/tasks/NNNN); writes sweep.csv, sweep.html; reruns skip the finished tasks");
+  sweep->add_option("file", sweep_arguments.file, "sweep file (YAML)")->required();
+  sweep->add_option("-o,--out", sweep_arguments.out,
+                    "write into this folder (default: the sweep file's output.directory, else "
+                    "out/<sweep file name>)");
+  sweep->add_option("--only", sweep_arguments.only, "run only this task (0-based)");
+  sweep
+      ->add_option("--task-id", sweep_arguments.task_id,
+                   "run only this task; without a value, $SLURM_ARRAY_TASK_ID (a Slurm job array)")
+      ->expected(0, 1);
+  sweep->add_option("--threads", sweep_arguments.threads, kLocalThreadsHelp)
+      ->check(kThreadCount)
+      ->capture_default_str();
+  sweep->add_flag("--no-plots", sweep_arguments.no_plots,
+                  "write sweep.csv without running gnuplot");
 
   CLI::App* help = app.add_subcommand("help", "print this help");
 
@@ -539,6 +658,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     return RunCompare(compare_options, err, &out);
   }
   if (fit->parsed()) return Fit(arguments, out, err);
+  if (sweep->parsed()) return Sweep(sweep_arguments, arguments.command_line, out, err);
   if (check->parsed()) return Check(arguments, out);
   return Solve(arguments, out, err, options);
 }
@@ -560,6 +680,8 @@ int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   } catch (const std::exception& error) {
     err << "drape: error: " << error.what() << "\n";
   }
+  err << std::flush;
+  AbortJobAfterError(kExitBadInput);  // under MPI: the other ranks may wait for this one
   return kExitBadInput;
 }
 

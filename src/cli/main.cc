@@ -6,8 +6,11 @@
 #include <vector>
 
 #include "src/cli/cli.h"
+#include "src/parallel/process_group.h"
 
 int main(int argc, char** argv) {
+  // Finalises MPI at the end if a command started it (only under mpirun/srun).
+  const drape::ProcessGroupScope processes;
   const std::vector<std::string> args(argv + 1, argv + argc);
   drape::CommandOptions options;
   options.show_progress = ::isatty(STDERR_FILENO) == 1;

@@ -9,7 +9,10 @@
 #include "src/model/equilibrium.h"
 #include "src/numerics/sparse_hessian.h"
 #include "src/output/json.h"
+#include "src/parallel/byte_codec.h"
+#include "src/parallel/shared_work.h"
 #include "src/scene/scene_loader.h"
+#include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solver.h"
 
@@ -17,6 +20,7 @@ namespace drape {
 namespace {
 
 constexpr double kParameterStep = 1e-4;  // in u, for ∂g/∂u
+constexpr double kMeshFileCost = 1e4;    // nodes, for the owners of equilibria on mesh files
 
 std::string BlockLabel(const FitMeasurement& measurement) {
   switch (measurement.kind) {
@@ -41,7 +45,8 @@ double DirectionStep(const FitMeasurement& measurement) {
 
 }  // namespace
 
-FitProblem::FitProblem(const FitSpec& spec) : spec_(spec) {
+FitProblem::FitProblem(const FitSpec& spec, int local_threads)
+    : spec_(spec), local_threads_(local_threads) {
   for (size_t s = 0; s < spec_.specimens.size(); ++s) {
     FitEquilibrium main;
     main.specimen = static_cast<int>(s);
@@ -68,6 +73,16 @@ FitProblem::FitProblem(const FitSpec& spec) : spec_(spec) {
       blocks_.push_back(block);
       equilibria_[block.equilibrium].measured = true;
     }
+  }
+  const std::vector<double> theta = [&] {
+    std::vector<double> initial;
+    for (const auto& parameter : spec_.parameters) initial.push_back(parameter.initial);
+    return initial;
+  }();
+  for (const int e : MeasuredEquilibria()) {
+    // A mesh file's size is known once it is read: counted as a large mesh.
+    const double nodes = EstimatedNodes(SceneAt(equilibria_[e], theta).mesh);
+    unit_costs_.push_back(nodes > 0.0 ? nodes : kMeshFileCost);
   }
 }
 
@@ -235,27 +250,78 @@ bool FitProblem::SolveEquilibrium(FitEquilibrium* equilibrium, const std::vector
   return equilibrium->converged;
 }
 
-FitEvaluation FitProblem::Evaluate(const std::vector<double>& u, bool cold) {
-  FitEvaluation evaluation;
-  for (auto& equilibrium : equilibria_) {
-    if (!equilibrium.measured) continue;  // a specimen measured only through its Peirce strips
-    evaluation.converged &= SolveEquilibrium(&equilibrium, u, cold);
-    evaluation.inner_iterations += equilibrium.inner_iterations;
+std::vector<int> FitProblem::MeasuredEquilibria() const {
+  std::vector<int> measured;
+  for (size_t e = 0; e < equilibria_.size(); ++e) {
+    // A specimen measured only through its Peirce strips is not solved.
+    if (equilibria_[e].measured) measured.push_back(static_cast<int>(e));
   }
-  evaluation.residuals.assign(num_residuals_, 0.0);
+  return measured;
+}
+
+std::string FitProblem::SolveAndMeasure(int e, const std::vector<double>& u, bool cold) {
+  FitEquilibrium& equilibrium = equilibria_[e];
+  SolveEquilibrium(&equilibrium, u, cold);
+  ByteWriter outcome;
+  outcome.Int(equilibrium.converged ? 1 : 0);
+  outcome.Int(equilibrium.inner_iterations);
+  outcome.Double(equilibrium.relative_residual);
+  outcome.Doubles(equilibrium.positions);
   for (const auto& block : blocks_) {
-    const FitEquilibrium& equilibrium = equilibria_[block.equilibrium];
+    if (block.equilibrium != e) continue;
     const MeasuredValue measured = EvaluateMeasurement(
         MeasurementOf(block), *equilibrium.model, equilibrium.positions.data(), ContextOf(block));
-    std::copy(measured.residuals.begin(), measured.residuals.end(),
-              evaluation.residuals.begin() + block.offset);
-    evaluation.model_values.push_back(measured.model_value);
+    outcome.Double(measured.model_value);
+    outcome.Doubles(measured.residuals);
   }
+  return outcome.bytes();
+}
+
+void FitProblem::TakeOutcome(int e, const std::string& outcome, FitEvaluation* evaluation) {
+  FitEquilibrium& equilibrium = equilibria_[e];
+  ByteReader reader(outcome);
+  equilibrium.converged = reader.Int() != 0;
+  equilibrium.inner_iterations = static_cast<int>(reader.Int());
+  equilibrium.relative_residual = reader.Double();
+  equilibrium.positions = reader.Doubles();
+  evaluation->converged &= equilibrium.converged;
+  evaluation->inner_iterations += equilibrium.inner_iterations;
+  for (size_t b = 0; b < blocks_.size(); ++b) {
+    if (blocks_[b].equilibrium != e) continue;
+    evaluation->model_values[b] = reader.Double();
+    const std::vector<double> residuals = reader.Doubles();
+    std::copy(residuals.begin(), residuals.end(),
+              evaluation->residuals.begin() + blocks_[b].offset);
+  }
+}
+
+FitEvaluation FitProblem::Evaluate(const std::vector<double>& u, bool cold) {
+  const std::vector<int> solved = MeasuredEquilibria();
+  const std::vector<std::string> outcomes = ComputeOnOwners(
+      unit_costs_, [&](int k) { return SolveAndMeasure(solved[k], u, cold); }, local_threads_);
+  FitEvaluation evaluation;
+  evaluation.residuals.assign(num_residuals_, 0.0);
+  evaluation.model_values.assign(blocks_.size(), 0.0);
+  for (size_t k = 0; k < solved.size(); ++k) TakeOutcome(solved[k], outcomes[k], &evaluation);
   for (double r : evaluation.residuals) evaluation.objective += 0.5 * r * r;
   if (!std::isfinite(evaluation.objective)) evaluation.converged = false;
   last_u_ = u;
   return evaluation;
 }
+
+void FitProblem::RebuildMissingModels() {
+  for (const int e : MeasuredEquilibria()) {
+    FitEquilibrium& equilibrium = equilibria_[e];
+    if (equilibrium.model) continue;
+    equilibrium.scene = SceneAt(equilibrium, ToParameters(last_u_));
+    equilibrium.model = std::make_unique<Model>(BuildModel(equilibrium.scene));
+    if (!equilibrium.model->triangles.empty()) {
+      equilibrium.flat_area = FlatShadowArea(*equilibrium.model);
+    }
+  }
+}
+
+bool FitProblem::StopRequested() const { return AnyProcess(InterruptRequested()); }
 
 bool FitProblem::EquilibriumDirections(const FitEquilibrium& equilibrium,
                                        Eigen::MatrixXd* directions,
@@ -297,21 +363,24 @@ bool FitProblem::EquilibriumDirections(const FitEquilibrium& equilibrium,
   return true;
 }
 
-bool FitProblem::ImplicitJacobian(Eigen::MatrixXd* jacobian) {
-  const int p = num_parameters();
-  jacobian->setZero(num_residuals_, p);
-  std::vector<Eigen::MatrixXd> directions(equilibria_.size()), direct(equilibria_.size());
-  for (size_t e = 0; e < equilibria_.size(); ++e) {
-    if (!equilibria_[e].measured) continue;
-    if (!EquilibriumDirections(equilibria_[e], &directions[e], &direct[e])) return false;
+std::string FitProblem::JacobianRowsOf(int e) const {
+  const FitEquilibrium& equilibrium = equilibria_[e];
+  ByteWriter rows;
+  Eigen::MatrixXd directions, direct;
+  if (!EquilibriumDirections(equilibrium, &directions, &direct)) {
+    rows.Int(0);
+    return rows.bytes();
   }
+  rows.Int(1);
+  const int p = num_parameters();
+  const Model& model = *equilibrium.model;
   for (const auto& block : blocks_) {
-    const FitEquilibrium& equilibrium = equilibria_[block.equilibrium];
+    if (block.equilibrium != e) continue;
     const FitMeasurement& measurement = MeasurementOf(block);
     const MeasurementContext context = ContextOf(block);
-    const Model& model = *equilibrium.model;
+    Eigen::MatrixXd block_rows = Eigen::MatrixXd::Zero(block.count, p);
     for (int j = 0; j < p; ++j) {
-      const Eigen::VectorXd v = directions[block.equilibrium].col(j);
+      const Eigen::VectorXd v = directions.col(j);
       const double largest = v.cwiseAbs().maxCoeff();
       if (largest > 0.0) {
         const double step = DirectionStep(measurement) * model.size / largest;
@@ -324,7 +393,7 @@ bool FitProblem::ImplicitJacobian(Eigen::MatrixXd* jacobian) {
         const auto r_minus =
             EvaluateMeasurement(measurement, model, minus.data(), context).residuals;
         for (int i = 0; i < block.count; ++i) {
-          (*jacobian)(block.offset + i, j) = (r_plus[i] - r_minus[i]) / (2.0 * step);
+          block_rows(i, j) = (r_plus[i] - r_minus[i]) / (2.0 * step);
         }
       }
       if (measurement.kind == FitMeasurement::Kind::kReactions) {
@@ -332,12 +401,29 @@ bool FitProblem::ImplicitJacobian(Eigen::MatrixXd* jacobian) {
         const double scale = std::sqrt(measurement.weight) / measurement.sigma;
         const auto& ids = measurement.reactions.ids;
         for (size_t k = 0; k < ids.size(); ++k) {
-          for (int c = 0; c < 3; ++c) {
-            (*jacobian)(block.offset + 3 * k + c, j) +=
-                scale * direct[block.equilibrium](3 * ids[k] + c, j);
-          }
+          for (int c = 0; c < 3; ++c) block_rows(3 * k + c, j) += scale * direct(3 * ids[k] + c, j);
         }
       }
+    }
+    rows.Doubles(std::vector<double>(block_rows.data(), block_rows.data() + block_rows.size()));
+  }
+  return rows.bytes();
+}
+
+bool FitProblem::ImplicitJacobian(Eigen::MatrixXd* jacobian) {
+  const int p = num_parameters();
+  jacobian->setZero(num_residuals_, p);
+  const std::vector<int> solved = MeasuredEquilibria();
+  const std::vector<std::string> outcomes = ComputeOnOwners(
+      unit_costs_, [&](int k) { return JacobianRowsOf(solved[k]); }, local_threads_);
+  for (size_t k = 0; k < solved.size(); ++k) {
+    ByteReader reader(outcomes[k]);
+    if (reader.Int() == 0) return false;
+    for (const auto& block : blocks_) {
+      if (block.equilibrium != solved[k]) continue;
+      const std::vector<double> rows = reader.Doubles();
+      jacobian->middleRows(block.offset, block.count) =
+          Eigen::Map<const Eigen::MatrixXd>(rows.data(), block.count, p);
     }
   }
   return true;

@@ -25,6 +25,17 @@
 // energies are linear in the stiffnesses, so these differences are exact up to roundoff). The
 // residuals' dependence on x is then differentiated along each direction dx*/du_j by a central
 // difference of the measurement function alone (no re-solve).
+//
+// In parallel (src/parallel/shared_work.h): the equilibria of an evaluation, and their implicit
+// derivatives, are independent; each belongs to one owner (an MPI rank; or, in a process alone,
+// whichever of `local_threads` threads takes it), which alone solves it and keeps
+// its warm-start history (so each equilibrium starts from its own previous one, whatever the
+// number of ranks). Owners are set once, by the equilibria's node counts (the largest first, each
+// to the least loaded rank). The owner sends back the equilibrium's outcome (converged, iterations,
+// positions) and its measurements' residuals, or its Jacobian rows; every process then assembles
+// r, J and the objective in the same order as a serial run: the same numbers, bit for bit, with
+// any number of ranks or threads. Under MPI every rank runs the same outer loop on these numbers;
+// a rank keeps the models of its own equilibria only (RebuildMissingModels() for the writer).
 #ifndef DRAPE_SRC_FIT_FIT_PROBLEM_H_
 #define DRAPE_SRC_FIT_FIT_PROBLEM_H_
 
@@ -83,7 +94,9 @@ struct FitEvaluation {
 
 class FitProblem {
  public:
-  explicit FitProblem(const FitSpec& spec);
+  // `local_threads`: threads that solve the equilibria when the process is alone (0: the
+  // machine's cores); under MPI each rank solves its own equilibria in order.
+  explicit FitProblem(const FitSpec& spec, int local_threads = 1);
 
   int num_parameters() const { return static_cast<int>(spec_.parameters.size()); }
   int num_residuals() const { return num_residuals_; }
@@ -111,9 +124,27 @@ class FitProblem {
   const std::vector<FitEquilibrium>& equilibria() const { return equilibria_; }
   const std::vector<double>& last_unknowns() const { return last_u_; }
 
+  // Under MPI, builds (at the last evaluated u) the model and scene of each measured equilibrium
+  // that another rank owns, so that every equilibrium has its model, scene and positions here (as
+  // the writers need). Does nothing in a process alone.
+  void RebuildMissingModels();
+
+  // Whether a stop was asked for (SIGINT, SIGTERM) in this process or, under MPI, in any rank: all
+  // ranks get the same answer, so their outer loops stop together. A collective call under MPI.
+  bool StopRequested() const;
+
  private:
   Scene SceneAt(const FitEquilibrium& equilibrium, const std::vector<double>& theta) const;
   bool SolveEquilibrium(FitEquilibrium* equilibrium, const std::vector<double>& u, bool cold);
+  // The measured equilibria, in order: the units of the parallel work.
+  std::vector<int> MeasuredEquilibria() const;
+  // Solves equilibrium e at u and evaluates its measurements (on its owner); the outcome packed.
+  std::string SolveAndMeasure(int e, const std::vector<double>& u, bool cold);
+  // Reads SolveAndMeasure's outcome into equilibrium e (on every process) and `evaluation`.
+  void TakeOutcome(int e, const std::string& outcome, FitEvaluation* evaluation);
+  // dr/du's rows of equilibrium e's blocks, packed (on its owner); first a flag: 0 if its Hessian
+  // could not be factorised.
+  std::string JacobianRowsOf(int e) const;
   MeasurementContext ContextOf(const ResidualBlock& block) const;
   // dx*/du (3n × p, zero rows at fixed coordinates) and ∂g/∂u at x* (3n × p). False if H is not
   // positive definite.
@@ -123,10 +154,14 @@ class FitProblem {
 
   FitSpec spec_;
   std::vector<Scene> base_scenes_;  // each specimen at the initial parameters (disc radius etc.)
+  // Per measured equilibrium (MeasuredEquilibria() order), its expected cost: its mesh's node
+  // count. Sets which rank owns it under MPI (src/parallel/shared_work.h), once for the fit.
+  std::vector<double> unit_costs_;
   std::vector<FitEquilibrium> equilibria_;
   std::vector<ResidualBlock> blocks_;
   int num_residuals_ = 0;
   std::vector<double> last_u_;
+  int local_threads_ = 1;
 };
 
 }  // namespace drape

@@ -53,6 +53,8 @@ class Recorder {
     return evaluation;
   }
 
+  // A stop asked for here or on another rank (the same answer on every rank).
+  bool StopRequested() const { return problem_.StopRequested(); }
   const std::vector<double>& best_u() const { return best_u_; }
   double best_objective() const { return best_objective_; }
   const FitEvaluation& best_evaluation() const { return best_evaluation_; }
@@ -81,7 +83,7 @@ struct NloptContext {
 
 double NloptObjective(unsigned n, const double* x, double* gradient, void* data) {
   auto* context = static_cast<NloptContext*>(data);
-  if (InterruptRequested()) throw nlopt::forced_stop();
+  if (context->recorder->StopRequested()) throw nlopt::forced_stop();
   const std::vector<double> u(x, x + n);
   Eigen::MatrixXd jacobian;
   const FitEvaluation evaluation = context->recorder->Evaluate(u, gradient != nullptr, &jacobian);
@@ -157,7 +159,7 @@ class FitCost : public ceres::CostFunction {
 
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    if (InterruptRequested()) return false;
+    if (recorder_->StopRequested()) return false;
     const int p = problem_.num_parameters(), m = problem_.num_residuals();
     const std::vector<double> u(parameters[0], parameters[0] + p);
     Eigen::MatrixXd jacobian;
@@ -228,9 +230,9 @@ FitResult RunFit(FitProblem& problem, const FitOptions& options) {
   // After a Ctrl-C the search is over but these closing solves still run to their end (a solve
   // with the interrupt set stops at once, unconverged, far from the optimum); a second Ctrl-C
   // stops them, and then the best point is reported as the search evaluated it.
-  if (InterruptRequested()) ClearInterrupt();
+  if (problem.StopRequested()) ClearInterrupt();
   result.final_evaluation = problem.Evaluate(recorder.best_u(), true);
-  if (!result.final_evaluation.converged && InterruptRequested()) {
+  if (!result.final_evaluation.converged && problem.StopRequested()) {
     result.final_evaluation = recorder.best_evaluation();
     result.termination += "; interrupted again: the best point is reported as the search found it";
   }
@@ -248,6 +250,7 @@ FitResult RunFit(FitProblem& problem, const FitOptions& options) {
     result.jacobian = problem.FiniteDifferenceJacobian(recorder.best_u(), 1e-4);
     result.jacobian_implicit = false;
   }
+  problem.RebuildMissingModels();  // under MPI: every equilibrium's model here, for the writers
   result.parameters = problem.ToParameters(recorder.best_u());
   result.objective = result.final_evaluation.objective;
   result.converged = result.converged && result.final_evaluation.converged;

@@ -1,0 +1,440 @@
+#include "src/sweep/sweep.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <new>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "src/analysis/solve_report.h"
+#include "src/model/model.h"
+#include "src/numerics/library_threads.h"
+#include "src/output/atomic_file.h"
+#include "src/output/json.h"
+#include "src/output/result_folder.h"
+#include "src/output/writers.h"
+#include "src/parallel/task_farm.h"
+#include "src/scene/scene_loader.h"
+#include "src/solvers/solver.h"
+#include "src/sweep/sweep_report.h"
+
+namespace drape {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kRowFile = "row.csv";
+constexpr const char* kVariantFile = "variant.txt";
+constexpr const char* kPositionsFile = "final_positions.txt";  // warm-start sweeps only
+
+// The columns after the varied keys (and `repeat`).
+const std::vector<std::string> kResultColumns = {"converged",         "stop_reason",
+                                                 "iterations",        "time_s",
+                                                 "energy_J",          "relative_residual",
+                                                 "max_node_force_N",  "stable",
+                                                 "drape_coefficient", "folds",
+                                                 "certificate",       "warm_start_from"};
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text)
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  return quoted + "\"";
+}
+
+std::string CsvLine(const std::vector<std::string>& cells) {
+  std::string line;
+  for (size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + CsvField(cells[k]);
+  return line;
+}
+
+// A number for a CSV cell: empty when it is not finite (no NaN in any output).
+std::string Cell(double value, int digits = 17) {
+  return std::isfinite(value) ? FormatNumber(value, digits) : "";
+}
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// FNV-1a, 64 bits: a fingerprint of the base scene's text for the task identities.
+std::string Fingerprint(const std::string& bytes) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
+  char text[20];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+// What the certificate says of the final state, in words (as drape solve's result line).
+std::string CertificateText(const RunResult& result) {
+  if (!result.certificate.unsound.empty()) return "not certified: " + result.certificate.unsound;
+  if (!result.stability.computed) return "stability not computed";
+  if (result.stability.stable) return "stable minimum";
+  return "saddle: most negative eigenvalue " + FormatNumber(result.stability.min_eigenvalue, 3) +
+         " N/m";
+}
+
+// The cells of task `task` before its results: number, values, repeat.
+std::vector<std::string> TaskCells(const SweepSpec& spec, int task) {
+  std::vector<std::string> cells = {std::to_string(task)};
+  for (const SweepValue& value : spec.tasks[task].values) cells.push_back(value.text);
+  if (spec.repeat > 1) cells.push_back(std::to_string(spec.tasks[task].repeat));
+  return cells;
+}
+
+std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveReport& report,
+                                   int warm_from) {
+  const RunResult& result = report.result;
+  std::vector<std::string> cells = TaskCells(spec, task);
+  const Stability& stability = result.stability;
+  const bool stable_known = stability.computed && result.certificate.unsound.empty();
+  cells.insert(cells.end(),
+               {result.converged ? "yes" : "no", result.summary.termination,
+                std::to_string(result.summary.iterations), Cell(result.summary.wall_time_s, 4),
+                Cell(result.certificate.energy), Cell(result.certificate.relative_residual),
+                Cell(result.certificate.max_node_force),
+                stable_known ? (stability.stable ? "yes" : "no") : "",
+                report.drape ? Cell(ReportedDrapeCoefficient(report)) : "",
+                report.drape ? std::to_string(report.drape->folds.count) : "",
+                CertificateText(result), warm_from >= 0 ? std::to_string(warm_from) : ""});
+  return cells;
+}
+
+std::vector<std::string> FailedRow(const SweepSpec& spec, int task, const std::string& why) {
+  std::vector<std::string> cells = TaskCells(spec, task);
+  cells.insert(cells.end(), {"no", "failed: " + why, "", "", "", "", "", "", "", "", "", ""});
+  return cells;
+}
+
+// ---- a task's folder ----------------------------------------------------------------------------
+
+struct Context {
+  const SweepSpec& spec;
+  std::string directory;
+  std::string command_line;
+  std::string header;  // CSV header line
+  std::vector<std::string> identities;
+};
+
+// The row of a finished task (its folder holds a row for the same variant), else nothing.
+std::optional<std::string> FinishedRow(const Context& context, int task) {
+  const fs::path folder = TaskFolder(context.directory, context.spec, task);
+  if (ReadFile(folder / kVariantFile) != context.identities[task]) return std::nullopt;
+  std::istringstream row(ReadFile(folder / kRowFile));
+  std::string header, line;
+  if (!std::getline(row, header) || header != context.header || !std::getline(row, line)) {
+    return std::nullopt;
+  }
+  return line;
+}
+
+void WritePositions(const fs::path& path, const std::vector<double>& positions) {
+  WriteAtomically(path, [&](std::ostream& out) {
+    for (const double x : positions) out << FormatNumber(x) << '\n';
+  });
+}
+
+// The final positions a finished task saved (17 digits: they read back exactly); empty if none.
+std::vector<double> ReadPositions(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<double> positions;
+  std::string line;
+  while (std::getline(in, line)) positions.push_back(std::strtod(line.c_str(), nullptr));
+  return positions;
+}
+
+// What one task gives back to the chain: its row, whether it is finished (saved), and its final
+// positions (the next task's warm start).
+struct TaskOutcome {
+  std::string kind;  // solved, failed (saved as a finished row), unsaved, interrupted
+  std::string row;
+  std::vector<double> positions;
+};
+
+void SaveRow(const Context& context, int task, const std::string& row) {
+  const fs::path folder = TaskFolder(context.directory, context.spec, task);
+  WriteAtomically(folder / kVariantFile,
+                  [&](std::ostream& out) { out << context.identities[task]; });
+  WriteAtomically(folder / kRowFile, [&](std::ostream& out) {
+    out << context.header << '\n' << row << '\n';
+  });
+}
+
+// Starts the model from `warm` (the previous task's final positions: free coordinates only, the
+// fixed ones as the scene says) when it fits; true if it did.
+bool WarmStart(const Scene& scene, const std::vector<double>* warm, Model* model) {
+  if (!warm || warm->size() != model->positions.size() || scene.solver.levels > 1) return false;
+  for (size_t k = 0; k < warm->size(); ++k) {
+    if (!model->fixed[k]) model->positions[k] = (*warm)[k];
+  }
+  return true;
+}
+
+TaskOutcome SolveTask(const Context& context, int task, const std::vector<double>* warm,
+                      int warm_from) {
+  const SweepSpec& spec = context.spec;
+  const std::string folder = TaskFolder(context.directory, spec, task);
+  const std::vector<std::string> overrides = TaskOverrides(spec, task);
+  const Scene scene = LoadScene(spec.scene_file, overrides);
+  Model model = BuildModel(scene);
+  ResultFolderLock lock(folder);  // throws if another run is writing this task
+  std::error_code ignored;
+  fs::remove(fs::path(folder) / kRowFile, ignored);  // unfinished from here on
+  const bool warmed = WarmStart(scene, warm, &model);
+  const SolveReport report = SolveAndReport(scene, model, scene.solver.method);
+  TaskOutcome outcome;
+  if (InterruptRequested()) {
+    outcome.kind = "interrupted";
+    outcome.row = CsvLine(FailedRow(spec, task, report.result.summary.termination));
+    return outcome;
+  }
+  WriteOutputs(
+      scene, model, report, folder,
+      Provenance{context.command_line + " (task " + std::to_string(task) + ")", overrides});
+  if (spec.warm_axis >= 0) WritePositions(fs::path(folder) / kPositionsFile, model.positions);
+  outcome.kind = "solved";
+  outcome.row = CsvLine(SolvedRow(spec, task, report, warmed ? warm_from : -1));
+  outcome.positions = model.positions;
+  SaveRow(context, task, outcome.row);
+  return outcome;
+}
+
+// A task whose scene fails (an InputError at build or solve time, e.g. a method that refuses the
+// model) is a failed row, saved: it would fail again, so a restart keeps it. Any other failure
+// (out of memory, a file that cannot be written, another run holding the folder) depends on the
+// moment: its row goes into sweep.csv but not into the folder, and a restart solves it again.
+TaskOutcome RunTask(const Context& context, int task, const std::vector<double>* warm,
+                    int warm_from) {
+  std::string why;
+  try {
+    return SolveTask(context, task, warm, warm_from);
+  } catch (const InputError& error) {
+    why = error.what();
+  } catch (const std::bad_alloc&) {
+    return {"unsaved", CsvLine(FailedRow(context.spec, task, "out of memory")), {}};
+  } catch (const std::exception& error) {
+    return {"unsaved", CsvLine(FailedRow(context.spec, task, error.what())), {}};
+  }
+  TaskOutcome outcome{"failed", CsvLine(FailedRow(context.spec, task, why)), {}};
+  try {
+    fs::create_directories(TaskFolder(context.directory, context.spec, task));
+    SaveRow(context, task, outcome.row);
+  } catch (const std::exception&) {
+    outcome.kind = "unsaved";
+  }
+  return outcome;
+}
+
+// One farm task: a chain's tasks in order, up to `last` (-1: all), each skipped if finished. The
+// result: one line per task, "kind task row".
+std::string RunChain(const Context& context, const std::vector<int>& chain, int last) {
+  std::string result;
+  std::vector<double> warm;  // the previous task's final positions
+  int previous = -1;
+  for (const int task : chain) {
+    TaskOutcome outcome;
+    if (const auto row = FinishedRow(context, task)) {
+      outcome = {"skipped", *row, {}};
+      if (context.spec.warm_axis >= 0) {
+        outcome.positions = ReadPositions(
+            fs::path(TaskFolder(context.directory, context.spec, task)) / kPositionsFile);
+      }
+    } else if (InterruptRequested()) {
+      outcome = {
+          "interrupted", CsvLine(FailedRow(context.spec, task, "not run (interrupted)")), {}};
+    } else {
+      outcome = RunTask(context, task, previous >= 0 && !warm.empty() ? &warm : nullptr, previous);
+    }
+    result += outcome.kind + " " + std::to_string(task) + " " + outcome.row + "\n";
+    warm = std::move(outcome.positions);
+    previous = task;
+    if (task == last) break;
+  }
+  return result;
+}
+
+// ---- the coordinator's table --------------------------------------------------------------------
+
+class SweepTable {
+ public:
+  SweepTable(const Context& context, std::ostream& log) : context_(context), log_(log) {
+    for (int task = 0; task < static_cast<int>(context.spec.tasks.size()); ++task) {
+      if (const auto row = FinishedRow(context, task)) rows_[task] = *row;
+    }
+  }
+
+  void Collect(const std::string& result, SweepSummary* summary) {
+    std::istringstream lines(result);
+    std::string kind, line;
+    int task = 0;
+    while (lines >> kind >> task && std::getline(lines, line)) {
+      line.erase(0, 1);
+      if (kind == "skipped") ++summary->skipped;
+      if (kind == "interrupted") summary->interrupted = true;
+      if (kind == "interrupted" || kind == "skipped") continue;
+      rows_[task] = line;
+      if (kind == "solved") ++summary->solved;
+      ++done_;
+      Progress(task, line);
+    }
+    Write();
+  }
+
+  void Write() const {
+    WriteAtomically(fs::path(context_.directory) / "sweep.csv", [&](std::ostream& out) {
+      out << context_.header << '\n';
+      for (const auto& [task, row] : rows_) out << row << '\n';
+    });
+  }
+
+  const std::map<int, std::string>& rows() const { return rows_; }
+
+ private:
+  // "sweep: task 7 (3 done): converged, 42 iterations, 1.2 s, energy ..., DC 0.65, warm from 6".
+  void Progress(int task, const std::string& line) const {
+    const std::vector<std::string> cells = SplitCsvLine(line);
+    const size_t at = cells.size() - kResultColumns.size();
+    auto cell = [&](const char* name) {
+      for (size_t k = 0; k < kResultColumns.size(); ++k) {
+        if (kResultColumns[k] == name) return cells[at + k];
+      }
+      return std::string();
+    };
+    log_ << "sweep: task " << task << " (" << done_
+         << " done this run): " << (cell("converged") == "yes" ? "converged" : "not converged")
+         << ", " << (cell("iterations").empty() ? "" : cell("iterations") + " iterations, ")
+         << (cell("time_s").empty() ? "" : cell("time_s") + " s, ")
+         << (cell("drape_coefficient").empty()
+                 ? ""
+                 : "DC " +
+                       FormatNumber(std::strtod(cell("drape_coefficient").c_str(), nullptr), 4) +
+                       ", ")
+         << cell("stop_reason")
+         << (cell("warm_start_from").empty() ? "" : ", warm from task " + cell("warm_start_from"))
+         << std::endl;
+  }
+
+  const Context& context_;
+  std::ostream& log_;
+  std::map<int, std::string> rows_;
+  int done_ = 0;
+};
+
+// The farm's tasks: the chains to run (with --only, the one holding that task).
+std::vector<int> FarmTasks(const SweepSpec& spec, const SweepOptions& options) {
+  if (options.only) return {ChainOf(spec, *options.only)};
+  std::vector<int> chains(spec.chains.size());
+  for (int c = 0; c < static_cast<int>(chains.size()); ++c) chains[c] = c;
+  return chains;
+}
+
+void CountRows(const SweepTable& table, SweepSummary* summary) {
+  summary->rows = static_cast<int>(table.rows().size());
+  for (const auto& [task, row] : table.rows()) {
+    const auto cells = SplitCsvLine(row);
+    if (cells[cells.size() - kResultColumns.size()] == "yes") {
+      ++summary->converged;
+      summary->converged_tasks.insert(task);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> SweepColumns(const SweepSpec& spec) {
+  std::vector<std::string> columns = {"task"};
+  for (const SweepKey& key : spec.keys) columns.push_back(key.key);
+  if (spec.repeat > 1) columns.push_back("repeat");
+  columns.insert(columns.end(), kResultColumns.begin(), kResultColumns.end());
+  return columns;
+}
+
+std::string TaskFolder(const std::string& directory, const SweepSpec& spec, int task) {
+  const int width = std::max(4, static_cast<int>(std::to_string(spec.tasks.size() - 1).size()));
+  std::string number = std::to_string(task);
+  number.insert(0, static_cast<size_t>(std::max(0, width - static_cast<int>(number.size()))), '0');
+  return (fs::path(directory) / "tasks" / number).string();
+}
+
+std::vector<std::string> TaskIdentities(const SweepSpec& spec) {
+  // The base scene by its name and its text (not its full path: a sweep folder moved with its
+  // scene, e.g. onto a cluster, keeps its finished tasks).
+  const std::string scene = "scene: " + fs::path(spec.scene_file).filename().string() +
+                            "\nscene_fingerprint: " + Fingerprint(ReadFile(spec.scene_file)) + "\n";
+  std::vector<std::string> identities(spec.tasks.size());
+  for (const auto& chain : spec.chains) {  // in chain order: a task's source comes before it
+    for (const int task : chain) {
+      std::string text = "drape sweep task " + std::to_string(task) + "\n" + scene;
+      for (const std::string& set : TaskOverrides(spec, task)) text += "set: " + set + "\n";
+      text += "repeat: " + std::to_string(spec.tasks[task].repeat) + "\n";
+      const int source = WarmStartSource(spec, task);
+      text += "warm_start_from: " +
+              (source < 0 ? std::string("none")
+                          : std::to_string(source) + " " + Fingerprint(identities[source])) +
+              "\n";
+      identities[task] = text;
+    }
+  }
+  return identities;
+}
+
+std::vector<std::string> SplitCsvLine(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (size_t k = 0; k < line.size(); ++k) {
+    const char c = line[k];
+    if (quoted && c == '"' && k + 1 < line.size() && line[k + 1] == '"') {
+      cells.back() += '"';
+      ++k;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
+SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::ostream& log) {
+  RunLibrariesOnOneThread();  // one thread per task for CHOLMOD and OpenBLAS, unless the user says
+  SweepSummary summary;
+  summary.directory = options.out.empty() ? spec.output_directory : options.out;
+  summary.tasks = static_cast<int>(spec.tasks.size());
+  CheckOutputWritable(summary.directory);     // before any solve; it leaves no folder behind
+  fs::create_directories(summary.directory);  // sweep.csv is written even if no task finishes
+  const Context context{spec, summary.directory, options.command_line, CsvLine(SweepColumns(spec)),
+                        TaskIdentities(spec)};
+  SweepTable table(context, log);
+  const int last = options.only ? *options.only : -1;
+  TaskFarmOptions farm_options;
+  farm_options.local_threads = options.threads;
+  const TaskFarmSummary farm = RunTaskFarm(
+      FarmTasks(spec, options),
+      [&](int chain) { return RunChain(context, spec.chains[chain], last); },
+      [&](int /*chain*/, const std::string& result) { table.Collect(result, &summary); },
+      farm_options);
+  summary.coordinator = farm.coordinator;
+  summary.workers = farm.workers;
+  if (!farm.coordinator) return summary;
+  table.Write();
+  WriteAtomically(fs::path(summary.directory) / "sweep.yaml",
+                  [&](std::ostream& out) { out << ReadFile(spec.file); });
+  CountRows(table, &summary);
+  if (options.plots && !options.only) WriteSweepReport(spec, summary.directory, log);
+  return summary;
+}
+
+}  // namespace drape

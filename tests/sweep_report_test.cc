@@ -1,0 +1,88 @@
+// sweep.html and its plots: each response against each varied key, a heat map for a grid of two
+// axes, no NaN anywhere (missing values are skipped).
+#include "src/sweep/sweep_report.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "tests/sweep_test_support.h"
+
+namespace drape::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool HaveGnuplot() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+
+// Runs the sweep with its report into `folder`/out.
+void SweepWithReport(const std::string& folder, const std::string& text) {
+  const SweepSpec spec = LoadSweepFile(WriteSweep(folder, text));
+  SweepOptions options;
+  options.out = folder + "/out";
+  options.threads = 1;
+  std::ostringstream log;
+  RunSweep(spec, options, log);
+  EXPECT_EQ(log.str().find("could not draw"), std::string::npos) << log.str();
+}
+
+void ExpectNoNan(const fs::path& folder) {
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    const auto extension = entry.path().extension();
+    if (extension != ".csv" && extension != ".dat" && extension != ".html") continue;
+    const std::string text = ReadText(entry.path().string());
+    EXPECT_EQ(text.find("nan"), std::string::npos) << entry.path();
+    EXPECT_EQ(text.find("inf"), std::string::npos) << entry.path();
+  }
+}
+
+TEST(SweepReport, EveryResponseAgainstEveryKeyAndAHeatMapForTwoAxes) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const std::string folder = SweepTempDir("report");
+  SweepWithReport(folder, R"(scene: base.yaml
+set: {mesh.spacing: 0.05}
+grid:
+  material.finite_volume.kes.B_warp: [0.06, 0.24]
+  material.finite_volume.kes.W: [8.0, 16.0]
+)");
+  const fs::path out = folder + "/out";
+  const std::string html = ReadText((out / "sweep.html").string());
+  int images = 0;
+  for (const char* response : {"drape_coefficient", "energy_J", "iterations", "time_s"}) {
+    for (const char* key : {"material_finite_volume_kes_B_warp", "material_finite_volume_kes_W"}) {
+      const std::string png = std::string("plots/") + response + "__" + key + ".png";
+      EXPECT_TRUE(fs::exists(out / png)) << png;
+      EXPECT_NE(html.find("src=\"" + png + "\""), std::string::npos) << png;
+      ++images;
+    }
+  }
+  EXPECT_EQ(images, 8);
+  EXPECT_TRUE(fs::exists(out / "plots/drape_coefficient__map.png"));
+  EXPECT_NE(html.find("plots/drape_coefficient__map.png"), std::string::npos);
+  EXPECT_NE(html.find("<td>0.24</td>"), std::string::npos);  // the table of rows
+  ExpectNoNan(out);
+}
+
+TEST(SweepReport, MissingValuesAreEmptyCellsAndSkippedByThePlots) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const std::string folder = SweepTempDir("report_missing");
+  // puiseux-fixed-point refuses the finite-volume fabric: those tasks have no results.
+  SweepWithReport(folder, R"(scene: base.yaml
+set: {mesh.spacing: 0.05}
+zip:
+  solver.method: [newton, puiseux-fixed-point, newton]
+  material.finite_volume.kes.W: [8.0, 12.0, 16.0]
+)");
+  const fs::path out = folder + "/out";
+  EXPECT_TRUE(fs::exists(out / "plots/drape_coefficient__material_finite_volume_kes_W.png"));
+  EXPECT_FALSE(fs::exists(out / "plots/drape_coefficient__map.png"));  // one axis: no map
+  const std::string data = ReadText((out / "plots/data/rows.dat").string());
+  EXPECT_NE(data.find('?'), std::string::npos) << data;
+  ExpectNoNan(out);
+}
+
+}  // namespace
+}  // namespace drape::testing
