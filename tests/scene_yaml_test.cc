@@ -65,18 +65,20 @@ TEST(SceneYaml, EveryConfigRoundTrips) {
 
 // Springs beside a finite-volume fabric, spring lines and regions (every kind of key, the row,
 // column and outside selectors, a region's name), loads on a region by name, traction and pressure
-// are written back, and the scene they load into builds the same
-// model: the same terms, masses and energy at a perturbed configuration.
+// are written back, and the scene they load into builds the same model: the same terms, masses
+// and energy at a perturbed configuration.
 TEST(SceneYaml, HoldsSpringsLinesAndRegions) {
+  const std::string regions =
+      "regions=[{nodes: {column: 3}, D_warp: 3.0e-5, nu_warp: 0.1, structural: {warp: 50, weft: "
+      "40}, tension_only: false}, {nodes: {outside: {center: [0, 0, 0], radius: 0.15}}, "
+      "density: 0.3, name: rim}]";
+  const std::string forces =
+      "loads.forces=[{nodes: {region: rim}, pressure: -1.5}, {nodes: {all: true}, traction: [0, "
+      "0.5, 0]}]";
   const Scene scene = testing::LoadConfig(
       "configs/fv/square_table_seam.yaml",
       {"mesh.nodes=[9, 9]", "material.springs={structural: 100, shear: 20, tension_only: true}",
-       "material.lines[0].nodes={row: 4}",
-       "regions=[{nodes: {column: 3}, D_warp: 3.0e-5, nu_warp: 0.1, structural: {warp: 50, weft: "
-       "40}, tension_only: false}, {nodes: {outside: {center: [0, 0, 0], radius: 0.15}}, "
-       "density: 0.3, name: rim}]",
-       "loads.forces=[{nodes: {region: rim}, pressure: -1.5}, {nodes: {all: true}, traction: [0, "
-       "0.5, 0]}]"});
+       "material.lines[0].nodes={row: 4}", regions, forces});
   const Scene again = RoundTrip(scene, "combined");
   EXPECT_EQ(SceneText(again), SceneText(scene));
   ASSERT_EQ(again.regions.size(), 2u);
