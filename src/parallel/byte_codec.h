@@ -60,6 +60,7 @@ class ByteReader {
   }
   void Take(void* data, size_t size) {
     if (offset_ + size > bytes_.size()) throw std::logic_error("ByteReader: read past the end");
+    if (size == 0) return;  // an empty vector's data() may be null, which memcpy must not get
     std::memcpy(data, bytes_.data() + offset_, size);
     offset_ += size;
   }
