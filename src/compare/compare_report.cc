@@ -22,6 +22,7 @@
 #include "src/compare/plot_scripts.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
+#include "src/output/csv_field.h"
 #include "src/output/json.h"
 
 namespace drape {
@@ -51,14 +52,6 @@ std::string Slug(const std::string& name) {
   std::string slug;
   for (char c : name) slug += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
   return slug.empty() ? "scene" : slug;
-}
-
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text)
-    quoted += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return quoted + "\"";
 }
 
 std::string CommandOutput(const std::string& command) {

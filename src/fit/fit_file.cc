@@ -16,6 +16,7 @@
 #include "src/model/mesh_file.h"
 #include "src/model/model.h"
 #include "src/output/json.h"
+#include "src/scene/file_paths.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
 
@@ -23,17 +24,6 @@ namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Resolve(const std::string& directory, const std::string& path) {
-  const fs::path given(path);
-  if (given.is_absolute()) return given.lexically_normal().string();
-  return (fs::path(directory) / given).lexically_normal().string();
-}
-
-std::string DirectoryOf(const std::string& path) {
-  const std::string directory = fs::path(path).parent_path().string();
-  return directory.empty() ? "." : directory;
-}
 
 // ------------------------------------------------------------------------------- data files
 
@@ -211,7 +201,7 @@ FitMeasurement ReadMeasurementKind(const std::string& kind, const YamlValue& val
   } else {
     const YamlMap map(value, {"file", "weight", "sigma"});
     const YamlValue file = map.Get("file");
-    measurement.file = Resolve(directory, ReadString(file));
+    measurement.file = ResolvePath(directory, ReadString(file));
     if (kind == "positions") {
       measurement.kind = FitMeasurement::Kind::kPositions;
       measurement.positions = ReadPositionFile(measurement.file, file.where);
@@ -249,10 +239,10 @@ FitSpecimen ReadSpecimen(const YamlMap& item, const std::string& directory) {
     if (measurements)
       Fail(*measurements, "give the measurements inside scene: {file, measurements}");
     const YamlMap map(scene, {"file", "measurements"});
-    specimen.scene_file = Resolve(directory, ReadString(map.Get("file")));
+    specimen.scene_file = ResolvePath(directory, ReadString(map.Get("file")));
     measurements.emplace(map.Get("measurements"));  // not operator= (clang-tidy: it may throw)
   } else {
-    specimen.scene_file = Resolve(directory, ReadString(scene));
+    specimen.scene_file = ResolvePath(directory, ReadString(scene));
     if (!measurements) {
       Fail(scene,
            "another specimen needs its own measurements: add `measurements: [...]` to this "
@@ -374,7 +364,7 @@ void ReadTop(const YamlValue& root, FitSpec* spec) {
   const std::string directory = DirectoryOf(spec->file);
   FitSpecimen main;
   main.where = top.Get("scene").where;
-  main.scene_file = Resolve(directory, ReadString(top.Get("scene")));
+  main.scene_file = ResolvePath(directory, ReadString(top.Get("scene")));
   spec->parameters = ReadParameters(top.Get("parameters"));
   std::vector<FitSpecimen> others;
   main.measurements = ReadMeasurements(top.Get("measurements"), directory, &others, false);
@@ -388,13 +378,13 @@ void ReadTop(const YamlValue& root, FitSpec* spec) {
     spec->max_evaluations = ReadIntAtLeast(*count, 1);
   if (const auto tolerance = top.Find("tolerance")) spec->tolerance = ReadPositive(*tolerance);
   // Like a scene's output.directory: relative to the fit file's folder.
-  spec->output_directory = Resolve(directory, "out/" + spec->name);
+  spec->output_directory = ResolvePath(directory, "out/" + spec->name);
   if (const auto output = top.Find("output")) {
     const YamlMap map(*output, {"directory"});
     if (const auto folder = map.Find("directory")) {
       const std::string given = ReadString(*folder);
       if (given.empty()) Fail(*folder, "expected a folder, got nothing");
-      spec->output_directory = Resolve(directory, given);
+      spec->output_directory = ResolvePath(directory, given);
     }
   }
 }

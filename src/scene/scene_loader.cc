@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "src/scene/fabric_parameters.h"
+#include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
@@ -43,13 +44,6 @@ std::string JoinNames(const std::vector<std::string>& names) {
   std::string text;
   for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
   return text;
-}
-
-// "a/b.yaml" + "x" → "a/x"; absolute paths stay as they are.
-std::string Resolve(const std::string& directory, const std::string& path) {
-  const fs::path given(path);
-  if (given.is_absolute()) return given.lexically_normal().string();
-  return (fs::path(directory) / given).lexically_normal().string();
 }
 
 // ------------------------------------------------------------------------------------ mesh
@@ -254,7 +248,7 @@ MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory) {
       const YamlValue path = map.Get("path");
       const std::string given = ReadString(path);
       if (given.empty()) Fail(path, "expected the path of an OBJ or PLY file, got nothing");
-      spec.path = Resolve(scene_directory, given);
+      spec.path = ResolvePath(scene_directory, given);
       break;
     }
   }
@@ -957,11 +951,11 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
   const YamlMap map(value, {"directory", "write", "obj_up"});
   OutputSpec output;
   output.where = value.where;
-  output.directory = Resolve(scene.directory, "out/" + scene.name);
+  output.directory = ResolvePath(scene.directory, "out/" + scene.name);
   if (const auto directory = map.Find("directory")) {
     const std::string given = ReadString(*directory);
     if (given.empty()) Fail(*directory, "expected a folder, got nothing");
-    output.directory = Resolve(scene.directory, given);
+    output.directory = ResolvePath(scene.directory, given);
   }
   if (const auto write = map.Find("write")) {
     if (!write->get().IsSequence()) {
@@ -1068,8 +1062,7 @@ void ReadScene(const YamlValue& root, Scene* scene) {
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides) {
   Scene scene;
   scene.file = path;
-  scene.directory = fs::path(path).parent_path().string();
-  if (scene.directory.empty()) scene.directory = ".";
+  scene.directory = DirectoryOf(path);
   scene.name = fs::path(path).stem().string();
   scene.root = Location{path, 1, 1, ""};
   YAML::Node document = ReadYamlFile(path, "scene file");

@@ -14,6 +14,7 @@
 #include "src/model/model.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
+#include "src/output/csv_field.h"
 #include "src/output/json.h"
 #include "src/output/result_folder.h"
 #include "src/output/writers.h"
@@ -39,14 +40,6 @@ const std::vector<std::string> kResultColumns = {"converged",         "stop_reas
                                                  "max_node_force_N",  "stable",
                                                  "drape_coefficient", "folds",
                                                  "certificate",       "warm_start_from"};
-
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text)
-    quoted += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return quoted + "\"";
-}
 
 std::string CsvLine(const std::vector<std::string>& cells) {
   std::string line;

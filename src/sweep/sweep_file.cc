@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "src/output/json.h"
+#include "src/scene/file_paths.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
 #include "src/sweep/sampling.h"
@@ -23,17 +24,6 @@ const std::vector<std::string> kTopKeys = {"scene",  "set",        "grid", "zip"
                                            "repeat", "warm_start", "keep", "output"};
 const std::vector<std::string> kKeepKinds = {"summary", "shape", "pictures", "history", "profile"};
 const std::vector<std::string> kSampleMethods = {"latin-hypercube", "sobol"};
-
-std::string Resolve(const std::string& directory, const std::string& path) {
-  const fs::path given(path);
-  if (given.is_absolute()) return given.lexically_normal().string();
-  return (fs::path(directory) / given).lexically_normal().string();
-}
-
-std::string DirectoryOf(const std::string& path) {
-  const std::string directory = fs::path(path).parent_path().string();
-  return directory.empty() ? "." : directory;
-}
 
 // A value as one line of YAML (flow style): what `--set key=...` takes back.
 SweepValue ValueOf(const YamlValue& value) {
@@ -294,7 +284,7 @@ void ReadScene(const YamlMap& top, SweepSpec* spec) {
   spec->scene_where = scene.where;
   const std::string given = ReadString(scene);
   if (given.empty()) Fail(scene, "expected the base scene's file name");
-  spec->scene_file = Resolve(DirectoryOf(spec->file), given);
+  spec->scene_file = ResolvePath(DirectoryOf(spec->file), given);
   std::error_code error;
   if (!fs::is_regular_file(spec->scene_file, error)) {
     Fail(scene, "cannot read the scene file " + spec->scene_file + ": " +
@@ -352,13 +342,13 @@ void ReadTop(const YamlValue& root, SweepSpec* spec) {
   if (const auto warm = top.Find("warm_start")) ReadWarmStart(*warm, spec);
   if (const auto keep = top.Find("keep")) ReadKeep(*keep, spec);
   spec->output_directory =
-      Resolve(DirectoryOf(spec->file), "out/" + fs::path(spec->file).stem().string());
+      ResolvePath(DirectoryOf(spec->file), "out/" + fs::path(spec->file).stem().string());
   if (const auto output = top.Find("output")) {
     const YamlMap map(*output, {"directory"});
     if (const auto folder = map.Find("directory")) {
       const std::string given = ReadString(*folder);
       if (given.empty()) Fail(*folder, "expected a folder, got nothing");
-      spec->output_directory = Resolve(DirectoryOf(spec->file), given);
+      spec->output_directory = ResolvePath(DirectoryOf(spec->file), given);
     }
   }
   MakeChains(spec);

@@ -1,0 +1,14 @@
+#include "src/output/csv_field.h"
+
+namespace drape {
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+  }
+  return quoted + "\"";
+}
+
+}  // namespace drape

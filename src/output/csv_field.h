@@ -1,0 +1,16 @@
+// One field of a CSV line, quoted only where it must be: one rule for every CSV drape writes from
+// free text (scene names, terminations, reasons).
+#ifndef DRAPE_SRC_OUTPUT_CSV_FIELD_H_
+#define DRAPE_SRC_OUTPUT_CSV_FIELD_H_
+
+#include <string>
+
+namespace drape {
+
+// `text` as it is when it holds no comma, quote or line break; else in double quotes, with each
+// quote doubled and each line break turned into a space (one record per line).
+std::string CsvField(const std::string& text);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_OUTPUT_CSV_FIELD_H_
