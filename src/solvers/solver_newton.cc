@@ -24,6 +24,10 @@
 //       succeed, μ and r fall, dt grows without bound and the method becomes Newton's, with
 //       quadratic convergence (λ = O(‖g‖) keeps it quadratic even where H is singular, as for a
 //       sheet turning freely about one support).
+// H₊ is assembled only where it is used: at the start (for s), while H is blocked, and when H
+// fails to factorise (the iterate is then assembled again, with H₊); the iterates are the same
+// as with H₊ assembled at every iteration, and an iteration whose H factorises skips the terms'
+// projections (statistics: projected_assemblies).
 // The step is accepted by a backtracking (Armijo) line search on the true energy; a trial point
 // whose energy is not finite is never accepted, the step is shortened instead. When the full step
 // is accepted, it is doubled (up to 4 times) while the energy keeps falling: H₊ overstates the
@@ -51,6 +55,8 @@
 namespace drape {
 
 namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The options' defaults and ranges are in the catalogue (src/scene/solver_methods.cc).
 struct NewtonSettings {
@@ -101,7 +107,7 @@ class Stopwatch {
 struct Counters {
   int factorizations = 0, failed_factorizations = 0, energy_evaluations = 0;
   int exact_hessian_steps = 0, line_search_failures = 0, projected_terms = 0;
-  int saddle_escapes = 0;
+  int saddle_escapes = 0, projected_assemblies = 0;
   double assembly_s = 0.0, factorization_s = 0.0, solve_s = 0.0, line_search_s = 0.0;
 };
 
@@ -162,6 +168,7 @@ class NewtonIteration {
   bool Step(double residual);
   bool ResidualFalls(const double* trial);
   void AdaptRegularization();
+  bool EnsureProjected();
   bool ComputeStep(bool exact, double residual, std::vector<double>* step);
   bool LineSearch(const std::vector<double>& step, double* alpha);
   bool EscapeSaddle();
@@ -181,6 +188,7 @@ class NewtonIteration {
   double full_step_gain_ = 0.0;
   double growth_ = 2.0;
   double last_residual_ = std::numeric_limits<double>::infinity();
+  bool projected_ready_ = false;  // H₊ assembled at the current iterate
   double WeightedSquaredNorm(const std::vector<double>& v) const {
     double sum = 0.0;
     for (size_t k = 0; k < v.size(); ++k) sum += v[k] * v[k] * weights_[k];
@@ -202,13 +210,19 @@ void NewtonIteration::Run() {
       hessian_.set_eigenvalue_filter(last_residual_ > settings_.absolute_projection_above
                                          ? EigenvalueFilter::kAbsolute
                                          : EigenvalueFilter::kClamp);
-      evaluable = hessian_.Assemble(model_.positions.data(), true, &assembly_, &gradient_);
+      // H₊ only where it will (or may first) be used: at the start (the stiffness scale), and
+      // while H is blocked; otherwise Step() assembles it when H fails to factorise.
+      projected_ready_ = iteration == 0 || exact_blocked_above_ < kInfinity ||
+                         settings_.exact_hessian_residual < kInfinity;
+      evaluable =
+          hessian_.Assemble(model_.positions.data(), projected_ready_, &assembly_, &gradient_);
     }
     if (!evaluable) {
       monitor_.Stop("energy, gradient or Hessian not finite at the iterate");
       return;
     }
-    counters_.projected_terms = assembly_.projected_terms;
+    if (projected_ready_) counters_.projected_terms = assembly_.projected_terms;
+    counters_.projected_assemblies += projected_ready_;
     const double residual = RelativeResidual(model_, gradient_);
     last_residual_ = residual;
     // A saddle is not an answer: where the residual is met but the true Hessian is indefinite,
@@ -269,7 +283,19 @@ void NewtonIteration::AdaptRegularization() {
   }
 }
 
+// Assembles H₊ at the iterate if this iteration's assembly left it out (the same energy and
+// gradient come again). False if not evaluable.
+bool NewtonIteration::EnsureProjected() {
+  if (projected_ready_) return true;
+  Stopwatch watch(&counters_.assembly_s);
+  projected_ready_ = hessian_.Assemble(model_.positions.data(), true, &assembly_, &gradient_);
+  counters_.projected_terms = assembly_.projected_terms;
+  ++counters_.projected_assemblies;
+  return projected_ready_;
+}
+
 bool NewtonIteration::ComputeStep(bool exact, double residual, std::vector<double>* step) {
+  if (!exact && !EnsureProjected()) return false;
   const double lambda = mu_ * stiffness_scale_ * std::min(1.0, residual);
   last_lambda_ = lambda;
   std::vector<double> shift(weights_.size());
@@ -432,6 +458,7 @@ class NewtonSolver : public Solver {
         {"saddle_escapes", c.saddle_escapes},
         {"line_search_failures", c.line_search_failures},
         {"projected_terms_last", c.projected_terms},
+        {"projected_assemblies", c.projected_assemblies},
         {"factor_nonzeros", newton.factor_nonzeros()},
         {"assembly_s", c.assembly_s},
         {"factorization_s", c.factorization_s},
