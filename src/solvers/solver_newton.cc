@@ -24,10 +24,10 @@
 //       succeed, μ and r fall, dt grows without bound and the method becomes Newton's, with
 //       quadratic convergence (λ = O(‖g‖) keeps it quadratic even where H is singular, as for a
 //       sheet turning freely about one support).
-// H₊ is assembled only where it is used: at the start (for s), while H is blocked, and when H
-// fails to factorise (the iterate is then assembled again, with H₊); the iterates are the same
-// as with H₊ assembled at every iteration, and an iteration whose H factorises skips the terms'
-// projections (statistics: projected_assemblies).
+// H₊ is assembled only where it is used: at the start (for s), and for a step with H₊ (H blocked,
+// or failed to factorise): the iterate is then assembled again, with H₊. The iterates are the
+// same as with H₊ assembled at every iteration, and an iteration whose H factorises skips the
+// terms' projections (statistics: projected_assemblies).
 // The step is accepted by a backtracking (Armijo) line search on the true energy; a trial point
 // whose energy is not finite is never accepted, the step is shortened instead. When the full step
 // is accepted, it is doubled (up to 4 times) while the energy keeps falling: H₊ overstates the
@@ -55,8 +55,6 @@
 namespace drape {
 
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The options' defaults and ranges are in the catalogue (src/scene/solver_methods.cc).
 struct NewtonSettings {
@@ -210,10 +208,10 @@ void NewtonIteration::Run() {
       hessian_.set_eigenvalue_filter(last_residual_ > settings_.absolute_projection_above
                                          ? EigenvalueFilter::kAbsolute
                                          : EigenvalueFilter::kClamp);
-      // H₊ only where it will (or may first) be used: at the start (the stiffness scale), and
-      // while H is blocked; otherwise Step() assembles it when H fails to factorise.
-      projected_ready_ = iteration == 0 || exact_blocked_above_ < kInfinity ||
-                         settings_.exact_hessian_residual < kInfinity;
+      // H₊ only where it is used: at the start (the stiffness scale); otherwise ComputeStep
+      // assembles it for a step that needs it (H blocked or failed to factorise), so that no
+      // H₊ is assembled for an iteration whose exact step succeeds.
+      projected_ready_ = iteration == 0;
       evaluable =
           hessian_.Assemble(model_.positions.data(), projected_ready_, &assembly_, &gradient_);
     }
