@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cstdlib>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -144,7 +145,8 @@ bool EvaluateTerm(const Term& term, const double* positions, EigenvalueFilter fi
                   double* energy, double* gradient, double* hessian, double* projected,
                   bool* changed) {
   *changed = false;
-  if (projected != nullptr && term.HasStagedProjection()) {
+  static const bool kNoStagedExperiment = std::getenv("DRAPE_NO_STAGED") != nullptr;  // TEMP
+  if (projected != nullptr && term.HasStagedProjection() && !kNoStagedExperiment) {
     return term.EnergyHessianProjected(positions, filter, energy, gradient, hessian, projected,
                                        changed);
   }
