@@ -2,7 +2,6 @@
 
 #include <Eigen/Core>
 #include <algorithm>
-#include <cstdlib>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -145,8 +144,7 @@ bool EvaluateTerm(const Term& term, const double* positions, EigenvalueFilter fi
                   double* energy, double* gradient, double* hessian, double* projected,
                   bool* changed) {
   *changed = false;
-  static const bool kNoStagedExperiment = std::getenv("DRAPE_NO_STAGED") != nullptr;  // TEMP
-  if (projected != nullptr && term.HasStagedProjection() && !kNoStagedExperiment) {
+  if (projected != nullptr && term.HasStagedProjection()) {
     return term.EnergyHessianProjected(positions, filter, energy, gradient, hessian, projected,
                                        changed);
   }
