@@ -6,7 +6,6 @@
 
 #include "costs/energy_form.h"
 #include "costs/quadratic_form_factor.h"
-#include "costs/safe_math.h"
 
 namespace drape {
 
@@ -38,17 +37,36 @@ struct FvMembrane {
     assert(e1 > 0.0 && e2 * e1 >= e12 * e12 && g >= 0.0 && rest_a > 0.0 && rest_b > 0.0);
   }
 
-  // Nodes P, A (warp neighbour), B (weft neighbour).
+  // Nodes P, A (warp neighbour), B (weft neighbour). Written in two stages, so that the fast
+  // derivatives (src/model/fast_hessian.h) can chain them: the arms' Gram entries (quadratic in the
+  // coordinates), then the residuals as functions of those three numbers alone.
   template <typename T>
   bool operator()(const T* const p, const T* const a, const T* const b, T* residual) const {
+    T gram[3];
+    ArmGram(p, a, b, gram);
+    return Residuals(gram, residual);
+  }
+
+  // The Gram entries of the arms u = A − P, v = B − P: u·u, v·v, u·v (m²).
+  template <typename T>
+  static void ArmGram(const T* p, const T* a, const T* b, T* gram) {
+    const T u[3] = {a[0] - p[0], a[1] - p[1], a[2] - p[2]};
+    const T v[3] = {b[0] - p[0], b[1] - p[1], b[2] - p[2]};
+    gram[0] = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    gram[1] = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    gram[2] = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  }
+
+  // The residuals from the Gram entries: |u| = √(u·u), |v| = √(v·v), sin γ = u·v/(|u||v|).
+  template <typename T>
+  bool Residuals(const T* gram, T* residual) const {
     using std::asin;
-    const T da = SafeDistance(p, a), db = SafeDistance(p, b);
-    if (!(da > 0.0) || !(db > 0.0)) return false;
+    using std::sqrt;
+    if (!(gram[0] > 0.0) || !(gram[1] > 0.0)) return false;  // an arm of zero length
+    const T da = sqrt(gram[0]), db = sqrt(gram[1]);
     const T strain_a = (da - rest_a) / rest_a;
     const T strain_b = (db - rest_b) / rest_b;
-    const T dot = (a[0] - p[0]) * (b[0] - p[0]) + (a[1] - p[1]) * (b[1] - p[1]) +
-                  (a[2] - p[2]) * (b[2] - p[2]);
-    const T cosine = dot / (da * db);
+    const T cosine = gram[2] / (da * db);
     if (!(cosine < 1.0) || !(cosine > -1.0)) return false;  // arms parallel: no quarter left
     const T shear = asin(cosine);
     residual[0] = stretch.l11 * strain_a + stretch.l12 * strain_b;

@@ -88,6 +88,28 @@ TEST(FvBendingEdge, DerivativesMatchDifferencesAtRandomAndFlatStates) {
   testing::ExpectZeroForce(*term, {-0.02, 0, 0, 0, 0, 0, 0.03, 0, 0}, 1e-15);
 }
 
+// The staged projection (src/model/fast_hessian.h) at states where the exact Hessian is
+// indefinite: semidefinite, above H, H₊ = H where H is semidefinite (the shared check); and it
+// does change something at some of these states (the check is not vacuous) but not at rest.
+TEST(FvBending, StagedProjectionIsSemidefiniteAboveTheHessianAndExactWhereItCan) {
+  const auto internal = InternalVolume();
+  const auto edge = EdgeVolume();
+  int changed = 0, changed_edge = 0;
+  for (EigenvalueFilter filter : {EigenvalueFilter::kClamp, EigenvalueFilter::kAbsolute}) {
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+      changed += testing::ExpectStagedProjectionValid(
+          *internal, Perturbed(FlatStencil(0.02, 0.03), 0.012, seed), filter);
+      changed_edge += testing::ExpectStagedProjectionValid(
+          *edge, Perturbed({-0.02, 0, 0, 0, 0, 0, 0.02, 0, 0}, 0.012, seed), filter);
+    }
+    EXPECT_FALSE(testing::ExpectStagedProjectionValid(*internal, FlatStencil(0.02, 0.03), filter));
+    EXPECT_FALSE(
+        testing::ExpectStagedProjectionValid(*edge, {-0.02, 0, 0, 0, 0, 0, 0.02, 0, 0}, filter));
+  }
+  EXPECT_GT(changed, 0);
+  EXPECT_GT(changed_edge, 0);
+}
+
 // Three nodes on a polyline turning by φ: U = ½ D (2 tan(φ/2) / l)² A exactly (eq. 9.1: the
 // circle tangent to both arms), whatever the arm lengths.
 TEST(FvBendingEdge, EnergyIsThePapersCurvatureSquared) {

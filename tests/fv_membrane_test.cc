@@ -61,6 +61,25 @@ TEST(FvMembrane, DerivativesMatchDifferencesAtFlatRestState) {
   }
 }
 
+// The staged projection over the arms' Gram entries (src/model/fast_hessian.h): semidefinite,
+// above H, H₊ = H where H is semidefinite (the shared check). Compressed arms make H indefinite
+// (negative sideways curvature): then H₊ ≠ H; at rest and stretched, H₊ = H.
+TEST(FvMembrane, StagedProjectionIsSemidefiniteAboveTheHessianAndExactWhereItCan) {
+  const auto term = MakeTerm("fv_membrane", {0, 1, 2}, Quarter());
+  const std::vector<double> compressed = {0, 0, 0, 0.016, 0, 0.001, 0, 0.025, 0};
+  const std::vector<double> stretched = {0, 0, 0, 0.022, 0, 0, 0, 0.033, 0};
+  int changed = 0;
+  for (EigenvalueFilter filter : {EigenvalueFilter::kClamp, EigenvalueFilter::kAbsolute}) {
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+      changed += testing::ExpectStagedProjectionValid(*term, Perturbed(kRest, 0.008, seed), filter);
+    }
+    EXPECT_TRUE(testing::ExpectStagedProjectionValid(*term, compressed, filter));
+    EXPECT_FALSE(testing::ExpectStagedProjectionValid(*term, stretched, filter));
+    EXPECT_FALSE(testing::ExpectStagedProjectionValid(*term, kRest, filter));
+  }
+  EXPECT_GT(changed, 0);
+}
+
 TEST(FvMembrane, ZeroForceAtRestInAnyOrientation) {
   const auto term = MakeTerm("fv_membrane", {0, 1, 2}, Quarter());
   testing::ExpectZeroForce(*term, kRest, 1e-14);

@@ -64,6 +64,11 @@ TEST(Newton, HangsASheetFromTwoCornersAndReportsItsWork) {
   EXPECT_GE(summary.statistics.at("factorizations"), summary.iterations);
   EXPECT_GT(summary.statistics.at("energy_evaluations"), 0);
   EXPECT_GT(summary.statistics.at("assembly_s"), 0.0);
+  // H₊ is assembled at the start and then only for the steps that use it (not for the exact ones).
+  const double projected = summary.statistics.at("projected_assemblies");
+  EXPECT_GE(projected, 1.0);
+  EXPECT_LE(projected, 1.0 + summary.statistics.at("factorizations") -
+                           summary.statistics.at("exact_hessian_steps"));
   // Energy goes down monotonically (up to rounding) along the history.
   for (size_t k = 1; k < summary.history.size(); ++k) {
     EXPECT_LE(summary.history[k].energy, summary.history[k - 1].energy + 1e-12);

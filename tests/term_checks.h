@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
 #include <random>
@@ -44,12 +45,62 @@ inline void ExpectHessianMatchesReference(const Term& term, const std::vector<do
   }
 }
 
+// A term's staged projection (Term::EnergyHessianProjected, src/model/fast_hessian.h), with
+// `filter`: the energy, gradient and Hessian are EnergyHessian's, bit for bit; the stand-in H₊ is
+// symmetric, positive semidefinite, never below H (H₊ − H ⪰ 0), keeps the translations in its
+// null space, and equals H exactly where H is semidefinite. Returns whether H₊ ≠ H (`changed`).
+inline bool ExpectStagedProjectionValid(const Term& term, const std::vector<double>& positions,
+                                        EigenvalueFilter filter) {
+  const int n = term.num_coordinates();
+  std::vector<double> gradient(n), hessian(n * n), g(n), h(n * n), projected(n * n);
+  double energy = 0.0, e = 0.0;
+  bool changed = false;
+  EXPECT_TRUE(term.HasStagedProjection());
+  EXPECT_TRUE(term.EnergyHessian(positions.data(), &energy, gradient.data(), hessian.data()));
+  EXPECT_TRUE(term.EnergyHessianProjected(positions.data(), filter, &e, g.data(), h.data(),
+                                          projected.data(), &changed));
+  EXPECT_EQ(e, energy);
+  EXPECT_TRUE(g == gradient);
+  EXPECT_TRUE(h == hessian);
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const Matrix exact = Eigen::Map<const Matrix>(hessian.data(), n, n);
+  const Matrix stand_in = Eigen::Map<const Matrix>(projected.data(), n, n);
+  const double scale = exact.cwiseAbs().maxCoeff() + 1e-300;
+  EXPECT_LT((stand_in - stand_in.transpose()).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  auto smallest = [](const Matrix& m) {
+    return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (m + m.transpose()))
+        .eigenvalues()
+        .minCoeff();
+  };
+  EXPECT_GT(smallest(stand_in), -1e-10 * scale);
+  EXPECT_GT(smallest(stand_in - exact), -1e-10 * scale);
+  for (int c = 0; c < 3; ++c) {
+    Eigen::VectorXd translation = Eigen::VectorXd::Zero(n);
+    for (int k = c; k < n; k += 3) translation[k] = 1.0;
+    EXPECT_LT((stand_in * translation).cwiseAbs().maxCoeff(), 1e-10 * scale);
+  }
+  const double least = smallest(exact);
+  if (least >= -1e-14 * scale) {
+    EXPECT_FALSE(changed);
+    EXPECT_TRUE(projected == hessian);
+  }
+  if (least < -1e-9 * scale) {
+    EXPECT_TRUE(changed);
+  }
+  return changed;
+}
+
 // Energy and its gradient/Hessian from the term agree with central differences of the energy
 // (and of the gradient), to `tolerance` relative to the largest entry; and the Hessian equals the
-// nested-Jet reference to 1e-10 (ExpectHessianMatchesReference). Every functor's test calls this.
+// nested-Jet reference to 1e-10 (ExpectHessianMatchesReference), and a staged projection, where
+// the term has one, passes ExpectStagedProjectionValid. Every functor's test calls this.
 inline void ExpectDerivativesMatchDifferences(const Term& term, std::vector<double> positions,
                                               double tolerance = 1e-6) {
   ExpectHessianMatchesReference(term, positions);
+  if (term.HasStagedProjection()) {
+    for (EigenvalueFilter filter : {EigenvalueFilter::kClamp, EigenvalueFilter::kAbsolute})
+      ExpectStagedProjectionValid(term, positions, filter);
+  }
   const int n = term.num_coordinates();
   std::vector<double> gradient(n), hessian(n * n), g_plus(n), g_minus(n);
   double energy = 0.0, energy_h = 0.0;

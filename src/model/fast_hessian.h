@@ -1,17 +1,38 @@
-// Fast exact energy, gradient and Hessian of the finite-volume bending functors, derived from the
+// Fast exact energy, gradient and Hessian of the finite-volume functors, derived from the
 // functors' own stages by the chain rule (the physics stays written once, in costs/).
 //
 // FvBending and FvBendingEdge compute their residuals in stages: curvature binormals (3 nodes
 // each), unit tangents (2 nodes each), sections (FvBending only: 6 numbers each) and residuals
-// linear in the last stage. Nested Jets over one whole 5-node functor carry 12 derivatives through
-// every operation; here each stage is differentiated on its own with the few variables it reads
-// (6 relative coordinates for a binormal, 3 for a tangent, 6 for a section), and the results are
-// chained: for E = ½|r|², r = L y(Q(x)),
+// linear in the last stage. FvMembrane computes the Gram entries of its two arms (quadratic in
+// the coordinates), then its residuals from those 3 numbers. Nested Jets over one whole functor
+// carry 6–12 derivatives through every operation; here each stage is differentiated on its own
+// with the few variables it reads (6 relative coordinates for a binormal, 3 for a tangent, 6 for
+// a section, 3 Gram entries), by second-order forward differentiation (second_order.h: value,
+// gradient and packed Hessian in one number), and the results are chained: for E = ½|r|², r = L
+// y(Q(x)),
 //   ∇E = J_Qᵀ g_Q,   ∇²E = J_Qᵀ H_Q J_Q + Σ_j g_Q,j ∇²Q_j,
 // where g_Q, H_Q are the gradient and Hessian of E over the intermediate values Q (themselves from
 // the chain rule through the sections and the constant matrix L, read off the functor's linear
 // residual stage by a first-order Jet). Every stage function is the functor's own; the results are
 // checked against the nested-Jet Hessian of the whole functor in tests/term_checks.h.
+//
+// Projection (StagedProjection, for the projected-Newton matrix H₊): a term whose exact local
+// Hessian is positive semidefinite (LDLᵀ, to 1e-12 of its largest entry) gives it unchanged.
+// Otherwise:
+//   FvMembrane, FvBendingEdge: the chain-rule sum is formed again with the Gauss–Newton part kept
+//     as it is (it is semidefinite) and each small curvature block made semidefinite on its own
+//     (psd_projection.h: negative eigenvalues clamped to zero, or replaced by their magnitudes):
+//     FvMembrane: ∇²φ over the Gram entries (3×3) and M (2×2, the Gram entries' own curvature);
+//     FvBendingEdge: the binormal's Σ g ∇²k (6×6). A sum of semidefinite blocks mapped by linear
+//     maps is semidefinite, and as each block only gains (B₊ − B ⪰ 0), H₊ − H ⪰ 0 too. H₊ is then
+//     not the nearest semidefinite matrix to H but a larger one (a compressed membrane arm of
+//     axial stiffness k keeps k·l/|u| > k along itself, where the whole term's projection would
+//     keep k); it replaces a 9×9 eigen-decomposition by a 3×3 and a 2×2 one.
+//   FvBending: the whole 15×15 local Hessian is projected (the nearest semidefinite matrix). The
+//     same block-wise construction (two 6×6 sections, two 6×6 binormals, two 3×3 tangents) was
+//     measured no cheaper than one 15×15 decomposition (docs/benchmarks.md).
+// tests/term_checks.h (ExpectStagedProjectionValid) checks H₊ ⪰ 0, H₊ − H ⪰ 0, translations in its
+// null space and H₊ = H where H ⪰ 0, for every finite-volume functor on every derivative check.
 //
 // FastHessian<Functor>::kAvailable says whether a functor has such a path (src/model/term.h uses
 // it in place of the nested Jets).
@@ -24,7 +45,10 @@
 #include <cmath>
 
 #include "costs/fv_bending.h"
+#include "costs/fv_membrane.h"
 #include "costs/nested_jet.h"
+#include "src/model/psd_projection.h"
+#include "src/model/second_order.h"
 
 namespace drape {
 namespace internal {
@@ -34,8 +58,18 @@ struct FastHessian {
   static constexpr bool kAvailable = false;
 };
 
-// Value, Jacobian and the Hessian of each output of a small function R^kIn → R^kOut, by nested
-// Jets. `function(in, out)` is called with in[kIn] and out[kOut] of the nested Jet type.
+// A positive semidefinite stand-in for a term's Hessian, built from its stages (see "Projection"
+// above): `hessian` (row-major, the term's size) receives it; `changed` says whether it differs
+// from the exact Hessian.
+struct StagedProjection {
+  EigenvalueFilter filter = EigenvalueFilter::kClamp;
+  double* hessian = nullptr;
+  bool changed = false;
+};
+
+// Value, Jacobian and the Hessian of each output of a small function R^kIn → R^kOut, by
+// second-order forward differentiation (src/model/second_order.h). `function(in, out)` is called
+// with in[kIn] and out[kOut] of that number type.
 template <int kIn, int kOut>
 struct LocalExpansion {
   Eigen::Matrix<double, kOut, 1> value;
@@ -52,19 +86,18 @@ struct LocalExpansion {
 
 template <int kIn, int kOut, typename Function>
 void Expand(const Function& function, const double* input, LocalExpansion<kIn, kOut>* expansion) {
-  using Jet1 = ceres::Jet<double, kIn>;
-  using Jet2 = ceres::Jet<Jet1, kIn>;
-  Jet2 in[kIn], out[kOut];
-  for (int k = 0; k < kIn; ++k) {
-    in[k].a = Jet1(input[k], k);
-    in[k].v.setZero();
-    in[k].v[k] = Jet1(1.0);
-  }
+  using Number = SecondOrder<kIn>;
+  Number in[kIn], out[kOut];
+  for (int k = 0; k < kIn; ++k) in[k] = Number::Variable(input[k], k);
   function(in, out);
   for (int i = 0; i < kOut; ++i) {
-    expansion->value[i] = out[i].a.a;
-    expansion->jacobian.row(i) = out[i].a.v.transpose();
-    for (int r = 0; r < kIn; ++r) expansion->hessian[i].row(r) = out[i].v[r].v.transpose();
+    expansion->value[i] = out[i].value;
+    for (int r = 0; r < kIn; ++r) {
+      expansion->jacobian(i, r) = out[i].gradient[r];
+      for (int c = r; c < kIn; ++c) {
+        expansion->hessian[i](r, c) = expansion->hessian[i](c, r) = out[i].Hessian(r, c);
+      }
+    }
   }
 }
 
@@ -154,14 +187,24 @@ struct NodeDerivatives {
 };
 
 // FvBending (nodes W, P, E, S, N = 0..4). Intermediates Q = (k1, t2, k2, t1), 12 values; the
-// sections y1 = Section(k1, t2), y2 = Section(k2, t1); residuals r = L (y1, y2).
+// sections y1 = Section(k1, t2), y2 = Section(k2, t1); residuals r = L (y1, y2). The Hessian is
+//   ∇²E = Jᵀ J  +  ∂Qᵀ (Σ_i c_i ∇²y_i) ∂Q  +  Σ_j g_Q,j ∇²Q_j,   J = L ∂y/∂Q ∂Q/∂x, c = Lᵀ r,
+// a Gauss–Newton part (semidefinite by construction) and six small curvature blocks: two sections
+// (6×6 over (k, t)), two binormals (6×6 over their relative coordinates), two tangents (3×3).
+// Its projection is that of the whole 15×15 matrix (see "Projection" above).
 template <>
 struct FastHessian<FvBending> {
   static constexpr bool kAvailable = true;
   using Nodes = NodeDerivatives<5>;
 
+  // The curvature blocks, in the order of Q.
+  struct Curvatures {
+    Eigen::Matrix<double, 6, 6> section1, section2, k1, k2;
+    Eigen::Matrix3d t1, t2;
+  };
+
   static bool Evaluate(const FvBending& functor, const double* const* x, double* energy,
-                       double* gradient, double* hessian) {
+                       double* gradient, double* hessian, StagedProjection* projection = nullptr) {
     enum { kW, kP, kE, kS, kN };
     LocalExpansion<6, 3> k1, k2;
     LocalExpansion<3, 3> t1, t2;
@@ -185,9 +228,15 @@ struct FastHessian<FvBending> {
     dy.block<4, 6>(0, 0) = y1.jacobian;
     dy.block<4, 6>(4, 6) = y2.jacobian;
     const Eigen::Matrix<double, 12, 1> g_q = dy.transpose() * c;
-    Eigen::Matrix<double, 12, 12> h_q = dy.transpose() * (l.transpose() * l) * dy;
-    h_q.block<6, 6>(0, 0) += y1.WeightedHessian(c.data());
-    h_q.block<6, 6>(6, 6) += y2.WeightedHessian(c.data() + 4);
+    const Eigen::Matrix<double, 8, 12> ldy = l * dy;
+    const Eigen::Matrix<double, 12, 12> gauss_newton = ldy.transpose() * ldy;
+    Curvatures curvatures;
+    curvatures.section1 = y1.WeightedHessian(c.data());
+    curvatures.section2 = y2.WeightedHessian(c.data() + 4);
+    curvatures.k1 = k1.WeightedHessian(g_q.data());
+    curvatures.t2 = t2.WeightedHessian(g_q.data() + 3);
+    curvatures.k2 = k2.WeightedHessian(g_q.data() + 6);
+    curvatures.t1 = t1.WeightedHessian(g_q.data() + 9);
 
     Nodes::Jacobian<12> dq = Nodes::Jacobian<12>::Zero();
     Nodes::AddRelativeToCentre<3>(k1.jacobian, kW, kP, kE, dq.middleRows<3>(0));
@@ -197,15 +246,33 @@ struct FastHessian<FvBending> {
 
     Eigen::Map<Eigen::Matrix<double, 15, 1>> full_gradient(gradient);
     Eigen::Map<Nodes::Hessian> full_hessian(hessian);
-    Nodes::Hessian h = dq.transpose() * h_q * dq;
-    Nodes::AddRelativeToCentre(k1.WeightedHessian(g_q.data()), kW, kP, kE, &h);
-    Nodes::AddDifference(t2.WeightedHessian(g_q.data() + 3), kS, kN, &h);
-    Nodes::AddRelativeToCentre(k2.WeightedHessian(g_q.data() + 6), kS, kP, kN, &h);
-    Nodes::AddDifference(t1.WeightedHessian(g_q.data() + 9), kW, kE, &h);
-    full_hessian = h;
+    full_hessian = Combine(dq, gauss_newton, curvatures);
     full_gradient = dq.transpose() * g_q;
     *energy = 0.5 * r.squaredNorm();
-    return std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
+    const bool finite =
+        std::isfinite(*energy) && full_gradient.allFinite() && full_hessian.allFinite();
+    if (finite && projection) {  // the whole 15×15 matrix (see "Projection" above)
+      Eigen::Map<Nodes::Hessian> projected(projection->hessian);
+      projected = full_hessian;
+      projection->changed = ProjectSymmetric<15>(projection->filter, 15, projection->hessian);
+    }
+    return finite;
+  }
+
+  // ∂Qᵀ (G + blockdiag(sections)) ∂Q + the intermediates' curvatures mapped to the nodes.
+  static Nodes::Hessian Combine(const Nodes::Jacobian<12>& dq,
+                                const Eigen::Matrix<double, 12, 12>& gauss_newton,
+                                const Curvatures& curvatures) {
+    enum { kW, kP, kE, kS, kN };
+    Eigen::Matrix<double, 12, 12> h_q = gauss_newton;
+    h_q.block<6, 6>(0, 0) += curvatures.section1;
+    h_q.block<6, 6>(6, 6) += curvatures.section2;
+    Nodes::Hessian h = dq.transpose() * h_q * dq;
+    Nodes::AddRelativeToCentre(curvatures.k1, kW, kP, kE, &h);
+    Nodes::AddDifference(curvatures.t2, kS, kN, &h);
+    Nodes::AddRelativeToCentre(curvatures.k2, kS, kP, kN, &h);
+    Nodes::AddDifference(curvatures.t1, kW, kE, &h);
+    return h;
   }
 
   // The section of binormal k and tangent t (both with their values) over (k, t).
@@ -219,14 +286,15 @@ struct FastHessian<FvBending> {
   }
 };
 
-// FvBendingEdge (nodes A, P, B = 0..2): Q = k, the binormal; r = L k.
+// FvBendingEdge (nodes A, P, B = 0..2): Q = k, the binormal; r = L k. ∇²E = Jᵀ J + Σ_j g_j ∇²k_j
+// (J = L ∂k/∂x, g = Lᵀ r): a Gauss–Newton part and one 6×6 curvature block over (a − p, b − p).
 template <>
 struct FastHessian<FvBendingEdge> {
   static constexpr bool kAvailable = true;
   using Nodes = NodeDerivatives<3>;
 
   static bool Evaluate(const FvBendingEdge& functor, const double* const* x, double* energy,
-                       double* gradient, double* hessian) {
+                       double* gradient, double* hessian, StagedProjection* projection = nullptr) {
     LocalExpansion<6, 3> k;
     ExpandBinormal(x[0], x[1], x[2], &k);
     const Eigen::Matrix3d l =
@@ -235,14 +303,104 @@ struct FastHessian<FvBendingEdge> {
     const Eigen::Vector3d g_q = l.transpose() * r;
     Nodes::Jacobian<3> dq = Nodes::Jacobian<3>::Zero();
     Nodes::AddRelativeToCentre<3>(k.jacobian, 0, 1, 2, dq);
-    Nodes::Hessian h = dq.transpose() * (l.transpose() * l) * dq;
-    Nodes::AddRelativeToCentre(k.WeightedHessian(g_q.data()), 0, 1, 2, &h);
+    const Nodes::Jacobian<3> j = l * dq;
+    const Nodes::Hessian gauss_newton = j.transpose() * j;
+    Eigen::Matrix<double, 6, 6> curvature = k.WeightedHessian(g_q.data());
+    Nodes::Hessian h = gauss_newton;
+    Nodes::AddRelativeToCentre(curvature, 0, 1, 2, &h);
     Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
     Eigen::Map<Nodes::Hessian> full_hessian(hessian);
     full_hessian = h;
     full_gradient = dq.transpose() * g_q;
     *energy = 0.5 * r.squaredNorm();
-    return std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
+    const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
+    if (finite && projection) {
+      Eigen::Map<Nodes::Hessian> projected(projection->hessian);
+      projection->changed = !IsSemidefinite(h);
+      if (!projection->changed) {
+        projected = h;
+      } else {
+        ProjectSymmetric(projection->filter, &curvature);
+        Nodes::Hessian sum = gauss_newton;
+        Nodes::AddRelativeToCentre(curvature, 0, 1, 2, &sum);
+        projected = sum;
+      }
+    }
+    return finite;
+  }
+};
+
+// FvMembrane (nodes P, A, B = 0..2): Q = (u·u, v·v, u·v), the Gram entries of the arms u = A − P,
+// v = B − P, quadratic in the coordinates; E = φ(Q) = ½|r(Q)|² by the functor's Residuals stage,
+// differentiated over the 3 values of Q. With J = ∂Q/∂(u, v) (rows (2u, 0),
+// (0, 2v), (v, u)) and the constant second derivatives of Q,
+//   ∇²E = Jᵀ ∇²φ J + M ⊗ I₃,   M = [2 φ_uu  φ_uv; φ_uv  2 φ_vv]   (φ_Q = ∂φ/∂Q),
+// over (u, v), mapped to the nodes by u = A − P, v = B − P.
+template <>
+struct FastHessian<FvMembrane> {
+  static constexpr bool kAvailable = true;
+  using Nodes = NodeDerivatives<3>;
+
+  static bool Evaluate(const FvMembrane& functor, const double* const* x, double* energy,
+                       double* gradient, double* hessian, StagedProjection* projection = nullptr) {
+    using Number = SecondOrder<3>;
+    double gram[3];
+    FvMembrane::ArmGram(x[0], x[1], x[2], gram);
+    Number q[3], r[3];
+    for (int k = 0; k < 3; ++k) q[k] = Number::Variable(gram[k], k);
+    if (!functor.Residuals(q, r)) return false;
+    Number sum;
+    for (const Number& residual : r) sum += residual * residual;
+    const Number e = 0.5 * sum;
+    Eigen::Vector3d g_q;
+    Eigen::Matrix3d h_q;
+    for (int k = 0; k < 3; ++k) {
+      g_q[k] = e.gradient[k];
+      for (int c = 0; c < 3; ++c) h_q(k, c) = e.Hessian(k, c);
+    }
+    const Eigen::Vector3d u(x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]);
+    const Eigen::Vector3d v(x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]);
+    Eigen::Matrix<double, 3, 6> j;
+    j << 2.0 * u.transpose(), Eigen::RowVector3d::Zero(), Eigen::RowVector3d::Zero(),
+        2.0 * v.transpose(), v.transpose(), u.transpose();
+    Eigen::Matrix2d m;
+    m << 2.0 * g_q[0], g_q[2], g_q[2], 2.0 * g_q[1];
+    const Eigen::Matrix<double, 6, 6> h_relative = Relative(j, h_q, m);
+    const Eigen::Matrix<double, 6, 1> g_relative = j.transpose() * g_q;
+
+    Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
+    full_gradient << -(g_relative.head<3>() + g_relative.tail<3>()), g_relative;
+    Eigen::Map<Nodes::Hessian> full_hessian(hessian);
+    Nodes::Hessian h = Nodes::Hessian::Zero();
+    Nodes::AddRelativeToCentre(h_relative, 1, 0, 2, &h);
+    full_hessian = h;
+    *energy = e.value;
+    const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
+    if (finite && projection) {
+      Eigen::Map<Nodes::Hessian> projected(projection->hessian);
+      projection->changed = !IsSemidefinite(h_relative);
+      if (!projection->changed) {
+        projected = h;
+      } else {
+        ProjectSymmetric(projection->filter, &h_q);
+        ProjectSymmetric(projection->filter, &m);
+        Nodes::Hessian stand_in = Nodes::Hessian::Zero();
+        Nodes::AddRelativeToCentre(Relative(j, h_q, m), 1, 0, 2, &stand_in);
+        projected = stand_in;
+      }
+    }
+    return finite;
+  }
+
+  // Jᵀ H J + M ⊗ I₃ over (u, v).
+  static Eigen::Matrix<double, 6, 6> Relative(const Eigen::Matrix<double, 3, 6>& j,
+                                              const Eigen::Matrix3d& h_q,
+                                              const Eigen::Matrix2d& m) {
+    Eigen::Matrix<double, 6, 6> h = j.transpose() * h_q * j;
+    for (int a = 0; a < 2; ++a) {
+      for (int b = 0; b < 2; ++b) h.block<3, 3>(3 * a, 3 * b).diagonal().array() += m(a, b);
+    }
+    return h;
   }
 };
 

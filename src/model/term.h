@@ -1,7 +1,7 @@
 // One energy term of the model: a cost functor from costs/ bound to the nodes it acts on.
 // Energy, gradient and Hessian are all derived from the functor by automatic differentiation
-// (ceres::Jet, nested for the Hessian; for the finite-volume bending functors, nested Jets on each
-// of the functor's stages chained together, src/model/fast_hessian.h), so the physics is written
+// (ceres::Jet, nested for the Hessian; for the finite-volume functors, nested Jets on each of the
+// functor's stages chained together, src/model/fast_hessian.h), so the physics is written
 // once, in costs/.
 //
 // A functor declares
@@ -33,6 +33,7 @@
 
 #include "costs/energy_form.h"
 #include "src/model/fast_hessian.h"
+#include "src/model/psd_projection.h"
 
 namespace drape {
 
@@ -53,6 +54,16 @@ class Term {
   virtual bool EnergyGradient(const double* positions, double* energy, double* gradient) const = 0;
   virtual bool EnergyHessian(const double* positions, double* energy, double* gradient,
                              double* hessian) const = 0;
+  // Whether EnergyHessianProjected is available: the term builds a semidefinite stand-in for its
+  // Hessian from its functor's stages (src/model/fast_hessian.h, "Projection").
+  virtual bool HasStagedProjection() const { return false; }
+  // EnergyHessian, and in `projected` (same layout) that semidefinite stand-in, with `*changed`
+  // whether it differs from `hessian`. False if not evaluable, or if the term has none.
+  virtual bool EnergyHessianProjected(const double* /*positions*/, EigenvalueFilter /*filter*/,
+                                      double* /*energy*/, double* /*gradient*/, double* /*hessian*/,
+                                      double* /*projected*/, bool* /*changed*/) const {
+    return false;
+  }
   // The same by nested Jets over the whole functor, whatever EnergyHessian uses: the reference
   // that every faster derivative path is checked against (tests/term_checks.h).
   virtual bool ReferenceHessian(const double* positions, double* energy, double* gradient,
@@ -232,6 +243,24 @@ class AutoDiffTerm : public Term {
     } else {
       return internal::NestedJetHessian<internal::TranslationInvariant<Functor>::value>(
           functor_, x, energy, gradient, hessian);
+    }
+  }
+
+  bool HasStagedProjection() const override { return internal::FastHessian<Functor>::kAvailable; }
+
+  bool EnergyHessianProjected(const double* positions, EigenvalueFilter filter, double* energy,
+                              double* gradient, double* hessian, double* projected,
+                              bool* changed) const override {
+    if constexpr (internal::FastHessian<Functor>::kAvailable) {
+      const double* x[kN];
+      for (int a = 0; a < kN; ++a) x[a] = positions + 3 * nodes()[a];
+      internal::StagedProjection projection{filter, projected, false};
+      const bool ok = internal::FastHessian<Functor>::Evaluate(functor_, x, energy, gradient,
+                                                               hessian, &projection);
+      *changed = projection.changed;
+      return ok;
+    } else {
+      return false;
     }
   }
 

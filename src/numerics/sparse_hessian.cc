@@ -1,7 +1,6 @@
 #include "src/numerics/sparse_hessian.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
+#include <Eigen/Core>
 #include <algorithm>
 #include <cassert>
 #include <chrono>
@@ -16,29 +15,6 @@ namespace drape {
 
 namespace {
 
-// The local Hessian of a term made positive semidefinite: each negative eigenvalue is set to zero
-// (kClamp) or to its magnitude (kAbsolute). A matrix that an LDLᵀ factorisation already shows to
-// be semidefinite (to roundoff) is left alone, which spares the eigen-decomposition for most
-// terms. Returns true if it changed.
-template <int N>
-bool ProjectFixed(EigenvalueFilter filter, int n, double* row_major) {
-  using Matrix = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
-  Eigen::Map<Matrix> matrix(row_major, n, n);
-  const double scale = matrix.cwiseAbs().maxCoeff();
-  if (scale == 0.0) return false;
-  const Eigen::LDLT<Matrix> ldlt(matrix);
-  const double tolerance = 1e-12 * scale;  // rounding of a semidefinite matrix's zero eigenvalues
-  if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -tolerance) return false;
-  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(matrix);
-  const auto& values = eigen.eigenvalues();
-  if (values.minCoeff() >= -tolerance) return false;
-  using Vector = Eigen::Matrix<double, N, 1>;
-  const Vector filtered = filter == EigenvalueFilter::kAbsolute ? Vector(values.cwiseAbs())
-                                                                : Vector(values.cwiseMax(0.0));
-  matrix = eigen.eigenvectors() * filtered.asDiagonal() * eigen.eigenvectors().transpose();
-  return true;
-}
-
 // A translation-invariant 2-node term's Hessian is [A −A; −A A] = [1 −1; −1 1] ⊗ A
 // (src/model/term.h builds it so, exactly): its eigenvalues are 0 and 2·eig(A), and projecting A
 // projects the whole.
@@ -47,10 +23,10 @@ bool ProjectSpringLike(EigenvalueFilter filter, double* row_major) {
   const Eigen::Matrix3d block = matrix.topLeftCorner<3, 3>();
   if (matrix.topRightCorner<3, 3>() != -block || matrix.bottomLeftCorner<3, 3>() != -block ||
       matrix.bottomRightCorner<3, 3>() != block) {
-    return ProjectFixed<6>(filter, 6, row_major);
+    return ProjectSymmetric<6>(filter, 6, row_major);
   }
   Eigen::Matrix<double, 3, 3, Eigen::RowMajor> projected = block;
-  if (!ProjectFixed<3>(filter, 3, projected.data())) return false;
+  if (!ProjectSymmetric<3>(filter, 3, projected.data())) return false;
   matrix << projected, -projected, -projected, projected;
   return true;
 }
@@ -58,17 +34,17 @@ bool ProjectSpringLike(EigenvalueFilter filter, double* row_major) {
 bool ProjectToPositiveSemidefinite(EigenvalueFilter filter, int n, double* row_major) {
   switch (n) {
     case 3:
-      return ProjectFixed<3>(filter, n, row_major);
+      return ProjectSymmetric<3>(filter, n, row_major);
     case 6:
       return ProjectSpringLike(filter, row_major);
     case 9:
-      return ProjectFixed<9>(filter, n, row_major);
+      return ProjectSymmetric<9>(filter, n, row_major);
     case 12:
-      return ProjectFixed<12>(filter, n, row_major);
+      return ProjectSymmetric<12>(filter, n, row_major);
     case 15:  // the finite-volume bending term (5 nodes)
-      return ProjectFixed<15>(filter, n, row_major);
+      return ProjectSymmetric<15>(filter, n, row_major);
     default:
-      return ProjectFixed<Eigen::Dynamic>(filter, n, row_major);
+      return ProjectSymmetric<Eigen::Dynamic>(filter, n, row_major);
   }
 }
 
@@ -168,6 +144,10 @@ bool EvaluateTerm(const Term& term, const double* positions, EigenvalueFilter fi
                   double* energy, double* gradient, double* hessian, double* projected,
                   bool* changed) {
   *changed = false;
+  if (projected != nullptr && term.HasStagedProjection()) {
+    return term.EnergyHessianProjected(positions, filter, energy, gradient, hessian, projected,
+                                       changed);
+  }
   if (!term.EnergyHessian(positions, energy, gradient, hessian)) return false;
   if (projected == nullptr) return true;
   const int n = term.num_coordinates();

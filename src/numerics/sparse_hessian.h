@@ -7,9 +7,12 @@
 // precomputed, so that each assembly only adds numbers. It keeps two sets of values over the
 // same pattern: the true Hessian, and the Hessian whose every term is first projected to
 // positive semidefinite (negative eigenvalues of the small local matrix set to zero, or to their
-// magnitude: EigenvalueFilter). The terms' local derivatives and projections are computed on
-// several threads (std::thread: drape's OpenMP is switched off for CHOLMOD's sake) and summed by
-// one thread in term order, so the values do not depend on the thread count.
+// magnitude: EigenvalueFilter); a term with a staged projection (the finite-volume terms:
+// Term::EnergyHessianProjected, src/model/fast_hessian.h) builds its semidefinite stand-in from
+// its functor's stages instead, unchanged where its Hessian is semidefinite. The terms' local
+// derivatives and projections are computed on several threads (std::thread: drape's OpenMP is
+// switched off for CHOLMOD's sake) and summed by one thread in term order, so the values do not
+// depend on the thread count.
 //
 // SparseCholesky factorises a matrix of that pattern with CHOLMOD's supernodal Cholesky: the
 // symbolic analysis (fill-reducing ordering, supernodes) once, the numeric factorisation per
@@ -23,13 +26,9 @@
 
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
+#include "src/model/psd_projection.h"
 
 namespace drape {
-
-// How a term's negative eigenvalues are made nonnegative: set to zero (the nearest semidefinite
-// matrix), or replaced by their magnitude, which keeps the curvature's size and only flips its
-// sign (a compressed spring then resists sideways motion as much as a stretched one would).
-enum class EigenvalueFilter { kClamp, kAbsolute };
 
 // The number of hardware threads (at least 1): FreeHessian's default for its assembly.
 int DefaultAssemblyThreads();

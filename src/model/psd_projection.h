@@ -1,0 +1,59 @@
+// Making a small symmetric matrix positive semidefinite: shared by the staged projection of the
+// finite-volume terms (src/model/fast_hessian.h) and the per-term projection of the assembled
+// Hessian (src/numerics/sparse_hessian.cc).
+#ifndef DRAPE_SRC_MODEL_PSD_PROJECTION_H_
+#define DRAPE_SRC_MODEL_PSD_PROJECTION_H_
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+namespace drape {
+
+// How negative eigenvalues are made nonnegative: set to zero (the nearest semidefinite matrix),
+// or replaced by their magnitude, which keeps the curvature's size and only flips its sign (a
+// compressed spring then resists sideways motion as much as a stretched one would).
+enum class EigenvalueFilter { kClamp, kAbsolute };
+
+// The n×n symmetric matrix at `data` (row-major; N = n, or Eigen::Dynamic) made positive
+// semidefinite in place: each negative eigenvalue set to zero (kClamp) or to its magnitude
+// (kAbsolute). A matrix that an LDLᵀ factorisation already shows to be semidefinite (to roundoff:
+// 1e-12 of its largest entry) is left alone, which spares the eigen-decomposition for most. Returns
+// true if it changed.
+template <int N>
+bool ProjectSymmetric(EigenvalueFilter filter, int n, double* data) {
+  using Matrix = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
+  Eigen::Map<Matrix> matrix(data, n, n);
+  const double scale = matrix.cwiseAbs().maxCoeff();
+  if (scale == 0.0) return false;
+  const double tolerance = 1e-12 * scale;  // rounding of a semidefinite matrix's zero eigenvalues
+  const Eigen::LDLT<Matrix> ldlt(matrix);
+  if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -tolerance) return false;
+  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(matrix);
+  const auto& values = eigen.eigenvalues();
+  if (values.minCoeff() >= -tolerance) return false;
+  using Vector = Eigen::Matrix<double, N, 1>;
+  const Vector filtered = filter == EigenvalueFilter::kAbsolute ? Vector(values.cwiseAbs())
+                                                                : Vector(values.cwiseMax(0.0));
+  matrix = eigen.eigenvectors() * filtered.asDiagonal() * eigen.eigenvectors().transpose();
+  return true;
+}
+
+// The same for a fixed-size symmetric Eigen matrix (either storage order).
+template <int N, int kOptions>
+bool ProjectSymmetric(EigenvalueFilter filter, Eigen::Matrix<double, N, N, kOptions>* matrix) {
+  return ProjectSymmetric<N>(filter, N, matrix->data());
+}
+
+// Whether a symmetric matrix is positive semidefinite to roundoff (LDLᵀ, as above).
+template <typename Matrix>
+bool IsSemidefinite(const Matrix& matrix) {
+  const double scale = matrix.cwiseAbs().maxCoeff();
+  if (scale == 0.0) return true;
+  const Eigen::LDLT<Matrix> ldlt(matrix);
+  return ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -1e-12 * scale;
+}
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_MODEL_PSD_PROJECTION_H_
