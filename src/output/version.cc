@@ -3,9 +3,7 @@
 #ifndef DRAPE_PROJECT_VERSION
 #define DRAPE_PROJECT_VERSION "unknown"
 #endif
-#ifndef DRAPE_GIT_DESCRIBE
-#define DRAPE_GIT_DESCRIBE ""
-#endif
+#include "git_describe.h"  // DRAPE_GIT_DESCRIBE, written at build time (cmake/git_describe.cmake)
 
 namespace drape {
 

@@ -1,6 +1,6 @@
 // drape's version, as recorded in every result (summary.json) and printed by `drape --version`:
-// the CMake project version, and `git describe --always --dirty` of the source tree when CMake was
-// configured from a git clone (CMakeLists.txt defines both for version.cc only).
+// the CMake project version, and `git describe --always --dirty` of the source tree at build time
+// when built from a git clone (CMakeLists.txt and cmake/git_describe.cmake, for version.cc only).
 #ifndef DRAPE_SRC_OUTPUT_VERSION_H_
 #define DRAPE_SRC_OUTPUT_VERSION_H_
 
