@@ -9,6 +9,7 @@
 #include <cmath>
 #include <new>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "src/model/equilibrium.h"
@@ -38,6 +39,19 @@ Model ShakenSheet(double scale) {
   for (int k = 0; k < model.num_dofs(); ++k) {
     if (!model.fixed[k]) model.positions[k] = scale * model.positions[k] + noise(random);
   }
+  return model;
+}
+
+// The 30 cm cotton drape tester at `spacing`, its free coordinates shaken by up to `amplitude` (m)
+// so that some of its finite-volume terms are indefinite and need projecting.
+Model ShakenDrape(const std::string& spacing, unsigned seed, double amplitude) {
+  Model model = BuildModel(
+      testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml", {"mesh.spacing=" + spacing}));
+  const DofMap dofs(model);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> noise(-amplitude, amplitude);
+  for (int k = 0; k < dofs.num_free(); ++k)
+    model.positions[dofs.free_to_global()[k]] += noise(random);
   return model;
 }
 
@@ -137,13 +151,7 @@ TEST(FreeHessian, ProjectsEachSpringAsItsFullEigenDecompositionWould) {
 // (src/model/fast_hessian.h); the assembled H₊ is semidefinite, never below the true Hessian
 // (H₊ − H ⪰ 0, as each term's is), and equal to it on the terms left unchanged.
 TEST(FreeHessian, FiniteVolumeStandInIsSemidefiniteAndAboveTheHessian) {
-  Model model = BuildModel(
-      testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml", {"mesh.spacing=0.03"}));
-  const DofMap dofs(model);
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> noise(-0.008, 0.008);
-  for (int k = 0; k < dofs.num_free(); ++k)
-    model.positions[dofs.free_to_global()[k]] += noise(random);
+  const Model model = ShakenDrape("0.03", 5, 0.008);
   for (EigenvalueFilter filter : {EigenvalueFilter::kClamp, EigenvalueFilter::kAbsolute}) {
     const AssembledHessian assembled(model, /*project=*/true, filter);
     EXPECT_GT(assembled.assembly.projected_terms, 0);
@@ -165,13 +173,8 @@ TEST(FreeHessian, FiniteVolumeStandInIsSemidefiniteAndAboveTheHessian) {
 // projection are bit-for-bit the same on 1, 2 and 3 threads (a finite-volume drape, shaken so that
 // terms need projecting).
 TEST(FreeHessian, AssemblyIsBitIdenticalForAnyThreadCount) {
-  Model model = BuildModel(
-      testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml", {"mesh.spacing=0.015"}));
+  const Model model = ShakenDrape("0.015", 11, 0.004);
   const DofMap dofs(model);
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> noise(-0.004, 0.004);
-  for (int k = 0; k < dofs.num_free(); ++k)
-    model.positions[dofs.free_to_global()[k]] += noise(random);
   std::vector<double> reference_gradient;
   FreeHessian::Assembly reference;
   FreeHessian one(model, dofs);
