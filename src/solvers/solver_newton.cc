@@ -29,7 +29,7 @@
 // 18 of 418 on the 2,821-node drape tester), and otherwise for a step whose H failed to factorise:
 // the iterate is then assembled again, with H₊. The iterates are the same as with H₊ assembled at
 // every iteration, and an iteration whose H factorises skips the terms' projections (statistics:
-// projected_assemblies).
+// projected_assemblies, and projected_assemblies_unused for those whose step then used H).
 // The step is accepted by a backtracking (Armijo) line search on the true energy; a trial point
 // whose energy is not finite is never accepted, the step is shortened instead. When the full step
 // is accepted, it is doubled (up to 4 times) while the energy keeps falling: H₊ overstates the
