@@ -174,6 +174,7 @@ class NewtonIteration {
   double FreeSquaredNorm(const std::vector<double>& gradient) const;
   void AdaptRegularization();
   bool EnsureProjected();
+  bool ExactBlocked(double residual) const;
   bool ExpectsProjectedStep() const;
   bool ComputeStep(bool exact, double residual, std::vector<double>* step);
   bool LineSearch(const std::vector<double>& step, double* alpha);
@@ -256,8 +257,7 @@ bool NewtonIteration::Step(double residual) {
     exact_blocked_above_ = std::numeric_limits<double>::infinity();
   }
   while (true) {
-    const bool exact =
-        residual < settings_.exact_hessian_residual && residual < exact_blocked_above_;
+    const bool exact = !ExactBlocked(residual);
     double alpha = 0.0;
     if (ComputeStep(exact, residual, &step) && LineSearch(step, &alpha)) {
       if (exact) ++counters_.exact_hessian_steps;
@@ -293,11 +293,17 @@ void NewtonIteration::AdaptRegularization() {
   }
 }
 
-// Whether the next step will be H₊'s: H is blocked above the last residual, and the block stays
-// for the next step (Step lifts it after exact_retry_steps).
+// Whether a step at `residual` may not use H: at or above exact_hessian_residual, or above the
+// block set where H last failed.
+bool NewtonIteration::ExactBlocked(double residual) const {
+  return !(residual < settings_.exact_hessian_residual && residual < exact_blocked_above_);
+}
+
+// Whether the next step will be H₊'s: H is blocked at the last residual, and the block stays for
+// the next step (Step lifts it after exact_retry_steps).
 bool NewtonIteration::ExpectsProjectedStep() const {
-  const double block = std::min(settings_.exact_hessian_residual, exact_blocked_above_);
-  return last_residual_ >= block && steps_since_exact_failed_ + 1 <= settings_.exact_retry_steps;
+  return ExactBlocked(last_residual_) &&
+         steps_since_exact_failed_ + 1 <= settings_.exact_retry_steps;
 }
 
 // Assembles H₊ at the iterate if this iteration's assembly left it out (the same energy and
