@@ -22,6 +22,7 @@
 #include "src/compare/plot_scripts.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
+#include "src/output/command_output.h"
 #include "src/output/csv_field.h"
 #include "src/output/json.h"
 
@@ -52,17 +53,6 @@ std::string Slug(const std::string& name) {
   std::string slug;
   for (char c : name) slug += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
   return slug.empty() ? "scene" : slug;
-}
-
-std::string CommandOutput(const std::string& command) {
-  std::string output;
-  if (std::FILE* pipe = ::popen(command.c_str(), "r")) {
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-    ::pclose(pipe);
-  }
-  while (!output.empty() && (output.back() == '\n' || output.back() == ' ')) output.pop_back();
-  return output;
 }
 
 std::string CpuModel() {
