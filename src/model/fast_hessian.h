@@ -35,22 +35,21 @@
 // null space and H₊ = H where H ⪰ 0, for every finite-volume functor on every derivative check.
 //
 // FastHessian<Functor>::kAvailable says whether a functor has such a path (src/model/term.h uses
-// it in place of the nested Jets).
+// it in place of the nested Jets). The paths are defined in fast_hessian.cc, compiled once: this
+// header is read by nearly every file (through term.h), and their second-order numbers, were they
+// inline here, would be instantiated again in each (about a minute per file in the sanitized
+// build).
 #ifndef DRAPE_SRC_MODEL_FAST_HESSIAN_H_
 #define DRAPE_SRC_MODEL_FAST_HESSIAN_H_
 
-#include <ceres/jet.h>
-
-#include <Eigen/Core>
-#include <cmath>
-
-#include "costs/fv_bending.h"
-#include "costs/fv_membrane.h"
-#include "costs/nested_jet.h"
 #include "src/model/psd_projection.h"
-#include "src/model/second_order.h"
 
 namespace drape {
+
+struct FvBending;
+struct FvBendingEdge;
+struct FvMembrane;
+
 namespace internal {
 
 template <typename Functor>
@@ -67,341 +66,27 @@ struct StagedProjection {
   bool changed = false;
 };
 
-// Value, Jacobian and the Hessian of each output of a small function R^kIn → R^kOut, by
-// second-order forward differentiation (src/model/second_order.h). `function(in, out)` is called
-// with in[kIn] and out[kOut] of that number type.
-template <int kIn, int kOut>
-struct LocalExpansion {
-  Eigen::Matrix<double, kOut, 1> value;
-  Eigen::Matrix<double, kOut, kIn> jacobian;
-  Eigen::Matrix<double, kIn, kIn> hessian[kOut];
-
-  // Σ_i weights_i ∇²out_i.
-  Eigen::Matrix<double, kIn, kIn> WeightedHessian(const double* weights) const {
-    Eigen::Matrix<double, kIn, kIn> sum = weights[0] * hessian[0];
-    for (int i = 1; i < kOut; ++i) sum += weights[i] * hessian[i];
-    return sum;
-  }
-};
-
-template <int kIn, int kOut, typename Function>
-void Expand(const Function& function, const double* input, LocalExpansion<kIn, kOut>* expansion) {
-  using Number = SecondOrder<kIn>;
-  Number in[kIn], out[kOut];
-  for (int k = 0; k < kIn; ++k) in[k] = Number::Variable(input[k], k);
-  function(in, out);
-  for (int i = 0; i < kOut; ++i) {
-    expansion->value[i] = out[i].value;
-    for (int r = 0; r < kIn; ++r) {
-      expansion->jacobian(i, r) = out[i].gradient[r];
-      for (int c = r; c < kIn; ++c) {
-        expansion->hessian[i](r, c) = expansion->hessian[i](c, r) = out[i].Hessian(r, c);
-      }
-    }
-  }
-}
-
-// The curvature binormal of a → p → b over the relative coordinates (a − p, b − p).
-inline void ExpandBinormal(const double* a, const double* p, const double* b,
-                           LocalExpansion<6, 3>* expansion) {
-  const double relative[6] = {a[0] - p[0], a[1] - p[1], a[2] - p[2],
-                              b[0] - p[0], b[1] - p[1], b[2] - p[2]};
-  Expand<6, 3>(
-      [](const auto* in, auto* out) {
-        using T = std::remove_const_t<std::remove_reference_t<decltype(in[0])>>;
-        const T origin[3] = {T(), T(), T()};
-        CurvatureBinormal(in, origin, in + 3, out);
-      },
-      relative, expansion);
-}
-
-// The unit vector along b − a over the coordinates of b − a.
-inline void ExpandUnitDirection(const double* a, const double* b, LocalExpansion<3, 3>* expansion) {
-  const double relative[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  Expand<3, 3>(
-      [](const auto* in, auto* out) {
-        using T = std::remove_const_t<std::remove_reference_t<decltype(in[0])>>;
-        const T origin[3] = {T(), T(), T()};
-        UnitDirection(origin, in, out);
-      },
-      relative, expansion);
-}
-
-// The constant matrix L of a functor's residual stage r = L y, read off by a first-order Jet.
-template <int kIn, int kOut, typename Function>
-Eigen::Matrix<double, kOut, kIn> LinearStage(const Function& function) {
-  using Jet = ceres::Jet<double, kIn>;
-  Jet in[kIn], out[kOut];
-  for (int k = 0; k < kIn; ++k) in[k] = Jet(0.0, k);
-  function(in, out);
-  Eigen::Matrix<double, kOut, kIn> matrix;
-  for (int i = 0; i < kOut; ++i) matrix.row(i) = out[i].v.transpose();
-  return matrix;
-}
-
-// Local derivatives over the coordinates of a term's kNodes nodes (3 each).
-template <int kNodes>
-struct NodeDerivatives {
-  static constexpr int kDofs = 3 * kNodes;
-  using Hessian = Eigen::Matrix<double, kDofs, kDofs, Eigen::RowMajor>;
-  template <int kRows>
-  using Jacobian = Eigen::Matrix<double, kRows, kDofs>;
-
-  // Rows of ∂q/∂x for q a function of (x_a − x_p, x_b − x_p) with Jacobian `relative` (m × 6).
-  template <int kRows>
-  static void AddRelativeToCentre(const Eigen::Matrix<double, kRows, 6>& relative, int a, int p,
-                                  int b, Eigen::Ref<Jacobian<kRows>> jacobian) {
-    jacobian.template middleCols<3>(3 * a) += relative.template leftCols<3>();
-    jacobian.template middleCols<3>(3 * b) += relative.template rightCols<3>();
-    jacobian.template middleCols<3>(3 * p) -=
-        relative.template leftCols<3>() + relative.template rightCols<3>();
-  }
-  // Rows of ∂q/∂x for q a function of x_b − x_a with Jacobian `relative` (m × 3).
-  template <int kRows>
-  static void AddDifference(const Eigen::Matrix<double, kRows, 3>& relative, int a, int b,
-                            Eigen::Ref<Jacobian<kRows>> jacobian) {
-    jacobian.template middleCols<3>(3 * b) += relative;
-    jacobian.template middleCols<3>(3 * a) -= relative;
-  }
-  // H += Pᵀ A P for A over (x_a − x_p, x_b − x_p).
-  static void AddRelativeToCentre(const Eigen::Matrix<double, 6, 6>& second, int a, int p, int b,
-                                  Hessian* hessian) {
-    const int node[2] = {a, b};
-    for (int i = 0; i < 2; ++i) {
-      for (int j = 0; j < 2; ++j) {
-        const Eigen::Matrix3d block = second.template block<3, 3>(3 * i, 3 * j);
-        hessian->template block<3, 3>(3 * node[i], 3 * node[j]) += block;
-        hessian->template block<3, 3>(3 * node[i], 3 * p) -= block;
-        hessian->template block<3, 3>(3 * p, 3 * node[j]) -= block;
-        hessian->template block<3, 3>(3 * p, 3 * p) += block;
-      }
-    }
-  }
-  // H += Pᵀ A P for A over x_b − x_a.
-  static void AddDifference(const Eigen::Matrix3d& second, int a, int b, Hessian* hessian) {
-    hessian->template block<3, 3>(3 * a, 3 * a) += second;
-    hessian->template block<3, 3>(3 * b, 3 * b) += second;
-    hessian->template block<3, 3>(3 * a, 3 * b) -= second;
-    hessian->template block<3, 3>(3 * b, 3 * a) -= second;
-  }
-};
-
-// FvBending (nodes W, P, E, S, N = 0..4). Intermediates Q = (k1, t2, k2, t1), 12 values; the
-// sections y1 = Section(k1, t2), y2 = Section(k2, t1); residuals r = L (y1, y2). The Hessian is
-//   ∇²E = Jᵀ J  +  ∂Qᵀ (Σ_i c_i ∇²y_i) ∂Q  +  Σ_j g_Q,j ∇²Q_j,   J = L ∂y/∂Q ∂Q/∂x, c = Lᵀ r,
-// a Gauss–Newton part (semidefinite by construction) and six small curvature blocks: two sections
-// (6×6 over (k, t)), two binormals (6×6 over their relative coordinates), two tangents (3×3).
-// Its projection is that of the whole 15×15 matrix (see "Projection" above).
+// Energy, gradient and Hessian (row-major, over the functor's 3N coordinates) of `functor` at
+// nodes x[0..N−1], and, given `projection`, the semidefinite stand-in. False if not finite.
 template <>
 struct FastHessian<FvBending> {
   static constexpr bool kAvailable = true;
-  using Nodes = NodeDerivatives<5>;
-
-  // The curvature blocks, in the order of Q.
-  struct Curvatures {
-    Eigen::Matrix<double, 6, 6> section1, section2, k1, k2;
-    Eigen::Matrix3d t1, t2;
-  };
-
   static bool Evaluate(const FvBending& functor, const double* const* x, double* energy,
-                       double* gradient, double* hessian, StagedProjection* projection = nullptr) {
-    enum { kW, kP, kE, kS, kN };
-    LocalExpansion<6, 3> k1, k2;
-    LocalExpansion<3, 3> t1, t2;
-    ExpandBinormal(x[kW], x[kP], x[kE], &k1);
-    ExpandBinormal(x[kS], x[kP], x[kN], &k2);
-    ExpandUnitDirection(x[kW], x[kE], &t1);
-    ExpandUnitDirection(x[kS], x[kN], &t2);
-    LocalExpansion<6, 4> y1, y2;
-    ExpandSection(k1, t2, functor.size1, &y1);
-    ExpandSection(k2, t1, functor.size2, &y2);
-
-    const Eigen::Matrix<double, 8, 8> l =
-        LinearStage<8, 8>([&functor](const auto* y, auto* r) { functor.Residuals(y, y + 4, r); });
-    Eigen::Matrix<double, 8, 1> y;
-    y << y1.value, y2.value;
-    const Eigen::Matrix<double, 8, 1> r = l * y;
-    const Eigen::Matrix<double, 8, 1> c = l.transpose() * r;  // ∂E/∂y
-
-    // Over Q = (k1, t2, k2, t1): ∂y/∂Q is block diagonal.
-    Eigen::Matrix<double, 8, 12> dy = Eigen::Matrix<double, 8, 12>::Zero();
-    dy.block<4, 6>(0, 0) = y1.jacobian;
-    dy.block<4, 6>(4, 6) = y2.jacobian;
-    const Eigen::Matrix<double, 12, 1> g_q = dy.transpose() * c;
-    const Eigen::Matrix<double, 8, 12> ldy = l * dy;
-    const Eigen::Matrix<double, 12, 12> gauss_newton = ldy.transpose() * ldy;
-    Curvatures curvatures;
-    curvatures.section1 = y1.WeightedHessian(c.data());
-    curvatures.section2 = y2.WeightedHessian(c.data() + 4);
-    curvatures.k1 = k1.WeightedHessian(g_q.data());
-    curvatures.t2 = t2.WeightedHessian(g_q.data() + 3);
-    curvatures.k2 = k2.WeightedHessian(g_q.data() + 6);
-    curvatures.t1 = t1.WeightedHessian(g_q.data() + 9);
-
-    Nodes::Jacobian<12> dq = Nodes::Jacobian<12>::Zero();
-    Nodes::AddRelativeToCentre<3>(k1.jacobian, kW, kP, kE, dq.middleRows<3>(0));
-    Nodes::AddDifference<3>(t2.jacobian, kS, kN, dq.middleRows<3>(3));
-    Nodes::AddRelativeToCentre<3>(k2.jacobian, kS, kP, kN, dq.middleRows<3>(6));
-    Nodes::AddDifference<3>(t1.jacobian, kW, kE, dq.middleRows<3>(9));
-
-    Eigen::Map<Eigen::Matrix<double, 15, 1>> full_gradient(gradient);
-    Eigen::Map<Nodes::Hessian> full_hessian(hessian);
-    full_hessian = Combine(dq, gauss_newton, curvatures);
-    full_gradient = dq.transpose() * g_q;
-    *energy = 0.5 * r.squaredNorm();
-    const bool finite =
-        std::isfinite(*energy) && full_gradient.allFinite() && full_hessian.allFinite();
-    if (finite && projection) {  // the whole 15×15 matrix (see "Projection" above)
-      Eigen::Map<Nodes::Hessian> projected(projection->hessian);
-      projected = full_hessian;
-      projection->changed = ProjectSymmetric<15>(projection->filter, 15, projection->hessian);
-    }
-    return finite;
-  }
-
-  // ∂Qᵀ (G + blockdiag(sections)) ∂Q + the intermediates' curvatures mapped to the nodes.
-  static Nodes::Hessian Combine(const Nodes::Jacobian<12>& dq,
-                                const Eigen::Matrix<double, 12, 12>& gauss_newton,
-                                const Curvatures& curvatures) {
-    enum { kW, kP, kE, kS, kN };
-    Eigen::Matrix<double, 12, 12> h_q = gauss_newton;
-    h_q.block<6, 6>(0, 0) += curvatures.section1;
-    h_q.block<6, 6>(6, 6) += curvatures.section2;
-    Nodes::Hessian h = dq.transpose() * h_q * dq;
-    Nodes::AddRelativeToCentre(curvatures.k1, kW, kP, kE, &h);
-    Nodes::AddDifference(curvatures.t2, kS, kN, &h);
-    Nodes::AddRelativeToCentre(curvatures.k2, kS, kP, kN, &h);
-    Nodes::AddDifference(curvatures.t1, kW, kE, &h);
-    return h;
-  }
-
-  // The section of binormal k and tangent t (both with their values) over (k, t).
-  template <int kTangentIn>
-  static void ExpandSection(const LocalExpansion<6, 3>& k, const LocalExpansion<kTangentIn, 3>& t,
-                            double size, LocalExpansion<6, 4>* section) {
-    const double input[6] = {k.value[0], k.value[1], k.value[2],
-                             t.value[0], t.value[1], t.value[2]};
-    Expand<6, 4>([size](const auto* in, auto* out) { FvBending::Section(in, in + 3, size, out); },
-                 input, section);
-  }
+                       double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
 
-// FvBendingEdge (nodes A, P, B = 0..2): Q = k, the binormal; r = L k. ∇²E = Jᵀ J + Σ_j g_j ∇²k_j
-// (J = L ∂k/∂x, g = Lᵀ r): a Gauss–Newton part and one 6×6 curvature block over (a − p, b − p).
 template <>
 struct FastHessian<FvBendingEdge> {
   static constexpr bool kAvailable = true;
-  using Nodes = NodeDerivatives<3>;
-
   static bool Evaluate(const FvBendingEdge& functor, const double* const* x, double* energy,
-                       double* gradient, double* hessian, StagedProjection* projection = nullptr) {
-    LocalExpansion<6, 3> k;
-    ExpandBinormal(x[0], x[1], x[2], &k);
-    const Eigen::Matrix3d l =
-        LinearStage<3, 3>([&functor](const auto* q, auto* r) { functor.Residuals(q, r); });
-    const Eigen::Vector3d r = l * k.value;
-    const Eigen::Vector3d g_q = l.transpose() * r;
-    Nodes::Jacobian<3> dq = Nodes::Jacobian<3>::Zero();
-    Nodes::AddRelativeToCentre<3>(k.jacobian, 0, 1, 2, dq);
-    const Nodes::Jacobian<3> j = l * dq;
-    const Nodes::Hessian gauss_newton = j.transpose() * j;
-    Eigen::Matrix<double, 6, 6> curvature = k.WeightedHessian(g_q.data());
-    Nodes::Hessian h = gauss_newton;
-    Nodes::AddRelativeToCentre(curvature, 0, 1, 2, &h);
-    Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
-    Eigen::Map<Nodes::Hessian> full_hessian(hessian);
-    full_hessian = h;
-    full_gradient = dq.transpose() * g_q;
-    *energy = 0.5 * r.squaredNorm();
-    const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
-    if (finite && projection) {
-      Eigen::Map<Nodes::Hessian> projected(projection->hessian);
-      projection->changed = !IsSemidefinite(h);
-      if (!projection->changed) {
-        projected = h;
-      } else {
-        ProjectSymmetric(projection->filter, &curvature);
-        Nodes::Hessian sum = gauss_newton;
-        Nodes::AddRelativeToCentre(curvature, 0, 1, 2, &sum);
-        projected = sum;
-      }
-    }
-    return finite;
-  }
+                       double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
 
-// FvMembrane (nodes P, A, B = 0..2): Q = (u·u, v·v, u·v), the Gram entries of the arms u = A − P,
-// v = B − P, quadratic in the coordinates; E = φ(Q) = ½|r(Q)|² by the functor's Residuals stage,
-// differentiated over the 3 values of Q. With J = ∂Q/∂(u, v) (rows (2u, 0),
-// (0, 2v), (v, u)) and the constant second derivatives of Q,
-//   ∇²E = Jᵀ ∇²φ J + M ⊗ I₃,   M = [2 φ_uu  φ_uv; φ_uv  2 φ_vv]   (φ_Q = ∂φ/∂Q),
-// over (u, v), mapped to the nodes by u = A − P, v = B − P.
 template <>
 struct FastHessian<FvMembrane> {
   static constexpr bool kAvailable = true;
-  using Nodes = NodeDerivatives<3>;
-
   static bool Evaluate(const FvMembrane& functor, const double* const* x, double* energy,
-                       double* gradient, double* hessian, StagedProjection* projection = nullptr) {
-    using Number = SecondOrder<3>;
-    double gram[3];
-    FvMembrane::ArmGram(x[0], x[1], x[2], gram);
-    Number q[3], r[3];
-    for (int k = 0; k < 3; ++k) q[k] = Number::Variable(gram[k], k);
-    if (!functor.Residuals(q, r)) return false;
-    Number sum;
-    for (const Number& residual : r) sum += residual * residual;
-    const Number e = 0.5 * sum;
-    Eigen::Vector3d g_q;
-    Eigen::Matrix3d h_q;
-    for (int k = 0; k < 3; ++k) {
-      g_q[k] = e.gradient[k];
-      for (int c = 0; c < 3; ++c) h_q(k, c) = e.Hessian(k, c);
-    }
-    const Eigen::Vector3d u(x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]);
-    const Eigen::Vector3d v(x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]);
-    Eigen::Matrix<double, 3, 6> j;
-    j << 2.0 * u.transpose(), Eigen::RowVector3d::Zero(), Eigen::RowVector3d::Zero(),
-        2.0 * v.transpose(), v.transpose(), u.transpose();
-    Eigen::Matrix2d m;
-    m << 2.0 * g_q[0], g_q[2], g_q[2], 2.0 * g_q[1];
-    const Eigen::Matrix<double, 6, 6> h_relative = Relative(j, h_q, m);
-    const Eigen::Matrix<double, 6, 1> g_relative = j.transpose() * g_q;
-
-    Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
-    full_gradient << -(g_relative.head<3>() + g_relative.tail<3>()), g_relative;
-    Eigen::Map<Nodes::Hessian> full_hessian(hessian);
-    Nodes::Hessian h = Nodes::Hessian::Zero();
-    Nodes::AddRelativeToCentre(h_relative, 1, 0, 2, &h);
-    full_hessian = h;
-    *energy = e.value;
-    const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
-    if (finite && projection) {
-      Eigen::Map<Nodes::Hessian> projected(projection->hessian);
-      projection->changed = !IsSemidefinite(h_relative);
-      if (!projection->changed) {
-        projected = h;
-      } else {
-        ProjectSymmetric(projection->filter, &h_q);
-        ProjectSymmetric(projection->filter, &m);
-        Nodes::Hessian stand_in = Nodes::Hessian::Zero();
-        Nodes::AddRelativeToCentre(Relative(j, h_q, m), 1, 0, 2, &stand_in);
-        projected = stand_in;
-      }
-    }
-    return finite;
-  }
-
-  // Jᵀ H J + M ⊗ I₃ over (u, v).
-  static Eigen::Matrix<double, 6, 6> Relative(const Eigen::Matrix<double, 3, 6>& j,
-                                              const Eigen::Matrix3d& h_q,
-                                              const Eigen::Matrix2d& m) {
-    Eigen::Matrix<double, 6, 6> h = j.transpose() * h_q * j;
-    for (int a = 0; a < 2; ++a) {
-      for (int b = 0; b < 2; ++b) h.block<3, 3>(3 * a, 3 * b).diagonal().array() += m(a, b);
-    }
-    return h;
-  }
+                       double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
 
 }  // namespace internal
