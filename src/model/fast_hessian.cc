@@ -170,6 +170,20 @@ void ExpandSection(const LocalExpansion<6, 3>& k, const LocalExpansion<kTangentI
                input, section);
 }
 
+// A 3-node term's H₊ into `projection`: its exact Hessian `h` where that is semidefinite, else
+// the stand-in that `blockwise()` builds from its curvature blocks (fast_hessian.h, "Projection").
+template <typename Blockwise>
+void StoreTriangleProjection(bool semidefinite, const TriangleNodes::Hessian& h,
+                             StagedProjection* projection, const Blockwise& blockwise) {
+  Eigen::Map<TriangleNodes::Hessian> projected(projection->hessian);
+  projection->changed = !semidefinite;
+  if (semidefinite) {
+    projected = h;
+  } else {
+    projected = blockwise();
+  }
+}
+
 // Jᵀ H J + M ⊗ I₃ over (u, v).
 Eigen::Matrix<double, 6, 6> MembraneRelative(const Eigen::Matrix<double, 3, 6>& j,
                                              const Eigen::Matrix3d& h_q, const Eigen::Matrix2d& m) {
@@ -270,16 +284,12 @@ bool FastHessian<FvBendingEdge>::Evaluate(const FvBendingEdge& functor, const do
   *energy = 0.5 * r.squaredNorm();
   const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
   if (finite && projection) {
-    Eigen::Map<TriangleNodes::Hessian> projected(projection->hessian);
-    projection->changed = !IsSemidefinite(h);
-    if (!projection->changed) {
-      projected = h;
-    } else {
+    StoreTriangleProjection(IsSemidefinite(h), h, projection, [&] {
       ProjectSymmetric(projection->filter, &curvature);
       TriangleNodes::Hessian sum = gauss_newton;
       TriangleNodes::AddRelativeToCentre(curvature, 0, 1, 2, &sum);
-      projected = sum;
-    }
+      return sum;
+    });
   }
   return finite;
 }
@@ -327,17 +337,13 @@ bool FastHessian<FvMembrane>::Evaluate(const FvMembrane& functor, const double* 
   *energy = e.value;
   const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
   if (finite && projection) {
-    Eigen::Map<TriangleNodes::Hessian> projected(projection->hessian);
-    projection->changed = !IsSemidefinite(h_relative);
-    if (!projection->changed) {
-      projected = h;
-    } else {
+    StoreTriangleProjection(IsSemidefinite(h_relative), h, projection, [&] {
       ProjectSymmetric(projection->filter, &h_q);
       ProjectSymmetric(projection->filter, &m);
       TriangleNodes::Hessian stand_in = TriangleNodes::Hessian::Zero();
       TriangleNodes::AddRelativeToCentre(MembraneRelative(j, h_q, m), 1, 0, 2, &stand_in);
-      projected = stand_in;
-    }
+      return stand_in;
+    });
   }
   return finite;
 }
