@@ -4,11 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "src/model/equilibrium.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -59,33 +62,84 @@ TEST(Levels, CoarsenedScenesKeepTheSpecimen) {
 
 // Interpolating a solved coarse lattice onto the fine one reproduces an affine deformation
 // exactly (bilinear interpolation), also beyond the coarse circle's outline (linear
-// extrapolation), and leaves fixed coordinates alone.
+// extrapolation). The map stretches no lattice edge by more than 1 %, so the stretch limit
+// leaves it as it is (no node is fixed: a clamp that stays put would stretch its neighbours'
+// edges).
 TEST(Levels, ProlongationIsExactForAnAffineMap) {
-  const Scene fine_scene = testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml",
-                                               {"mesh.spacing=0.02", "obstacles=[]"});
+  const Scene fine_scene = testing::LoadConfig(
+      "configs/fv/drape_tester_cotton_30.yaml",
+      {"mesh.spacing=0.02", "obstacles=[]", "fixed=[]", "loads.gravity=[0, 0, 0]"});
   const Scene coarse_scene = CoarsenedScene(fine_scene, 2);
   Model coarse = BuildModel(coarse_scene);
   Model fine = BuildModel(fine_scene);
-  auto affine = [](const double* x, double* y) {
-    y[0] = 1.1 * x[0] + 0.2 * x[1] + 0.01;
-    y[1] = -0.1 * x[0] + 0.9 * x[1];
-    y[2] = 0.3 * x[0] - 0.4 * x[1] + x[2];
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  auto affine = [c, s](const double* x, double* y) {  // a rotation about z after a 0.6 % stretch
+    const double u = 1.006 * x[0], v = 0.997 * x[1] + 0.002 * x[0];
+    y[0] = c * u - s * v + 0.01;
+    y[1] = s * u + c * v;
+    y[2] = x[2] - 0.002 * x[0];
   };
   for (int k = 0; k < coarse.num_nodes; ++k) {
     affine(coarse.initial.data() + 3 * k, coarse.positions.data() + 3 * k);
   }
   ProlongPositions(coarse_scene, coarse, fine_scene, &fine);
-  int free_nodes = 0;
   for (int k = 0; k < fine.num_nodes; ++k) {
     double expected[3];
     affine(fine.initial.data() + 3 * k, expected);
-    for (int c = 0; c < 3; ++c) {
-      const double want = fine.fixed[3 * k + c] ? fine.initial[3 * k + c] : expected[c];
-      EXPECT_NEAR(fine.positions[3 * k + c], want, 1e-12) << k << " " << c;
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_NEAR(fine.positions[3 * k + axis], expected[axis], 1e-12) << k << " " << axis;
     }
-    free_nodes += !fine.fixed[3 * k];
   }
-  EXPECT_GT(free_nodes, 100);
+  EXPECT_GT(fine.num_nodes, 100);
+}
+
+// The largest stretch (relative elongation) of a lattice edge (sides and diagonals) from the
+// flat start to the model's positions.
+double LargestLatticeStretch(const Model& model) {
+  std::map<std::array<int, 2>, int> node_at;
+  for (int k = 0; k < model.num_nodes; ++k) node_at[model.grid_index[k]] = k;
+  double largest = 0.0;
+  for (const auto& [ij, a] : node_at) {
+    for (const auto& [di, dj] : {std::pair{1, 0}, {0, 1}, {1, 1}, {1, -1}}) {
+      const auto other = node_at.find({ij[0] + di, ij[1] + dj});
+      if (other == node_at.end()) continue;
+      const int b = other->second;
+      const Eigen::Vector3d now = Eigen::Vector3d(model.positions.data() + 3 * b) -
+                                  Eigen::Vector3d(model.positions.data() + 3 * a);
+      const Eigen::Vector3d rest = Eigen::Vector3d(model.initial.data() + 3 * b) -
+                                   Eigen::Vector3d(model.initial.data() + 3 * a);
+      largest = std::max(largest, now.norm() / rest.norm() - 1.0);
+    }
+  }
+  return largest;
+}
+
+// A drape tester solved on a 4 cm lattice, interpolated onto the 2 cm one: bilinear
+// interpolation alone cuts across the support disc's rim (nodes inside the disc, edges beside them
+// stretched by up to 78 %); the interpolated start has no node in the disc's contact layer or
+// under it, no lattice edge stretched by more than the 1 % limit (with the slack of the passes'
+// stopping rule), and its clamp where it was.
+TEST(Levels, ProlongationOverADiscRimLeavesTheDiscAndKeepsTheLengths) {
+  const Scene fine_scene =
+      testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml", {"mesh.spacing=0.02"});
+  const Scene coarse_scene = CoarsenedScene(fine_scene, 2);
+  Model coarse = BuildModel(coarse_scene);
+  ASSERT_TRUE(RunSolve(coarse_scene, coarse, "newton", {}).converged);
+  Model fine = BuildModel(fine_scene);
+  ProlongPositions(coarse_scene, coarse, fine_scene, &fine);
+  const Certificate start = ComputeCertificate(fine, fine.positions.data());
+  EXPECT_LT(start.energy_by_type.at("disk_contact"), 1e-12);
+  EXPECT_LT(LargestLatticeStretch(fine), 0.0125);
+  for (int k = 0; k < fine.num_nodes; ++k) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (fine.fixed[3 * k + axis]) {
+        EXPECT_EQ(fine.positions[3 * k + axis], fine.initial[3 * k + axis]);
+      }
+    }
+  }
+  double lowest = 0.0;  // the start does hang over the rim
+  for (int k = 0; k < fine.num_nodes; ++k) lowest = std::min(lowest, fine.positions[3 * k + 2]);
+  EXPECT_LT(lowest, fine_scene.obstacles.at(0).center.z() - 0.03);
 }
 
 // The refinement study on a case with a known answer. A weightless strip, clamped, with a small

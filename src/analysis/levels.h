@@ -37,11 +37,16 @@ struct LevelRecord {
   bool stable = false;
   std::optional<double> drape_coefficient;  // where the scene has one
   std::optional<int> folds;
-  // Nodes that started above a support disk and end inside its rim (radius − clearance) below
-  // its mid-plane, where its contact pushes them down: the fabric has passed through the disk (its
-  // contact acts on nodes only, and a coarse lattice can step over the ring between a clamp and the
-  // rim).
+  // Nodes that started above a support disk and end under it: below its mid-plane inside its rim,
+  // in its contact layer (the disk pushes them down) or below the layer inside radius −
+  // clearance. The fabric has passed through the disk or wrapped around its rim to its underside
+  // (its contact acts on nodes only, and a coarse lattice can step over the ring between a clamp
+  // and the rim). Nodes hanging below the layer just inside the rim are not counted: there a
+  // lattice edge cuts the rim's corner.
+  // Such an answer is not used to start the next level.
   int nodes_under_disk = 0;
+  // The coarser level's answer passed through a disk, so this level started flat.
+  bool started_flat = false;
   // The interpolated start led through a disk, so the level was solved again from the flat
   // start (iterations and time count both solves).
   bool restarted_flat = false;
@@ -67,7 +72,10 @@ struct LevelsReport {
 Scene CoarsenedScene(const Scene& scene, int factor);
 
 // Fills `fine.positions` (free coordinates only) by bilinear interpolation of `coarse`'s positions
-// over the lattice of `coarse_scene`, extrapolated linearly beyond its outline.
+// over the lattice of `coarse_scene`, extrapolated linearly beyond its outline; then moves nodes
+// out of the support disks they started above and shortens every lattice edge stretched by more
+// than 1 % (where the interpolation cut across a disk's rim) to that. Exact for an affine
+// deformation that stretches no edge by more than 1 %.
 void ProlongPositions(const Scene& coarse_scene, const Model& coarse, const Scene& fine_scene,
                       Model* fine);
 

@@ -140,6 +140,7 @@ void AddLevelsMembers(const LevelsReport& report,
          level.drape_coefficient ? JsonNumber(*level.drape_coefficient) : "null"},
         {"folds", level.folds ? std::to_string(*level.folds) : "null"},
         {"nodes_under_disk", std::to_string(level.nodes_under_disk)},
+        {"started_flat", JsonBool(level.started_flat)},
         {"restarted_flat", JsonBool(level.restarted_flat)}};
     levels += (k ? ", " : "") + JsonObject(fields, 2);
   }
