@@ -412,16 +412,25 @@ TEST_F(CliTest, LevelsReportEachLevelAndTheExtrapolation) {
   EXPECT_EQ(summary["levels"][0]["nodes"].as<int>(), 11);
   EXPECT_EQ(summary["levels"][2]["nodes"].as<int>(), 41);
   EXPECT_EQ(summary["nodes"].as<int>(), 41);
+  int iterations = 0;
   for (const auto& level : summary["levels"]) {
     EXPECT_TRUE(level["converged"].as<bool>());
     EXPECT_GT(level["iterations"].as<int>(), 0);
     EXPECT_TRUE(level["drape_coefficient"].IsNull());
+    iterations += level["iterations"].as<int>();
   }
   const YAML::Node energy = summary["extrapolation"]["energy"];
   ASSERT_TRUE(energy["available"].as<bool>()) << energy["reason"].as<std::string>("");
   EXPECT_GT(energy["observed_order"].as<double>(), 0.5);
   EXPECT_GT(energy["error_estimate"].as<double>(), 0.0);
-  EXPECT_NE(outcome.out.find("3 levels: extrapolated energy"), std::string::npos) << outcome.out;
+  // The line's own count is the finest level's; the levels' sum follows.
+  EXPECT_NE(outcome.out.find(" " + summary["iterations"].as<std::string>() + " iterations, "),
+            std::string::npos)
+      << outcome.out;
+  EXPECT_NE(outcome.out.find("3 levels (" + std::to_string(iterations) + " iterations, "),
+            std::string::npos)
+      << outcome.out;
+  EXPECT_NE(outcome.out.find(" in all): extrapolated energy"), std::string::npos) << outcome.out;
 }
 
 // A mesh that cannot be coarsened: exit 2, the error located at the key, nothing written.

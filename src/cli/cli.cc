@@ -158,19 +158,28 @@ int ExitStatus(const RunResult& result) {
   return result.Saddle() ? kExitSaddle : kExitConverged;
 }
 
-// The stdout summary of a `solver.levels` run: the extrapolated drape coefficient (else energy)
-// with its error estimate and observed order, or why there is none.
+// The stdout summary of a `solver.levels` run: the iterations and time of all levels together
+// (the line's own figures are the finest level's), then the extrapolated drape coefficient (else
+// energy) with its error estimate and observed order, or why there is none.
 std::string LevelsLine(const LevelsReport& report) {
+  int iterations = 0;
+  double seconds = 0.0;
+  for (const LevelRecord& level : report.levels) {
+    iterations += level.iterations;
+    seconds += level.wall_time_s;
+  }
   const Extrapolation& e = report.extrapolations.front();
-  char text[200];
+  char text[240];
+  int used = std::snprintf(text, sizeof text,
+                           "; %zu levels (%d iterations, %.3g s in all): ", report.levels.size(),
+                           iterations, seconds);
   if (e.available) {
-    std::snprintf(
-        text, sizeof text, "; %zu levels: extrapolated %s %.6g ± %.2g (observed order %.2f)",
-        report.levels.size(), e.quantity.c_str(), e.value, e.error_estimate, e.observed_order);
+    std::snprintf(text + used, sizeof text - used,
+                  "extrapolated %s %.6g ± %.2g (observed order %.2f)", e.quantity.c_str(), e.value,
+                  e.error_estimate, e.observed_order);
     return text;
   }
-  std::snprintf(text, sizeof text, "; %zu levels: no extrapolated %s (", report.levels.size(),
-                e.quantity.c_str());
+  std::snprintf(text + used, sizeof text - used, "no extrapolated %s (", e.quantity.c_str());
   return text + e.reason + ")";
 }
 
