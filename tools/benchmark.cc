@@ -476,7 +476,7 @@ std::string OrBlank(double value, const char* format) {
 void PrintRun(const BenchScene& scene, const char* binary, const SolveRun& run,
               const std::string& ratios) {
   if (!run.ran) {
-    std::printf("| %s | %s | failed to run | | | | | | | | | %.0f | |\n", scene.name.c_str(),
+    std::printf("| %s | %s | failed to run | | | | | | | | | | %.0f | |\n", scene.name.c_str(),
                 binary, run.peak_mb);
     return;
   }
@@ -488,10 +488,10 @@ void PrintRun(const BenchScene& scene, const char* binary, const SolveRun& run,
            ? " (" + std::to_string(run.all_iterations) + " all levels)"
            : "");
   std::printf(
-      "| %s | %s | %d | %s | %.2f%s | %s | %.4f | %.4f | %s | %s | %s | %.0f | %s |\n",
+      "| %s | %s | %d | %s | %.2f%s | %s | %.6e | %.4f | %.4f | %s | %s | %s | %.0f | %s |\n",
       scene.name.c_str(), binary, run.nodes, iterations_text.c_str(), run.wall,
       run.converged ? "" : (run.capped ? " (cap)" : " (not converged)"),
-      run.converged ? "yes" : "no", run.assembly / iterations, per_factorization,
+      run.converged ? "yes" : "no", run.energy, run.assembly / iterations, per_factorization,
       OrBlank(per_factorization > 0 ? run.assembly / iterations / per_factorization : -1, "%.2f")
           .c_str(),
       OrBlank(run.drape_coefficient, "%.4f").c_str(),
@@ -568,9 +568,9 @@ int ScenesMain(int argc, char** argv) {
   if (probe_only) return 0;
   std::printf(
       "\nSolves (`drape solve`, cap %.0f s%s):\n\n| scene | binary | nodes | iterations | wall s | "
-      "converged | assembly s/iteration | s/factorisation | assembly ÷ factorisation | drape "
-      "coefficient | folds | peak MB | baseline ÷ this: time, iterations |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+      "converged | energy J | assembly s/iteration | s/factorisation | assembly ÷ factorisation | "
+      "drape coefficient | folds | peak MB | baseline ÷ this: time, iterations |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
       cap,
       baseline.empty() ? ""
                        : (", baseline cap " + std::to_string(int(baseline_cap)) + " s").c_str());
