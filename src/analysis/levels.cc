@@ -16,10 +16,10 @@ namespace drape {
 
 namespace {
 
-// Lattice edges of an interpolated start are shortened to at most 1 + kStrainLimit times their
-// rest length (LimitLatticeStrains), by at most this many passes.
-constexpr double kStrainLimit = 0.01;
-constexpr int kMaxStrainLimitPasses = 200;
+// Lattice edges of an interpolated start are shortened to at most 1 + kStretchLimit times their
+// rest length (LimitLatticeStretch), by at most this many passes.
+constexpr double kStretchLimit = 0.01;
+constexpr int kMaxStretchLimitPasses = 200;
 
 // One axis of a lattice: node index i stands at coordinate (i − offset) h, i in [0, count).
 struct Axis {
@@ -364,9 +364,9 @@ std::vector<std::array<int, 2>> LatticeEdges(const Model& model) {
   return edges;
 }
 
-// Moves the free ends of one lattice edge a → b so that it is stretched by at most kStrainLimit
+// Moves the free ends of one lattice edge a → b so that it is stretched by at most kStretchLimit
 // (the fixed end stays; two free ends share the move). Returns the relative excess it had.
-double LimitEdgeStrain(const std::array<int, 2>& edge, Model* model) {
+double LimitEdgeStretch(const std::array<int, 2>& edge, Model* model) {
   const auto [a, b] = edge;
   double* x = model->positions.data();
   const double* x0 = model->initial.data();
@@ -374,7 +374,7 @@ double LimitEdgeStrain(const std::array<int, 2>& edge, Model* model) {
   const double rest = (Eigen::Vector3d(x0 + 3 * b) - Eigen::Vector3d(x0 + 3 * a)).norm();
   const double length = d.norm();
   if (!(length > 0.0) || !(rest > 0.0)) return 0.0;
-  const double target = std::min(length, (1.0 + kStrainLimit) * rest);
+  const double target = std::min(length, (1.0 + kStretchLimit) * rest);
   if (target == length) return 0.0;
   const Eigen::Vector3d gap = (length - target) / length * d;
   for (int c = 0; c < 3; ++c) {
@@ -392,16 +392,16 @@ double LimitEdgeStrain(const std::array<int, 2>& edge, Model* model) {
 // drape's (the 5 mm drape tester interpolated from 1 cm: 0.34 J against 6e-5 J), which newton
 // then spends its first iterations undoing. Gauss–Seidel passes of stretch limiting (Provot's
 // projection) over the lattice edges, the discs kept after each pass, shorten every edge to at
-// most 1 + kStrainLimit times its rest length; edges within it, as in a smooth drape, are not
+// most 1 + kStretchLimit times its rest length; edges within it, as in a smooth drape, are not
 // moved. Compressed edges are left: a coarse lattice's compression stands for folds finer than it
 // (limiting it too did not converge: 3 % left after 200 passes on the 2 cm drape tester).
-void LimitLatticeStrains(const Scene& scene, Model* model) {
+void LimitLatticeStretch(const Scene& scene, Model* model) {
   const std::vector<std::array<int, 2>> edges = LatticeEdges(*model);
-  for (int pass = 0; pass < kMaxStrainLimitPasses; ++pass) {
+  for (int pass = 0; pass < kMaxStretchLimitPasses; ++pass) {
     double worst = 0.0;
-    for (const auto& edge : edges) worst = std::max(worst, LimitEdgeStrain(edge, model));
+    for (const auto& edge : edges) worst = std::max(worst, LimitEdgeStretch(edge, model));
     KeepOnDiscs(scene, model);
-    if (worst < 0.1 * kStrainLimit) return;
+    if (worst < 0.1 * kStretchLimit) return;
   }
 }
 
@@ -461,7 +461,7 @@ void ProlongPositions(const Scene& coarse_scene, const Model& coarse, const Scen
     }
   }
   KeepOnDiscs(fine_scene, fine);
-  LimitLatticeStrains(fine_scene, fine);
+  LimitLatticeStretch(fine_scene, fine);
 }
 
 Extrapolation Extrapolate(const std::string& quantity, const std::vector<double>& spacing,

@@ -170,9 +170,8 @@ std::string LevelsLine(const LevelsReport& report) {
   }
   const Extrapolation& e = report.extrapolations.front();
   char text[240];
-  int used = std::snprintf(text, sizeof text,
-                           "; %zu levels (%d iterations, %.3g s in all): ", report.levels.size(),
-                           iterations, seconds);
+  const int used = std::snprintf(text, sizeof text, "; %zu levels (%d iterations, %.3g s in all): ",
+                                 report.levels.size(), iterations, seconds);
   if (e.available) {
     std::snprintf(text + used, sizeof text - used,
                   "extrapolated %s %.6g ± %.2g (observed order %.2f)", e.quantity.c_str(), e.value,
