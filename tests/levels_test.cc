@@ -24,6 +24,7 @@ TEST(Levels, ExtrapolationRecoversAKnownLimitAndOrder) {
     for (const std::vector<double>& h :
          {std::vector<double>{0.4, 0.2, 0.1}, std::vector<double>{0.083, 0.04, 0.0101}}) {
       std::vector<double> q;
+      q.reserve(h.size());
       for (double x : h) q.push_back(0.7 - 0.3 * std::pow(x, order));
       const Extrapolation e = Extrapolate("drape_coefficient", h, q);
       ASSERT_TRUE(e.available) << e.reason;
