@@ -503,18 +503,19 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
   report->levels.clear();
   report->extrapolations.clear();
   Model previous;
-  bool previous_usable = false;  // the coarser answer is a start (it did not pass a disk)
   RunResult result;
   for (int k = 0; k < count; ++k) {
     const bool finest = k + 1 == count;
     Model coarse;
     if (!finest) coarse = BuildModel(scenes[k]);
     Model& current = finest ? model : coarse;
+    // The coarser answer starts this level unless it passed under a disk.
+    const bool interpolated = k > 0 && report->levels.back().nodes_under_disk == 0;
     LevelRecord record;
-    record.started_flat = k > 0 && !previous_usable;
-    if (k > 0 && previous_usable) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
+    record.started_flat = k > 0 && !interpolated;
+    if (interpolated) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
     result = RunSolve(scenes[k], current, method, on_iteration);
-    if (k > 0 && previous_usable && NodesUnderDisks(scenes[k], current) > 0) {
+    if (interpolated && NodesUnderDisks(scenes[k], current) > 0) {
       // The interpolated start led the fabric through a support disk: solve from the flat start.
       record.restarted_flat = true;
       record.iterations = result.summary.iterations;
@@ -536,7 +537,6 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
       if (drape.disc_radius > 0.0) record.drape_coefficient = drape.coefficient.cusick;
       record.folds = drape.folds.count;
     }
-    previous_usable = record.nodes_under_disk == 0;
     report->levels.push_back(record);
     if (!finest) previous = std::move(coarse);
   }
