@@ -111,6 +111,39 @@ TEST(Contact, MeasuresTheDeepestNodeInsideTheClearance) {
   EXPECT_DOUBLE_EQ(report.stiffness, ContactStiffness(contact, model));
 }
 
+// The nodes that started above a support disk and ended under it (NodesUnderDisks): below its
+// mid-plane in its contact layer, or below the layer more than the clearance inside the rim.
+// Not counted: a node in the upper half of the layer, one below the layer within the clearance
+// of the rim (a lattice edge cutting the rim's corner), one beyond the rim, one that started
+// below the disk.
+TEST(Contact, CountsTheNodesThatWentUnderASupportDisk) {
+  Model model = testing::Sheet(SmallSheet({}));
+  ObstacleSpec disk;
+  disk.kind = "disk";
+  disk.center = {0.1, 0.1, -0.002};
+  disk.radius = 0.05;
+  const std::vector<ObstacleSpec> obstacles = {disk};
+  ContactSpec contact;
+  contact.thickness = 0.001;
+  std::vector<double> x = model.positions;
+  auto place = [&](int node, double rho, double h) {
+    x[3 * node] = disk.center.x() + rho;
+    x[3 * node + 1] = disk.center.y();
+    x[3 * node + 2] = disk.center.z() + h;
+  };
+  place(0, 0.01, -0.0005);  // lower half of the layer: under
+  place(1, 0.04, -0.01);    // below the layer, inside the rim: under
+  place(2, 0.01, 0.0005);   // upper half of the layer: on the disk
+  place(3, 0.0495, -0.01);  // below, within the clearance of the rim
+  place(4, 0.06, -0.01);    // beyond the rim
+  model.initial[3 * 5 + 2] = -0.02;
+  place(5, 0.01, -0.01);  // started below the disk
+  EXPECT_EQ(NodesUnderDisks(obstacles, contact.thickness, model, x.data()), 2);
+  EXPECT_EQ(MeasureContact(obstacles, contact, model, x.data()).nodes_under_disk, 2);
+  EXPECT_EQ(PlaceOnDisc(disk, contact.thickness, &x[3 * 3]), DiscPlace::kBesideRimBelow);
+  EXPECT_EQ(NodesUnderDisks(obstacles, contact.thickness, model, model.positions.data()), 0);
+}
+
 // A square sheet draped over a sphere, its centre node held sideways (x, y) and one edge node
 // held along y (no spin about the vertical), solved with newton: the stiffness rule keeps every
 // node within 10 % of the thickness, for the spring and the finite-volume fabric alike.

@@ -118,11 +118,20 @@ double CusickCoefficient(double shadow_area, double flat_area, double disc_radiu
   return flat_area > disc ? (shadow_area - disc) / (flat_area - disc) : 1.0;
 }
 
+SpecimenSurface SurfaceAt(const Model& model, const std::vector<double>& positions) {
+  SpecimenSurface surface{WithFringePoints(model.fringe, positions), model.triangles};
+  surface.triangles.insert(surface.triangles.end(), model.fringe.triangles.begin(),
+                           model.fringe.triangles.end());
+  return surface;
+}
+
 DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius,
                                          const ShadowOptions& options) {
   DrapeCoefficient dc;
-  dc.shadow = ProjectedArea(model.positions, model.triangles, options);
-  dc.flat_area = ProjectedArea(model.initial, model.triangles, options).area;
+  const SpecimenSurface draped = SurfaceAt(model, model.positions);
+  const SpecimenSurface flat = SurfaceAt(model, model.initial);
+  dc.shadow = ProjectedArea(draped.points, draped.triangles, options);
+  dc.flat_area = ProjectedArea(flat.points, flat.triangles, options).area;
   dc.ratio = dc.flat_area > 0.0 ? dc.shadow.area / dc.flat_area : 0.0;
   dc.cusick = std::numeric_limits<double>::quiet_NaN();
   if (disc_radius > 0.0) dc.cusick = CusickCoefficient(dc.shadow.area, dc.flat_area, disc_radius);
@@ -290,8 +299,10 @@ DrapeAnalysis AnalyseDrape(const Scene& scene, const Model& model) {
   analysis.disc_radius = DiscRadius(scene);
   analysis.coefficient = ComputeDrapeCoefficient(model, analysis.disc_radius);
   const std::array<double, 2> centre = ProfileCentre(scene, model);
-  analysis.profile = ComputeRadialProfile(model.positions, model.triangles, centre);
-  analysis.flat_profile = ComputeRadialProfile(model.initial, model.triangles, centre);
+  const SpecimenSurface draped = SurfaceAt(model, model.positions);
+  const SpecimenSurface flat = SurfaceAt(model, model.initial);
+  analysis.profile = ComputeRadialProfile(draped.points, draped.triangles, centre);
+  analysis.flat_profile = ComputeRadialProfile(flat.points, flat.triangles, centre);
   const auto& radius = analysis.profile.radius;
   const int n = static_cast<int>(radius.size());
   analysis.radius_min = *std::min_element(radius.begin(), radius.end());

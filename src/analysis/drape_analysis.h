@@ -32,9 +32,18 @@ Shadow ProjectedArea(const std::vector<double>& positions,
                      const std::vector<std::array<int, 3>>& triangles,
                      const ShadowOptions& options = {});
 
+// The specimen's surface as its shadow sees it: the model's triangles and its fringe (the strip
+// between a circle mesh's staircase outline and the circle, src/model/mesh.h), at `positions`
+// (3 doubles per node). Every shadow, flat area and radial profile below is taken of this surface.
+struct SpecimenSurface {
+  std::vector<double> points;                 // 3 per point: the nodes, then the fringe's points
+  std::vector<std::array<int, 3>> triangles;  // ids into `points`
+};
+SpecimenSurface SurfaceAt(const Model& model, const std::vector<double>& positions);
+
 struct DrapeCoefficient {
   Shadow shadow;         // of the final (draped) shape
-  double flat_area = 0;  // m², the same union at the model's initial positions
+  double flat_area = 0;  // m², the same union at the model's initial positions (πR² on a circle)
   double ratio = 0;      // A_shadow / A_flat (Rusinko & Swan's DC, §5)
   // Cusick's (A_shadow − A_disc) / (A_specimen − A_disc) with A_disc = π r², when a support disc
   // radius is given (> 0); NaN otherwise.
@@ -115,11 +124,12 @@ std::array<double, 2> ProfileCentre(const Scene& scene, const Model& model);
 // The folds are counted on the overhang fraction f(θ) = (r(θ) − R_d)/(r_flat(θ) − R_d): the part
 // of the specimen's overhang beyond the disc (radius R_d; 0 without a disk) that still shows in
 // the shadow on that ray (1 where r_flat ≤ R_d). Dividing by the flat overhang takes out the
-// outline of the cut specimen, which on a lattice mesh is a staircase whose radius varies by up
-// to one mesh spacing (1.2 cm at 1 cm spacing on a 30 cm specimen: 8 false "folds" if counted on
-// r(θ) itself); an undraped specimen has f ≡ 1 and no folds. The absolute rule is 1% of the flat
-// overhang (length_scale 1). Limit: a specimen collapsed far inside its outline (a disc over a pin
-// without bending stiffness) no longer follows the cut outline, and the division imprints it.
+// outline of the cut specimen where it is not round (an arc's polygon; a lattice's staircase,
+// whose radius varies by up to one spacing, when a model has no fringe: 8 false "folds" at 1 cm
+// on a 30 cm specimen if counted on r(θ) itself); an undraped specimen has f ≡ 1 and no folds. The
+// absolute rule is 1% of the flat overhang (length_scale 1). Limit: a specimen collapsed far inside
+// its outline (a disc over a pin without bending stiffness) no longer follows the cut outline, and
+// the division imprints it.
 struct DrapeAnalysis {
   double disc_radius = 0.0;  // m, 0 without a support disk
   DrapeCoefficient coefficient;

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "src/analysis/drape_analysis.h"
+#include "src/model/contact.h"
 #include "src/model/mesh.h"
 
 namespace drape {
@@ -305,20 +306,6 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
   }
 }
 
-// Where a node that started above a disc is now: over it (ρ ≤ R) in its contact layer or below
-// it, beside its rim, or clear of it.
-enum class DiscPlace { kClear, kInLayer, kUnder, kBesideRimBelow };
-
-DiscPlace PlaceOnDisc(const ObstacleSpec& disc, double clearance, const double* x) {
-  const double h = x[2] - disc.center.z();
-  const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
-  if (rho > disc.radius || h >= clearance) return DiscPlace::kClear;
-  if (h > -clearance) return DiscPlace::kInLayer;
-  // Below the layer: under the disc, or hanging beside its rim where a lattice edge cuts the
-  // rim's corner (the contact acts on nodes only).
-  return rho <= disc.radius - clearance ? DiscPlace::kUnder : DiscPlace::kBesideRimBelow;
-}
-
 // A coarse lattice can step over a support disc (no coarse node between the clamp and the rim),
 // and the disc's contact acts from both sides: an interpolated node that lands in or under a disc
 // it started above would stay there. Such nodes are moved out to the disc's clearance, the
@@ -403,23 +390,6 @@ void LimitLatticeStretch(const Scene& scene, Model* model) {
     KeepOnDiscs(scene, model);
     if (worst < 0.1 * kStretchLimit) return;
   }
-}
-
-int NodesUnderDisks(const Scene& scene, const Model& model) {
-  int count = 0;
-  for (int k = 0; k < model.num_nodes; ++k) {
-    const double* x = model.positions.data() + 3 * k;
-    for (const ObstacleSpec& disc : scene.obstacles) {
-      if (disc.kind != "disk" || !(model.initial[3 * k + 2] > disc.center.z())) continue;
-      const DiscPlace place = PlaceOnDisc(disc, scene.contact.thickness, x);
-      const bool below_mid_plane = x[2] < disc.center.z();
-      if (place == DiscPlace::kUnder || (place == DiscPlace::kInLayer && below_mid_plane)) {
-        ++count;
-        break;
-      }
-    }
-  }
-  return count;
 }
 
 }  // namespace
@@ -515,7 +485,7 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     record.started_flat = k > 0 && !interpolated;
     if (interpolated) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
     result = RunSolve(scenes[k], current, method, on_iteration);
-    if (interpolated && NodesUnderDisks(scenes[k], current) > 0) {
+    if (interpolated && result.contact.nodes_under_disk > 0) {
       // The interpolated start led the fabric through a support disk: solve from the flat start.
       record.restarted_flat = true;
       record.iterations = result.summary.iterations;
@@ -531,7 +501,7 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     record.energy = result.certificate.energy;
     record.converged = result.converged;
     record.stable = result.stability.computed && result.stability.stable;
-    record.nodes_under_disk = NodesUnderDisks(scenes[k], current);
+    record.nodes_under_disk = result.contact.nodes_under_disk;
     if (HasDrapeCoefficient(scenes[k], current)) {
       const DrapeAnalysis drape = AnalyseDrape(scenes[k], current);
       if (drape.disc_radius > 0.0) record.drape_coefficient = drape.coefficient.cusick;

@@ -140,6 +140,15 @@ std::string StabilityText(const RunResult& result) {
   return text;
 }
 
+// A state with nodes under a support disk is not a drape over it, whatever the certificate says.
+std::string UnderDiskText(const RunResult& result) {
+  const int under = result.contact.nodes_under_disk;
+  if (under == 0) return "";
+  return ", but " + std::to_string(under) + (under == 1 ? " node is" : " nodes are") +
+         " under the support disk: the fabric went around its rim, which the contact (on nodes "
+         "only) lets a coarse mesh do; refine the mesh";
+}
+
 std::string ResultLine(const RunResult& result, const std::string& directory) {
   const SolverSummary& summary = result.summary;
   char text[200];
@@ -147,8 +156,8 @@ std::string ResultLine(const RunResult& result, const std::string& directory) {
                 "%s: converged %s, %d iterations, %.3g s, relative residual %.3g, ",
                 summary.solver.c_str(), result.converged ? "yes" : "no", summary.iterations,
                 summary.wall_time_s, result.certificate.relative_residual);
-  return std::string(text) + StabilityText(result) + " (" + summary.termination + "); results in " +
-         directory;
+  return std::string(text) + StabilityText(result) + UnderDiskText(result) + " (" +
+         summary.termination + "); results in " + directory;
 }
 
 // 0 converged to a stable minimum (or stability not computed), 3 converged to a saddle, 1 not

@@ -29,8 +29,9 @@ ShadowOptions FitShadowOptions() {
 
 double DrapeCoefficientAt(const Model& model, const double* positions, double disc_radius,
                           double flat) {
-  const std::vector<double> draped(positions, positions + model.num_dofs());
-  const double shadow = ProjectedArea(draped, model.triangles, FitShadowOptions()).area;
+  const SpecimenSurface draped =
+      SurfaceAt(model, std::vector<double>(positions, positions + model.num_dofs()));
+  const double shadow = ProjectedArea(draped.points, draped.triangles, FitShadowOptions()).area;
   if (flat <= 0.0) flat = FlatShadowArea(model);
   if (disc_radius <= 0.0) return shadow / flat;
   return CusickCoefficient(shadow, flat, disc_radius);
@@ -94,7 +95,8 @@ double ChordAngle(const Model& model, const double* positions) {
 }  // namespace
 
 double FlatShadowArea(const Model& model) {
-  return ProjectedArea(model.initial, model.triangles, FitShadowOptions()).area;
+  const SpecimenSurface flat = SurfaceAt(model, model.initial);
+  return ProjectedArea(flat.points, flat.triangles, FitShadowOptions()).area;
 }
 
 int ResidualCount(const FitMeasurement& measurement) {

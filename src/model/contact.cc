@@ -93,7 +93,34 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
   if (contact.thickness > 0.0) {
     report.max_penetration_fraction = report.max_penetration / contact.thickness;
   }
+  report.nodes_under_disk = NodesUnderDisks(obstacles, contact.thickness, model, positions);
   return report;
+}
+
+DiscPlace PlaceOnDisc(const ObstacleSpec& disc, double clearance, const double* x) {
+  const double h = x[2] - disc.center.z();
+  const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
+  if (rho > disc.radius || h >= clearance) return DiscPlace::kClear;
+  if (h > -clearance) return DiscPlace::kInLayer;
+  return rho <= disc.radius - clearance ? DiscPlace::kUnder : DiscPlace::kBesideRimBelow;
+}
+
+int NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double clearance,
+                    const Model& model, const double* positions) {
+  int count = 0;
+  for (int k = 0; k < model.num_nodes; ++k) {
+    const double* x = positions + 3 * k;
+    for (const ObstacleSpec& disc : obstacles) {
+      if (disc.kind != "disk" || !(model.initial[3 * k + 2] > disc.center.z())) continue;
+      const DiscPlace place = PlaceOnDisc(disc, clearance, x);
+      const bool below_mid_plane = x[2] < disc.center.z();
+      if (place == DiscPlace::kUnder || (place == DiscPlace::kInLayer && below_mid_plane)) {
+        ++count;
+        break;
+      }
+    }
+  }
+  return count;
 }
 
 namespace {

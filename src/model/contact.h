@@ -37,6 +37,7 @@ struct ContactReport {
   double max_penetration = 0.0;                   // m, the deepest node's depth g inside the layer
   double max_penetration_fraction = 0.0;          // max_penetration / t
   double allowed_fraction = kAllowedPenetration;  // what the stiffness rule aims to keep
+  int nodes_under_disk = 0;                       // NodesUnderDisks
 };
 
 // k = F_ref / (f t)² (see above), N/m².
@@ -52,7 +53,22 @@ void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSp
 // Signed distance from `x` to the obstacle's surface (positive outside), m.
 double ObstacleDistance(const ObstacleSpec& obstacle, const double* x);
 
-// Penetration into the clearance layers at `positions` (3 per node), over every node and obstacle.
+// Where a node that started above a support disk (ObstacleSpec kind "disk") is now: clear of it,
+// over it (ρ ≤ R) in its contact layer (|h| < clearance), under it, or below the layer beside
+// its rim (within the clearance inside the rim, where a lattice edge cuts the rim's corner).
+enum class DiscPlace { kClear, kInLayer, kUnder, kBesideRimBelow };
+DiscPlace PlaceOnDisc(const ObstacleSpec& disc, double clearance, const double* x);
+
+// The nodes that started above a support disk and are now under it: below its plane in its
+// contact layer, or below the layer more than the clearance inside the rim. The disk's contact
+// acts on nodes only and from both sides, so a lattice edge can pass its rim's corner and the
+// fabric wrap around the rim (the 30 cm drape tester on a 1.04 cm lattice, from the flat start:
+// 17 % lower in energy than the drape over the disc); such a state is not a drape over the disc.
+int NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double clearance,
+                    const Model& model, const double* positions);
+
+// Penetration into the clearance layers at `positions` (3 per node), over every node and obstacle,
+// and the nodes under a support disk.
 ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
                              const Model& model, const double* positions);
 

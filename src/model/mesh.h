@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "src/scene/scene.h"
@@ -11,6 +12,21 @@
 namespace drape {
 
 using Link = std::array<int, 2>;
+
+// The part of a specimen its triangles leave out: on a circle mesh, the strip between the
+// lattice's staircase outline and the circle. Each point is an affine combination of node
+// positions, x = Σ w_k x_k with Σ w_k = 1, fitted so that an affine map of the flat specimen moves
+// it with the nodes: in the flat state the outer points lie on the circle, and on a draped specimen
+// they follow the deformation gradient of the boundary they extend (least squares over the
+// boundary node's triangle neighbours). Triangles index nodes (< node count) and then these points
+// (node count + k); the drape coefficient's shadow and flat area include them.
+struct Fringe {
+  std::vector<std::vector<std::pair<int, double>>> points;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+// `positions` (3 doubles per node) followed by the fringe's points at those positions.
+std::vector<double> WithFringePoints(const Fringe& fringe, const std::vector<double>& positions);
 
 struct Mesh {
   std::vector<Eigen::Vector3d> nodes;
@@ -26,6 +42,7 @@ struct Mesh {
   std::vector<double> area;                      // lumped area per node, m² (0 for a chain)
   std::vector<double> length;                    // lumped length per node, m (chains)
   std::vector<Link> loop;  // closed chain: its links in order around the loop (else empty)
+  Fringe fringe;           // circle: the specimen beyond the triangles (else empty)
 };
 
 // Builds the mesh of `spec`. Throws InputError (at spec.where) for fewer than 2 nodes, an

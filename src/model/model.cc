@@ -545,6 +545,7 @@ Model BuildModel(const Scene& scene) {
   }
   model.grid_index = mesh.grid_index;
   model.triangles = mesh.triangles;
+  model.fringe = mesh.fringe;
   model.edges = mesh.lines;
 
   if (scene.material.model == "finite_volume") {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "src/model/mesh.h"
 #include "src/model/term.h"
 #include "src/scene/scene.h"
 
@@ -43,7 +44,8 @@ struct Model {
   std::vector<std::array<int, 2>> grid_index;  // (i, j) of grid nodes, (-1, -1) otherwise
   std::vector<std::array<int, 3>> triangles;   // surface faces for mesh.vtk / mesh.obj
   std::vector<std::array<int, 2>> edges;       // line elements (chains) for mesh.vtk / mesh.obj
-  std::vector<double> applied;                 // 3 per node: weight + applied loads, N (constant)
+  Fringe fringe;                // the specimen beyond `triangles` (circle meshes; src/model/mesh.h)
+  std::vector<double> applied;  // 3 per node: weight + applied loads, N (constant)
   std::vector<std::unique_ptr<Term>> terms;
   double size = 1.0;  // diameter of the initial shape, m (for relative distances)
   // material.springs.stretch_limit (maximum stretch ratio), 0 when the scene sets none; the

@@ -667,8 +667,9 @@ void PaintRings(cairo_t* cr, const TopView& view, double max_radius) {
 
 void PaintShadowUnion(cairo_t* cr, const TopView& view, const Model& model) {
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
-  const auto& p = model.positions;
-  for (const auto& t : model.triangles) {
+  const SpecimenSurface surface = SurfaceAt(model, model.positions);
+  const auto& p = surface.points;
+  for (const auto& t : surface.triangles) {
     double x[3], y[3];
     for (int k = 0; k < 3; ++k) {
       x[k] = view.X(p[3 * t[k]]);

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -116,6 +117,7 @@ void AddContactMembers(const Scene& scene, const RunResult& result,
                   {"max_penetration", JsonNumber(contact.max_penetration)},
                   {"max_penetration_fraction", JsonNumber(contact.max_penetration_fraction)},
                   {"allowed_fraction", JsonNumber(contact.allowed_fraction)},
+                  {"nodes_under_disk", std::to_string(contact.nodes_under_disk)},
                   {"force_sum", JsonVector(certificate.contact_sum)},
                   {"force_by_obstacle", by_obstacle}},
                  1));
@@ -214,6 +216,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
       {"wall_time_s", JsonNumber(summary.wall_time_s)},
       {"nodes", std::to_string(model.num_nodes)},
       {"free_dofs", std::to_string(model.num_free_dofs())},
+      {"mass_kg", JsonNumber(std::accumulate(model.mass.begin(), model.mass.end(), 0.0))},
       {"terms", JsonMap(model.TermCounts(), 1, [](int count) { return std::to_string(count); })},
       {"energy", JsonMap(energy, 1, [](double v) { return JsonNumber(v); })},
       {"residual", JsonObject({{"max_node_force", JsonNumber(certificate.max_node_force)},
