@@ -138,10 +138,14 @@ TEST(Contact, CountsTheNodesThatWentUnderASupportDisk) {
   place(4, 0.06, -0.01);    // beyond the rim
   model.initial[3 * 5 + 2] = -0.02;
   place(5, 0.01, -0.01);  // started below the disk
-  EXPECT_EQ(NodesUnderDisks(obstacles, contact.thickness, model, x.data()), 2);
-  EXPECT_EQ(MeasureContact(obstacles, contact, model, x.data()).nodes_under_disk, 2);
+  const UnderDisks under = NodesUnderDisks(obstacles, contact.thickness, model, x.data());
+  EXPECT_EQ(under.nodes, 2);
+  EXPECT_NEAR(under.inside, 0.04, 1e-15);  // node 0, 1 cm from the centre of a 5 cm disk
+  const ContactReport report = MeasureContact(obstacles, contact, model, x.data());
+  EXPECT_EQ(report.nodes_under_disk, 2);
+  EXPECT_EQ(report.under_disk_inside, under.inside);
   EXPECT_EQ(PlaceOnDisc(disk, contact.thickness, &x[3 * 3]), DiscPlace::kBesideRimBelow);
-  EXPECT_EQ(NodesUnderDisks(obstacles, contact.thickness, model, model.positions.data()), 0);
+  EXPECT_EQ(NodesUnderDisks(obstacles, contact.thickness, model, model.positions.data()).nodes, 0);
 }
 
 // A square sheet draped over a sphere, its centre node held sideways (x, y) and one edge node

@@ -144,9 +144,13 @@ std::string StabilityText(const RunResult& result) {
 std::string UnderDiskText(const RunResult& result) {
   const int under = result.contact.nodes_under_disk;
   if (under == 0) return "";
-  return ", but " + std::to_string(under) + (under == 1 ? " node is" : " nodes are") +
-         " under the support disk: the fabric went around its rim, which the contact (on nodes "
-         "only) lets a coarse mesh do; refine the mesh";
+  char inside[64];
+  std::snprintf(inside, sizeof inside, ", up to %.2g mm inside its rim",
+                1e3 * result.contact.under_disk_inside);
+  return ", but " + std::to_string(under) + (under == 1 ? " node hangs" : " nodes hang") +
+         " under the support disk" + inside +
+         ": the mesh's edges cut the rim's corner (the contact acts on nodes only); refine the "
+         "mesh";
 }
 
 std::string ResultLine(const RunResult& result, const std::string& directory) {

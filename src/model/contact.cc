@@ -93,7 +93,9 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
   if (contact.thickness > 0.0) {
     report.max_penetration_fraction = report.max_penetration / contact.thickness;
   }
-  report.nodes_under_disk = NodesUnderDisks(obstacles, contact.thickness, model, positions);
+  const UnderDisks under = NodesUnderDisks(obstacles, contact.thickness, model, positions);
+  report.nodes_under_disk = under.nodes;
+  report.under_disk_inside = under.inside;
   return report;
 }
 
@@ -105,22 +107,25 @@ DiscPlace PlaceOnDisc(const ObstacleSpec& disc, double clearance, const double* 
   return rho <= disc.radius - clearance ? DiscPlace::kUnder : DiscPlace::kBesideRimBelow;
 }
 
-int NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double clearance,
-                    const Model& model, const double* positions) {
-  int count = 0;
+UnderDisks NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double clearance,
+                           const Model& model, const double* positions) {
+  UnderDisks under;
   for (int k = 0; k < model.num_nodes; ++k) {
     const double* x = positions + 3 * k;
+    bool counted = false;
     for (const ObstacleSpec& disc : obstacles) {
       if (disc.kind != "disk" || !(model.initial[3 * k + 2] > disc.center.z())) continue;
       const DiscPlace place = PlaceOnDisc(disc, clearance, x);
       const bool below_mid_plane = x[2] < disc.center.z();
-      if (place == DiscPlace::kUnder || (place == DiscPlace::kInLayer && below_mid_plane)) {
-        ++count;
-        break;
-      }
+      if (place != DiscPlace::kUnder && !(place == DiscPlace::kInLayer && below_mid_plane))
+        continue;
+      if (!counted) ++under.nodes;
+      counted = true;
+      const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
+      under.inside = std::max(under.inside, disc.radius - rho);
     }
   }
-  return count;
+  return under;
 }
 
 namespace {

@@ -118,6 +118,7 @@ void AddContactMembers(const Scene& scene, const RunResult& result,
                   {"max_penetration_fraction", JsonNumber(contact.max_penetration_fraction)},
                   {"allowed_fraction", JsonNumber(contact.allowed_fraction)},
                   {"nodes_under_disk", std::to_string(contact.nodes_under_disk)},
+                  {"under_disk_inside_m", JsonNumber(contact.under_disk_inside)},
                   {"force_sum", JsonVector(certificate.contact_sum)},
                   {"force_by_obstacle", by_obstacle}},
                  1));
