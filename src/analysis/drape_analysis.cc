@@ -125,11 +125,12 @@ SpecimenSurface SurfaceAt(const Model& model, const std::vector<double>& positio
   return surface;
 }
 
-DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius,
-                                         const ShadowOptions& options) {
+namespace {
+
+// The DC of the specimen's surface at its draped and flat positions.
+DrapeCoefficient CoefficientOf(const SpecimenSurface& draped, const SpecimenSurface& flat,
+                               double disc_radius, const ShadowOptions& options) {
   DrapeCoefficient dc;
-  const SpecimenSurface draped = SurfaceAt(model, model.positions);
-  const SpecimenSurface flat = SurfaceAt(model, model.initial);
   dc.shadow = ProjectedArea(draped.points, draped.triangles, options);
   dc.flat_area = ProjectedArea(flat.points, flat.triangles, options).area;
   dc.ratio = dc.flat_area > 0.0 ? dc.shadow.area / dc.flat_area : 0.0;
@@ -137,8 +138,6 @@ DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius,
   if (disc_radius > 0.0) dc.cusick = CusickCoefficient(dc.shadow.area, dc.flat_area, disc_radius);
   return dc;
 }
-
-namespace {
 
 // The support (src/model/obstacle_kinds.h: a disk, a pin) of largest radius, or null.
 const ObstacleSpec* WidestSupport(const Scene& scene) {
@@ -224,6 +223,12 @@ double Prominence(const std::vector<double>& values, int peak) {
 
 }  // namespace
 
+DrapeCoefficient ComputeDrapeCoefficient(const Model& model, double disc_radius,
+                                         const ShadowOptions& options) {
+  return CoefficientOf(SurfaceAt(model, model.positions), SurfaceAt(model, model.initial),
+                       disc_radius, options);
+}
+
 RadialProfile ComputeRadialProfile(const std::vector<double>& positions,
                                    const std::vector<std::array<int, 3>>& triangles,
                                    const std::array<double, 2>& centre, int angles) {
@@ -297,10 +302,10 @@ std::array<double, 2> ProfileCentre(const Scene& scene, const Model& model) {
 DrapeAnalysis AnalyseDrape(const Scene& scene, const Model& model) {
   DrapeAnalysis analysis;
   analysis.disc_radius = DiscRadius(scene);
-  analysis.coefficient = ComputeDrapeCoefficient(model, analysis.disc_radius);
-  const std::array<double, 2> centre = ProfileCentre(scene, model);
   const SpecimenSurface draped = SurfaceAt(model, model.positions);
   const SpecimenSurface flat = SurfaceAt(model, model.initial);
+  analysis.coefficient = CoefficientOf(draped, flat, analysis.disc_radius, {});
+  const std::array<double, 2> centre = ProfileCentre(scene, model);
   analysis.profile = ComputeRadialProfile(draped.points, draped.triangles, centre);
   analysis.flat_profile = ComputeRadialProfile(flat.points, flat.triangles, centre);
   const auto& radius = analysis.profile.radius;

@@ -384,26 +384,41 @@ void AddFringe(const Eigen::Vector3d& centre, double radius, Mesh* mesh) {
     fringe.points.push_back(std::move(weights));
     return n + static_cast<int>(fringe.points.size()) - 1;
   };
+  auto angle_of = [&](int v) { return std::atan2(flat(v).y(), flat(v).x()); };
+  auto on_circle = [&](double angle) {
+    return Eigen::Vector2d(radius * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+  };
+  // The circle point of an outline node, shared by the two outline edges that meet there.
+  std::map<int, int> outer_of_node;
+  auto node_outer = [&](int v) {
+    auto found = outer_of_node.find(v);
+    if (found != outer_of_node.end()) return found->second;
+    Weights outer;
+    gradient_at(v).Add(on_circle(angle_of(v)) - flat(v), 1.0, &outer);
+    return outer_of_node[v] = add_point(std::move(outer));
+  };
   for (const Link& edge : OutlineEdges(*mesh)) {
     const int a = edge[0], b = edge[1];
-    const double from = std::atan2(flat(a).y(), flat(a).x());
-    const double span = std::remainder(std::atan2(flat(b).y(), flat(b).x()) - from, 2.0 * kPi);
+    const double from = angle_of(a);
+    const double span = std::remainder(angle_of(b) - from, 2.0 * kPi);
     const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(span) / kFringeArc)));
-    int inner_before = a, outer_before = -1;
-    for (int i = 0; i <= pieces; ++i) {
-      const double t = static_cast<double>(i) / pieces, angle = from + t * span;
-      const Eigen::Vector2d base = (1.0 - t) * flat(a) + t * flat(b);
-      const Eigen::Vector2d offset =
-          radius * Eigen::Vector2d(std::cos(angle), std::sin(angle)) - base;
-      Weights outer;
-      if (1.0 - t > 0.0) gradient_at(a).Add(offset, 1.0 - t, &outer);
-      if (t > 0.0) gradient_at(b).Add(offset, t, &outer);
-      const int outer_id = add_point(std::move(outer));
-      const int inner_id = i == 0 ? a : i == pieces ? b : add_point({{a, 1.0 - t}, {b, t}});
-      if (i > 0) {
-        fringe.triangles.push_back({inner_before, inner_id, outer_id});
-        fringe.triangles.push_back({inner_before, outer_id, outer_before});
+    int inner_before = a, outer_before = node_outer(a);
+    for (int i = 1; i <= pieces; ++i) {
+      const double t = static_cast<double>(i) / pieces;
+      int outer_id, inner_id;
+      if (i == pieces) {
+        outer_id = node_outer(b), inner_id = b;
+      } else {
+        const Eigen::Vector2d offset =
+            on_circle(from + t * span) - ((1.0 - t) * flat(a) + t * flat(b));
+        Weights outer;
+        gradient_at(a).Add(offset, 1.0 - t, &outer);
+        gradient_at(b).Add(offset, t, &outer);
+        outer_id = add_point(std::move(outer));
+        inner_id = add_point({{a, 1.0 - t}, {b, t}});
       }
+      fringe.triangles.push_back({inner_before, inner_id, outer_id});
+      fringe.triangles.push_back({inner_before, outer_id, outer_before});
       inner_before = inner_id, outer_before = outer_id;
     }
   }
