@@ -12,6 +12,7 @@
 #include "costs/fv_membrane.h"
 #include "src/model/psd_projection.h"
 #include "src/model/second_order.h"
+#include "src/model/small_product.h"
 
 namespace drape {
 namespace internal {
@@ -153,7 +154,7 @@ BendingNodes::Hessian CombineBending(const BendingNodes::Jacobian<12>& dq,
   Eigen::Matrix<double, 12, 12> h_q = gauss_newton;
   h_q.block<6, 6>(0, 0) += curvatures.section1;
   h_q.block<6, 6>(6, 6) += curvatures.section2;
-  BendingNodes::Hessian h = dq.transpose() * h_q * dq;
+  BendingNodes::Hessian h = SmallCongruence(dq, h_q);
   BendingNodes::AddRelativeToCentre(curvatures.k1, kW, kP, kE, &h);
   BendingNodes::AddDifference(curvatures.t2, kS, kN, &h);
   BendingNodes::AddRelativeToCentre(curvatures.k2, kS, kP, kN, &h);
@@ -187,7 +188,7 @@ void StoreTriangleProjection(bool semidefinite, const TriangleNodes::Hessian& h,
 // Jᵀ H J + M ⊗ I₃ over (u, v).
 Eigen::Matrix<double, 6, 6> MembraneRelative(const Eigen::Matrix<double, 3, 6>& j,
                                              const Eigen::Matrix3d& h_q, const Eigen::Matrix2d& m) {
-  Eigen::Matrix<double, 6, 6> h = j.transpose() * h_q * j;
+  Eigen::Matrix<double, 6, 6> h = SmallCongruence(j, h_q);
   for (int a = 0; a < 2; ++a) {
     for (int b = 0; b < 2; ++b) h.block<3, 3>(3 * a, 3 * b).diagonal().array() += m(a, b);
   }
@@ -228,8 +229,8 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
   dy.block<4, 6>(0, 0) = y1.jacobian;
   dy.block<4, 6>(4, 6) = y2.jacobian;
   const Eigen::Matrix<double, 12, 1> g_q = dy.transpose() * c;
-  const Eigen::Matrix<double, 8, 12> ldy = l * dy;
-  const Eigen::Matrix<double, 12, 12> gauss_newton = ldy.transpose() * ldy;
+  const Eigen::Matrix<double, 8, 12> ldy = SmallProduct(l, dy);
+  const Eigen::Matrix<double, 12, 12> gauss_newton = SmallProduct(ldy.transpose(), ldy);
   BendingCurvatures curvatures;
   curvatures.section1 = y1.WeightedHessian(c.data());
   curvatures.section2 = y2.WeightedHessian(c.data() + 4);
@@ -254,7 +255,7 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
   if (finite && projection) {  // the whole 15×15 matrix (fast_hessian.h, "Projection")
     Eigen::Map<BendingNodes::Hessian> projected(projection->hessian);
     projected = full_hessian;
-    projection->changed = ProjectSymmetric<15>(projection->filter, 15, projection->hessian);
+    projection->changed = ProjectTranslationFree<5>(projection->filter, projection->hessian);
   }
   return finite;
 }
@@ -272,8 +273,8 @@ bool FastHessian<FvBendingEdge>::Evaluate(const FvBendingEdge& functor, const do
   const Eigen::Vector3d g_q = l.transpose() * r;
   TriangleNodes::Jacobian<3> dq = TriangleNodes::Jacobian<3>::Zero();
   TriangleNodes::AddRelativeToCentre<3>(k.jacobian, 0, 1, 2, dq);
-  const TriangleNodes::Jacobian<3> j = l * dq;
-  const TriangleNodes::Hessian gauss_newton = j.transpose() * j;
+  const TriangleNodes::Jacobian<3> j = SmallProduct(l, dq);
+  const TriangleNodes::Hessian gauss_newton = SmallProduct(j.transpose(), j);
   Eigen::Matrix<double, 6, 6> curvature = k.WeightedHessian(g_q.data());
   TriangleNodes::Hessian h = gauss_newton;
   TriangleNodes::AddRelativeToCentre(curvature, 0, 1, 2, &h);

@@ -28,9 +28,11 @@
 //     not the nearest semidefinite matrix to H but a larger one (a compressed membrane arm of
 //     axial stiffness k keeps k·l/|u| > k along itself, where the whole term's projection would
 //     keep k); it replaces a 9×9 eigen-decomposition by a 3×3 and a 2×2 one.
-//   FvBending: the whole 15×15 local Hessian is projected (the nearest semidefinite matrix). The
-//     same block-wise construction (two 6×6 sections, two 6×6 binormals, two 3×3 tangents) was
-//     measured no cheaper than one 15×15 decomposition (docs/benchmarks.md).
+//   FvBending: the whole 15×15 local Hessian is projected (the nearest semidefinite matrix),
+//     through its 12×12 restriction to the motions that are not translations
+//     (ProjectTranslationFree). The same block-wise construction (two 6×6 sections, two 6×6
+//     binormals, two 3×3 tangents) was measured no cheaper than one 15×15 decomposition
+//     (docs/benchmarks.md).
 // tests/term_checks.h (ExpectStagedProjectionValid) checks H₊ ⪰ 0, H₊ − H ⪰ 0, translations in its
 // null space and H₊ = H where H ⪰ 0, for every finite-volume functor on every derivative check.
 //
