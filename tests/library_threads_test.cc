@@ -1,4 +1,5 @@
-// RunLibrariesOnOneThread: CHOLMOD's OpenMP regions and OpenBLAS end up on one thread.
+// RunLibrariesOnOneThread: CHOLMOD's OpenMP regions and OpenBLAS end up on one thread; the
+// OpenBLAS kernels drape asks for.
 #include "src/numerics/library_threads.h"
 
 #include <dlfcn.h>
@@ -29,6 +30,21 @@ TEST(LibraryThreads, OpenMpAndOpenBlasRunOnOneThreadUnlessTheUserChose) {
   EXPECT_EQ(again.openmp_single, result.openmp_single);
   EXPECT_EQ(again.openblas_single, result.openblas_single);
 }
+
+// Faster kernels are asked for only where OpenBLAS fell back to its generic ones, and only those
+// the processor runs.
+TEST(LibraryThreads, FasterBlasKernelsOnlyInPlaceOfTheGenericFallback) {
+  EXPECT_EQ(FasterBlasCore("Prescott", true, true), "SkylakeX");
+  EXPECT_EQ(FasterBlasCore("Prescott", false, true), "Haswell");
+  EXPECT_EQ(FasterBlasCore("Prescott", false, false), "");
+  EXPECT_EQ(FasterBlasCore("SkylakeX", true, true), "");
+  EXPECT_EQ(FasterBlasCore("Zen", false, true), "");
+  EXPECT_EQ(FasterBlasCore("", true, true), "");
+}
+
+// OpenBLAS is loaded with CHOLMOD and names its kernels (the benchmark and `drape compare` print
+// them).
+TEST(LibraryThreads, NamesTheLoadedBlasKernels) { EXPECT_FALSE(LoadedBlasKernels().core.empty()); }
 
 }  // namespace
 }  // namespace drape

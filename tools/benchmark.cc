@@ -548,8 +548,11 @@ int ScenesMain(int argc, char** argv) {
     }
     scenes.push_back(*it);
   }
-  std::printf("Assembly probe (this build, %u hardware threads; median of %d):\n\n",
-              std::thread::hardware_concurrency(), repeats);
+  const BlasKernels kernels = LoadedBlasKernels();
+  std::printf(
+      "Assembly probe (this build, %u hardware threads, OpenBLAS kernels %s%s; median of %d):\n\n",
+      std::thread::hardware_concurrency(), kernels.core.empty() ? "unknown" : kernels.core.c_str(),
+      kernels.chosen_by_drape ? " (chosen by drape, src/numerics/library_threads.h)" : "", repeats);
   std::printf(
       "| scene | nodes | terms | assembly wall s | factorisation wall s | assembly ÷ "
       "factorisation, wall | same, CPU | assembly CPU µs per node | without H₊: CPU µs per node "
@@ -595,6 +598,7 @@ int ScenesMain(int argc, char** argv) {
 }  // namespace drape
 
 int main(int argc, char** argv) {
+  drape::RestartWithFasterBlasKernels(argv);  // as drape does; solves it runs inherit the choice
   try {
     drape::RunLibrariesOnOneThread();  // as drape does (src/numerics/library_threads.h)
     if (argc > 1 && std::string(argv[1]) == "solvers") {

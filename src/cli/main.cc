@@ -6,9 +6,12 @@
 #include <vector>
 
 #include "src/cli/cli.h"
+#include "src/numerics/library_threads.h"
 #include "src/parallel/process_group.h"
 
 int main(int argc, char** argv) {
+  // Before anything else: OpenBLAS's kernels can only be chosen by running drape again.
+  drape::RestartWithFasterBlasKernels(argv);
   // Finalises MPI at the end if a command started it (only under mpirun/srun).
   const drape::ProcessGroupScope processes;
   const std::vector<std::string> args(argv + 1, argv + argc);

@@ -75,6 +75,12 @@ std::string Versions() {
   return text.str();
 }
 
+std::string BlasKernelsText() {
+  const BlasKernels kernels = LoadedBlasKernels();
+  if (kernels.core.empty()) return "unknown";
+  return kernels.core + (kernels.chosen_by_drape ? " (chosen by drape)" : "");
+}
+
 double RelativeError(const RunRecord& run) { return run.error.rms_m / run.size; }
 bool HasPositions(const RunRecord& run) { return !run.positions.empty(); }
 
@@ -438,7 +444,8 @@ std::vector<Block> HeaderBlocks(const CompareOptions& options, double total_time
           << (threads.openmp_single ? "on 1 thread" : "as the environment sets them")
           << ", OpenBLAS "
           << (threads.openblas_single ? "on 1 thread" : "as the environment sets it")
-          << " (src/numerics/library_threads.h). Versions: " << Versions() << '.';
+          << " (src/numerics/library_threads.h); OpenBLAS kernels " << BlasKernelsText()
+          << ". Versions: " << Versions() << '.';
   std::ostringstream method;
   method << "Each scene is solved first by the reference (newton to a relative residual of "
          << Number(options.reference_tolerance)

@@ -1,6 +1,7 @@
 #include "src/numerics/library_threads.h"
 
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <initializer_list>
@@ -39,6 +40,46 @@ LibraryThreads Configure() {
 LibraryThreads RunLibrariesOnOneThread() {
   static const LibraryThreads configured = Configure();
   return configured;
+}
+
+namespace {
+
+constexpr char kChoiceMarker[] = "DRAPE_CHOSE_OPENBLAS_CORETYPE";
+
+bool HasAvx512() {
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512cd") &&
+         __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") &&
+         __builtin_cpu_supports("avx512vl");
+}
+
+bool HasAvx2AndFma() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
+
+}  // namespace
+
+BlasKernels LoadedBlasKernels() {
+  BlasKernels kernels;
+  const auto corename = reinterpret_cast<char* (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_corename"));
+  if (corename != nullptr && corename() != nullptr) kernels.core = corename();
+  kernels.chosen_by_drape = std::getenv(kChoiceMarker) != nullptr;
+  return kernels;
+}
+
+std::string FasterBlasCore(const std::string& core, bool avx512, bool avx2_fma) {
+  if (core != "Prescott" && core != "prescott") return "";
+  if (avx512) return "SkylakeX";
+  if (avx2_fma) return "Haswell";
+  return "";
+}
+
+void RestartWithFasterBlasKernels(char** argv) {
+  if (std::getenv("OPENBLAS_CORETYPE") != nullptr) return;
+  const std::string faster = FasterBlasCore(LoadedBlasKernels().core, HasAvx512(), HasAvx2AndFma());
+  if (faster.empty()) return;
+  if (setenv("OPENBLAS_CORETYPE", faster.c_str(), 1) != 0) return;
+  setenv(kChoiceMarker, "1", 1);
+  execv("/proc/self/exe", argv);
+  unsetenv("OPENBLAS_CORETYPE");  // not run again: go on with the kernels loaded
+  unsetenv(kChoiceMarker);
 }
 
 }  // namespace drape

@@ -1,6 +1,8 @@
 #ifndef DRAPE_SRC_NUMERICS_LIBRARY_THREADS_H_
 #define DRAPE_SRC_NUMERICS_LIBRARY_THREADS_H_
 
+#include <string>
+
 namespace drape {
 
 // What RunLibrariesOnOneThread did: for each library, whether it was found and set to one thread.
@@ -18,6 +20,30 @@ struct LibraryThreads {
 // (docs/benchmarks.md). Both libraries are looked up at run time (they are dependencies of CHOLMOD
 // and LAPACK, not of drape); a missing one is left alone. Idempotent; the first call does the work.
 LibraryThreads RunLibrariesOnOneThread();
+
+// Which OpenBLAS kernels run, and whether drape chose them. Debian 12's OpenBLAS (0.3.21) picks
+// its kernels when it loads, from the processor's model number; for a model newer than it knows
+// (e.g. Intel's 5th-generation Xeon, model 207) it falls back to its generic Prescott (SSE3)
+// kernels. On such a processor one factorisation of the 100×100 sheet's Hessian takes 0.186 s with
+// them against 0.102 s with OpenBLAS's AVX-512 (SkylakeX) kernels (docs/benchmarks.md, session
+// 12). The kernels can only be chosen before the library loads, through OPENBLAS_CORETYPE.
+struct BlasKernels {
+  std::string core;              // openblas_get_corename(); empty if OpenBLAS is not loaded
+  bool chosen_by_drape = false;  // OPENBLAS_CORETYPE was set by RestartWithFasterBlasKernels
+};
+BlasKernels LoadedBlasKernels();
+
+// The OpenBLAS kernels to ask for where OpenBLAS runs `core`: "SkylakeX" on a processor with
+// AVX-512 (F, CD, BW, DQ, VL), "Haswell" on one with AVX2 and FMA, when `core` is the generic
+// fallback "Prescott"; otherwise empty (OpenBLAS knows the processor, or it has nothing faster).
+std::string FasterBlasCore(const std::string& core, bool avx512, bool avx2_fma);
+
+// Called first in main(). Where OpenBLAS runs its generic fallback on a processor that has faster
+// kernels (FasterBlasCore) and the user did not choose (OPENBLAS_CORETYPE unset), sets
+// OPENBLAS_CORETYPE and runs the same program again with the same arguments (/proc/self/exe), so
+// that OpenBLAS loads those kernels; MPI and the rest start only in the new image. Returns where
+// nothing is to be done, or if the program cannot be run again (it goes on as it is).
+void RestartWithFasterBlasKernels(char** argv);
 
 }  // namespace drape
 
