@@ -277,6 +277,14 @@ TEST_F(CliTest, ResultFolderRecordsItsProvenance) {
   const YAML::Node summary = Summary(out_);
   EXPECT_EQ(summary["format_version"].as<int>(), 2);
   EXPECT_EQ(summary["drape_version"].as<std::string>(), DrapeVersion());
+  // The drape binary names its OpenBLAS kernels, and never runs OpenBLAS's generic fallback where
+  // the processor has faster ones and the user did not choose (RestartWithFasterBlasKernels).
+  const std::string kernels = summary["blas_kernels"].as<std::string>();
+  EXPECT_NE(kernels, "unknown");  // OpenBLAS comes with CHOLMOD
+  if (std::getenv("OPENBLAS_CORETYPE") == nullptr && __builtin_cpu_supports("avx2") &&
+      __builtin_cpu_supports("fma")) {
+    EXPECT_EQ(kernels.find("Prescott"), std::string::npos) << kernels;
+  }
   EXPECT_EQ(summary["command_line"].as<std::string>(),
             "drape solve " + scene + " --set mesh.nodes=7 --set material.springs.structural=60");
   EXPECT_EQ(summary["overrides"].as<std::vector<std::string>>(),

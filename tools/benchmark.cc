@@ -548,11 +548,9 @@ int ScenesMain(int argc, char** argv) {
     }
     scenes.push_back(*it);
   }
-  const BlasKernels kernels = LoadedBlasKernels();
   std::printf(
-      "Assembly probe (this build, %u hardware threads, OpenBLAS kernels %s%s; median of %d):\n\n",
-      std::thread::hardware_concurrency(), kernels.core.empty() ? "unknown" : kernels.core.c_str(),
-      kernels.chosen_by_drape ? " (chosen by drape, src/numerics/library_threads.h)" : "", repeats);
+      "Assembly probe (this build, %u hardware threads, OpenBLAS kernels %s; median of %d):\n\n",
+      std::thread::hardware_concurrency(), BlasKernelsText().c_str(), repeats);
   std::printf(
       "| scene | nodes | terms | assembly wall s | factorisation wall s | assembly ÷ "
       "factorisation, wall | same, CPU | assembly CPU µs per node | without H₊: CPU µs per node "

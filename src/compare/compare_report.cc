@@ -75,12 +75,6 @@ std::string Versions() {
   return text.str();
 }
 
-std::string BlasKernelsText() {
-  const BlasKernels kernels = LoadedBlasKernels();
-  if (kernels.core.empty()) return "unknown";
-  return kernels.core + (kernels.chosen_by_drape ? " (chosen by drape)" : "");
-}
-
 double RelativeError(const RunRecord& run) { return run.error.rms_m / run.size; }
 bool HasPositions(const RunRecord& run) { return !run.positions.empty(); }
 

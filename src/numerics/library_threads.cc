@@ -64,6 +64,12 @@ BlasKernels LoadedBlasKernels() {
   return kernels;
 }
 
+std::string BlasKernelsText() {
+  const BlasKernels kernels = LoadedBlasKernels();
+  if (kernels.core.empty()) return "unknown";
+  return kernels.core + (kernels.chosen_by_drape ? " (chosen by drape)" : "");
+}
+
 std::string FasterBlasCore(const std::string& core, bool avx512, bool avx2_fma) {
   if (core != "Prescott" && core != "prescott") return "";
   if (avx512) return "SkylakeX";

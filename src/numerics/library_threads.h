@@ -32,6 +32,8 @@ struct BlasKernels {
   bool chosen_by_drape = false;  // OPENBLAS_CORETYPE was set by RestartWithFasterBlasKernels
 };
 BlasKernels LoadedBlasKernels();
+// The same as a line of a record: "SkylakeX (chosen by drape)", "Prescott", or "unknown".
+std::string BlasKernelsText();
 
 // The OpenBLAS kernels to ask for where OpenBLAS runs `core`: "SkylakeX" on a processor with
 // AVX-512 (F, CD, BW, DQ, VL), "Haswell" on one with AVX2 and FMA, when `core` is the generic

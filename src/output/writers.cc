@@ -21,6 +21,7 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/model/contact.h"
+#include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
 #include "src/output/json.h"
 #include "src/output/render.h"
@@ -175,12 +176,14 @@ std::string BalanceObject(const Certificate& certificate) {
                     1);
 }
 
-// summary.json's provenance: the format, drape's version, the command line, its --set overrides
+// summary.json's provenance: the format, drape's version, the OpenBLAS kernels (the iterates'
+// rounding depends on them), the command line, its --set overrides
 // and the material parameters in SI units (with their units).
 void AddProvenanceMembers(const Scene& scene, const Provenance& provenance,
                           std::vector<std::pair<std::string, std::string>>* members) {
   members->emplace_back("format_version", std::to_string(kResultFormatVersion));
   members->emplace_back("drape_version", JsonString(DrapeVersion()));
+  members->emplace_back("blas_kernels", JsonString(BlasKernelsText()));
   members->emplace_back("command_line", JsonString(provenance.command_line));
   std::string overrides = "[";
   for (size_t k = 0; k < provenance.overrides.size(); ++k) {
