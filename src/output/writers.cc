@@ -177,8 +177,8 @@ std::string BalanceObject(const Certificate& certificate) {
 }
 
 // summary.json's provenance: the format, drape's version, the OpenBLAS kernels (the iterates'
-// rounding depends on them), the command line, its --set overrides
-// and the material parameters in SI units (with their units).
+// rounding depends on them), the command line, its --set overrides and the material parameters in
+// SI units (with their units).
 void AddProvenanceMembers(const Scene& scene, const Provenance& provenance,
                           std::vector<std::pair<std::string, std::string>>* members) {
   members->emplace_back("format_version", std::to_string(kResultFormatVersion));
