@@ -99,9 +99,18 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
   return report;
 }
 
+namespace {
+
+// ρ: a point's distance from a disk's axis.
+double DistanceFromAxis(const ObstacleSpec& disc, const double* x) {
+  return std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
+}
+
+}  // namespace
+
 DiscPlace PlaceOnDisc(const ObstacleSpec& disc, double clearance, const double* x) {
   const double h = x[2] - disc.center.z();
-  const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
+  const double rho = DistanceFromAxis(disc, x);
   if (rho > disc.radius || h >= clearance) return DiscPlace::kClear;
   if (h > -clearance) return DiscPlace::kInLayer;
   return rho <= disc.radius - clearance ? DiscPlace::kUnder : DiscPlace::kBesideRimBelow;
@@ -121,8 +130,7 @@ UnderDisks NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double cl
         continue;
       if (!counted) ++under.nodes;
       counted = true;
-      const double rho = std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
-      under.inside = std::max(under.inside, disc.radius - rho);
+      under.inside = std::max(under.inside, disc.radius - DistanceFromAxis(disc, x));
     }
   }
   return under;

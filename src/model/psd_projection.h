@@ -18,6 +18,14 @@ namespace drape {
 // compressed spring then resists sideways motion as much as a stretched one would).
 enum class EigenvalueFilter { kClamp, kAbsolute };
 
+// Whether an LDLᵀ factorisation shows a symmetric matrix to be semidefinite to `tolerance` (every
+// pivot at least −tolerance).
+template <typename Matrix>
+bool LdltShowsSemidefinite(const Matrix& matrix, double tolerance) {
+  const Eigen::LDLT<typename Matrix::PlainObject> ldlt(matrix);
+  return ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -tolerance;
+}
+
 // The n×n symmetric matrix at `data` (row-major; N = n, or Eigen::Dynamic) made positive
 // semidefinite in place: each negative eigenvalue set to zero (kClamp) or to its magnitude
 // (kAbsolute). A matrix that an LDLᵀ factorisation already shows to be semidefinite (to roundoff:
@@ -30,8 +38,7 @@ bool ProjectSymmetric(EigenvalueFilter filter, int n, double* data) {
   const double scale = matrix.cwiseAbs().maxCoeff();
   if (scale == 0.0) return false;
   const double tolerance = 1e-12 * scale;  // rounding of a semidefinite matrix's zero eigenvalues
-  const Eigen::LDLT<Matrix> ldlt(matrix);
-  if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -tolerance) return false;
+  if (LdltShowsSemidefinite(matrix, tolerance)) return false;
   const Eigen::SelfAdjointEigenSolver<Matrix> eigen(matrix);
   const auto& values = eigen.eigenvalues();
   if (values.minCoeff() >= -tolerance) return false;
@@ -81,8 +88,7 @@ bool ProjectTranslationFree(EigenvalueFilter filter, double* data) {
   if (scale == 0.0) return false;
   const double tolerance = 1e-12 * scale;
   const Restricted restricted = SmallCongruence(basis, matrix);
-  const Eigen::LDLT<Restricted> ldlt(restricted);
-  if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -tolerance) return false;
+  if (LdltShowsSemidefinite(restricted, tolerance)) return false;
   const Eigen::SelfAdjointEigenSolver<Restricted> eigen(restricted);
   const auto& values = eigen.eigenvalues();  // ascending
   if (values[0] >= -tolerance) return false;
@@ -105,8 +111,7 @@ template <typename Matrix>
 bool IsSemidefinite(const Matrix& matrix) {
   const double scale = matrix.cwiseAbs().maxCoeff();
   if (scale == 0.0) return true;
-  const Eigen::LDLT<Matrix> ldlt(matrix);
-  return ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() >= -1e-12 * scale;
+  return LdltShowsSemidefinite(matrix, 1e-12 * scale);
 }
 
 }  // namespace drape
