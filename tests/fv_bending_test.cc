@@ -89,9 +89,10 @@ TEST(FvBendingEdge, DerivativesMatchDifferencesAtRandomAndFlatStates) {
 }
 
 // The staged projection (src/model/fast_hessian.h) at states where the exact Hessian is
-// indefinite: semidefinite, above H, H₊ = H where H is semidefinite (the shared check); and it
-// does change something at some of these states (the check is not vacuous) but not at rest.
-TEST(FvBending, StagedProjectionIsSemidefiniteAboveTheHessianAndExactWhereItCan) {
+// indefinite: semidefinite, Ceres's Jᵀ J for the internal volume and above H for the edge one,
+// H₊ = H where H is semidefinite (the shared check); and it does change something at some of
+// these states (the check is not vacuous) but not at rest.
+TEST(FvBending, StagedProjectionIsSemidefiniteItsStandInAndExactWhereItCan) {
   const auto internal = InternalVolume();
   const auto edge = EdgeVolume();
   int changed = 0, changed_edge = 0;

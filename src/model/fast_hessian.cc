@@ -202,7 +202,7 @@ Eigen::Matrix<double, 6, 6> MembraneRelative(const Eigen::Matrix<double, 3, 6>& 
 //   ∇²E = Jᵀ J  +  ∂Qᵀ (Σ_i c_i ∇²y_i) ∂Q  +  Σ_j g_Q,j ∇²Q_j,   J = L ∂y/∂Q ∂Q/∂x, c = Lᵀ r,
 // a Gauss–Newton part (semidefinite by construction) and six small curvature blocks: two sections
 // (6×6 over (k, t)), two binormals (6×6 over their relative coordinates), two tangents (3×3).
-// Its projection is that of the whole 15×15 matrix (fast_hessian.h, "Projection").
+// Its stand-in, where ∇²E is indefinite, is the Gauss–Newton part (fast_hessian.h, "Projection").
 bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* const* x,
                                       double* energy, double* gradient, double* hessian,
                                       StagedProjection* projection) {
@@ -252,10 +252,14 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
   *energy = 0.5 * r.squaredNorm();
   const bool finite =
       std::isfinite(*energy) && full_gradient.allFinite() && full_hessian.allFinite();
-  if (finite && projection) {  // the whole 15×15 matrix (fast_hessian.h, "Projection")
+  if (finite && projection) {  // H where semidefinite, else Jᵀ J (fast_hessian.h, "Projection")
     Eigen::Map<BendingNodes::Hessian> projected(projection->hessian);
-    projected = full_hessian;
-    projection->changed = ProjectTranslationFree<5>(projection->filter, projection->hessian);
+    projection->changed = !IsSemidefinite(full_hessian);
+    if (projection->changed) {
+      projected = SmallCongruence(dq, gauss_newton);
+    } else {
+      projected = full_hessian;
+    }
   }
   return finite;
 }

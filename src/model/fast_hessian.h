@@ -28,13 +28,17 @@
 //     not the nearest semidefinite matrix to H but a larger one (a compressed membrane arm of
 //     axial stiffness k keeps k·l/|u| > k along itself, where the whole term's projection would
 //     keep k); it replaces a 9×9 eigen-decomposition by a 3×3 and a 2×2 one.
-//   FvBending: the whole 15×15 local Hessian is projected (the nearest semidefinite matrix),
-//     through its 12×12 restriction to the motions that are not translations
-//     (ProjectTranslationFree). The same block-wise construction (two 6×6 sections, two 6×6
-//     binormals, two 3×3 tangents) was measured no cheaper than one 15×15 decomposition
-//     (docs/benchmarks.md).
-// tests/term_checks.h (ExpectStagedProjectionValid) checks H₊ ⪰ 0, H₊ − H ⪰ 0, translations in its
-// null space and H₊ = H where H ⪰ 0, for every finite-volume functor on every derivative check.
+//   FvBending: the Gauss–Newton part Jᵀ J of E = ½|r|² (J = ∂r/∂x, 8×15), which the chain rule
+//     has already formed: no decomposition at all. It drops the curvature Σ r_i ∇²r_i whole, the
+//     positive part too, so H₊ − H ⪰ 0 does not hold here; the filter does not apply. Measured
+//     against the nearest semidefinite matrix (the 15×15 eigen-decomposition, through its 12×12
+//     restriction to the motions that are not translations; docs/benchmarks.md, session 13): an
+//     assembly with H₊ 30 % cheaper, and newton's iterations within the scatter of the paths
+//     through the folds.
+// tests/term_checks.h (ExpectStagedProjectionValid) checks, for every finite-volume functor on
+// every derivative check, H₊ ⪰ 0, translations in its null space, H₊ = H where H ⪰ 0, and where H
+// is indefinite H₊ − H ⪰ 0 (StandIn::kAboveHessian) or H₊ = Jᵀ J with J from Ceres's
+// differentiation of the functor's residuals (StandIn::kGaussNewton).
 //
 // FastHessian<Functor>::kAvailable says whether a functor has such a path (src/model/term.h uses
 // it in place of the nested Jets). The paths are defined in fast_hessian.cc, compiled once: this
@@ -51,6 +55,12 @@ namespace drape {
 struct FvBending;
 struct FvBendingEdge;
 struct FvMembrane;
+
+// What a term's stand-in is where its Hessian is indefinite (see "Projection" above).
+enum class StandIn {
+  kAboveHessian,  // H₊ − H ⪰ 0: each small curvature block made semidefinite on its own
+  kGaussNewton,   // H₊ = Jᵀ J, the Gauss–Newton part of E = ½|r|²
+};
 
 namespace internal {
 
@@ -73,6 +83,7 @@ struct StagedProjection {
 template <>
 struct FastHessian<FvBending> {
   static constexpr bool kAvailable = true;
+  static constexpr StandIn kStandIn = StandIn::kGaussNewton;
   static bool Evaluate(const FvBending& functor, const double* const* x, double* energy,
                        double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
@@ -80,6 +91,7 @@ struct FastHessian<FvBending> {
 template <>
 struct FastHessian<FvBendingEdge> {
   static constexpr bool kAvailable = true;
+  static constexpr StandIn kStandIn = StandIn::kAboveHessian;
   static bool Evaluate(const FvBendingEdge& functor, const double* const* x, double* energy,
                        double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
@@ -87,6 +99,7 @@ struct FastHessian<FvBendingEdge> {
 template <>
 struct FastHessian<FvMembrane> {
   static constexpr bool kAvailable = true;
+  static constexpr StandIn kStandIn = StandIn::kAboveHessian;
   static bool Evaluate(const FvMembrane& functor, const double* const* x, double* energy,
                        double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };

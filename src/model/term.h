@@ -57,6 +57,8 @@ class Term {
   // Whether EnergyHessianProjected is available: the term builds a semidefinite stand-in for its
   // Hessian from its functor's stages (src/model/fast_hessian.h, "Projection").
   virtual bool HasStagedProjection() const { return false; }
+  // What that stand-in is where the Hessian is indefinite (src/model/fast_hessian.h).
+  virtual StandIn StagedStandIn() const { return StandIn::kAboveHessian; }
   // EnergyHessian, and in `projected` (same layout) that semidefinite stand-in, with `*changed`
   // whether it differs from `hessian`. False if not evaluable, or if the term has none.
   virtual bool EnergyHessianProjected(const double* /*positions*/, EigenvalueFilter /*filter*/,
@@ -247,6 +249,14 @@ class AutoDiffTerm : public Term {
   }
 
   bool HasStagedProjection() const override { return internal::FastHessian<Functor>::kAvailable; }
+
+  StandIn StagedStandIn() const override {
+    if constexpr (internal::FastHessian<Functor>::kAvailable) {
+      return internal::FastHessian<Functor>::kStandIn;
+    } else {
+      return StandIn::kAboveHessian;
+    }
+  }
 
   bool EnergyHessianProjected(const double* positions, EigenvalueFilter filter, double* energy,
                               double* gradient, double* hessian, double* projected,
