@@ -31,10 +31,10 @@
 //   FvBending: the Gauss–Newton part Jᵀ J of E = ½|r|² (J = ∂r/∂x, 8×15), which the chain rule
 //     has already formed: no decomposition at all. It drops the curvature Σ r_i ∇²r_i whole, the
 //     positive part too, so H₊ − H ⪰ 0 does not hold here; the filter does not apply. Measured
-//     against the nearest semidefinite matrix (the 15×15 eigen-decomposition, through its 12×12
-//     restriction to the motions that are not translations; docs/benchmarks.md, session 13): an
-//     assembly with H₊ 30 % cheaper, and newton's iterations within the scatter of the paths
-//     through the folds.
+//     against the nearest semidefinite matrix (the eigen-decomposition of its 12×12 restriction
+//     to the motions that are not translations; docs/benchmarks.md, session 13): an assembly
+//     with H₊ about half as costly, and fewer newton iterations on four benchmark scenes of
+//     five (the sphere took more), as far as the scatter of the paths through the folds shows.
 // tests/term_checks.h (ExpectStagedProjectionValid) checks, for every finite-volume functor on
 // every derivative check, H₊ ⪰ 0, translations in its null space, H₊ = H where H ⪰ 0, and where H
 // is indefinite H₊ − H ⪰ 0 (StandIn::kAboveHessian) or H₊ = Jᵀ J with J from Ceres's
