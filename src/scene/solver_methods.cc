@@ -71,7 +71,8 @@ std::vector<SolverMethod> BuildCatalogue() {
              "try the unprojected Hessian only below this relative residual"),
         Real("absolute_projection_above", 1e-4, 0, kInf,
              "negative term eigenvalues take their magnitude above this relative residual, "
-             "zero below (0: magnitudes always)"),
+             "zero below (0: magnitudes always; the finite-volume bending term's stand-in is its "
+             "Gauss-Newton part either way)"),
         Integer("exact_retry_steps", 10, 1, 1e6,
                 "after the Hessian fails to factorise, steps before it is tried again"),
         Integer("escape_saddles", 1, 0, 1,
