@@ -145,6 +145,9 @@ void RunNlopt(FitProblem& problem, Recorder* recorder, FitResult* result) {
     result->converged = true;
   } catch (const nlopt::forced_stop&) {
     result->termination = "interrupted";
+  } catch (const std::runtime_error& error) {  // NLOPT_FAILURE (the two above derive from it)
+    result->termination = std::string("NLopt stopped with a generic failure (") + error.what() +
+                          "); the result is the best point it evaluated";
   }
 }
 
