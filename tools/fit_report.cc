@@ -279,7 +279,11 @@ void WriteReport(const std::vector<Case>& cases, const std::vector<std::vector<R
          "end on a noisy objective; the implicit Jacobian differentiates the shadow with a step "
          "of 2e-3 of the specimen's size along dx*/dθ.\n"
       << "- With noise, every method converges to the same least-squares optimum (same error); "
-         "the error is then that of the data, not of the method.\n\n";
+         "the error is then that of the data, not of the method.\n"
+      << "- `converged` no is the method's own verdict, not the error's: sbplx and cobyla stop at "
+         "their evaluation limit, and implicit-lbfgs can end in NLopt's generic failure "
+         "(NLOPT_FAILURE) where the objective is flat to rounding near the optimum. `drape fit` "
+         "then reports the best point it evaluated, with that reason as its termination.\n\n";
 }
 
 }  // namespace
