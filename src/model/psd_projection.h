@@ -24,9 +24,8 @@ enum class EigenvalueFilter { kClamp, kAbsolute };
 // negative one (a random 9×9 of rank 6 did, tests/psd_projection_test.cc).
 template <typename Matrix>
 bool LdltShowsSemidefinite(const Matrix& matrix, double tolerance) {
-  typename Matrix::PlainObject shifted = matrix;
-  shifted.diagonal().array() += tolerance;
-  const Eigen::LDLT<typename Matrix::PlainObject> ldlt(shifted);
+  using Plain = typename Matrix::PlainObject;
+  const Eigen::LDLT<Plain> ldlt(matrix + tolerance * Plain::Identity(matrix.rows(), matrix.cols()));
   return ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0.0;
 }
 
