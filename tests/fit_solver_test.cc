@@ -167,10 +167,12 @@ TEST(FitSolverTest, AFitOnThreadsGivesTheSerialFitBitForBit) {
   }
 }
 
+// D_warp, D_weft and G of configs/fit/drape_fv.yaml, which the scan fits must recover.
+constexpr double kScanTruth[3] = {1.0e-4, 5.0e-5, 5.0};
+
 // D_warp, D_weft and G from a scanned drape: a point cloud on the finite-volume drape's surface
 // (triangle centroids and edge midpoints, not the nodes), compared by nearest-point distance.
 TEST(FitSolverTest, RecoversBendingAndShearRigiditiesFromAScannedDrape) {
-  const double truth[3] = {1.0e-4, 5.0e-5, 5.0};  // configs/fit/drape_fv.yaml
   const TrueSolve solved = SolveTruth("configs/fit/drape_fv.yaml", {});
   for (const double noise : {0.0, kNoise}) {
     const std::string folder = FitTempDir(noise > 0 ? "scan_noisy" : "scan");
@@ -178,7 +180,7 @@ TEST(FitSolverTest, RecoversBendingAndShearRigiditiesFromAScannedDrape) {
     const FitResult result = FitFile(ScanFit(folder, "implicit-lm"));
     EXPECT_TRUE(result.converged) << result.termination;
     for (int j = 0; j < 3; ++j) {
-      EXPECT_LT(RelativeError(result.parameters[j], truth[j]), noise > 0 ? 0.02 : 1e-4)
+      EXPECT_LT(RelativeError(result.parameters[j], kScanTruth[j]), noise > 0 ? 0.02 : 1e-4)
           << "parameter " << j << " noise " << noise;
       EXPECT_TRUE(result.identifiability.identifiable[j]);
     }
@@ -190,7 +192,6 @@ TEST(FitSolverTest, RecoversBendingAndShearRigiditiesFromAScannedDrape) {
 // the development machine it did at a relative error of 1e-11, and the exception ended the
 // program. That is a result, not a crash: the best point, with the reason.
 TEST(FitSolverTest, ImplicitLbfgsOnAScannedDrapeEndsWithAResult) {
-  const double truth[3] = {1.0e-4, 5.0e-5, 5.0};  // configs/fit/drape_fv.yaml
   const TrueSolve solved = SolveTruth("configs/fit/drape_fv.yaml", {});
   const std::string folder = FitTempDir("scan_lbfgs");
   WriteScan(solved.model, 0.0, 7, folder + "/scan.csv");
@@ -200,7 +201,7 @@ TEST(FitSolverTest, ImplicitLbfgsOnAScannedDrapeEndsWithAResult) {
     EXPECT_NE(result.termination.find("NLopt"), std::string::npos) << result.termination;
   }
   for (int j = 0; j < 3; ++j) {
-    EXPECT_LT(RelativeError(result.parameters[j], truth[j]), 1e-4) << "parameter " << j;
+    EXPECT_LT(RelativeError(result.parameters[j], kScanTruth[j]), 1e-4) << "parameter " << j;
   }
 }
 
