@@ -6,77 +6,17 @@
 
 #include <Eigen/Core>
 #include <cmath>
-#include <type_traits>
 
 #include "costs/fv_bending.h"
 #include "costs/fv_membrane.h"
 #include "src/model/psd_projection.h"
 #include "src/model/second_order.h"
 #include "src/model/small_product.h"
+#include "src/model/stage_derivatives.h"
 
 namespace drape {
 namespace internal {
 namespace {
-
-// Value, Jacobian and the Hessian of each output of a small function R^kIn → R^kOut, by
-// second-order forward differentiation (src/model/second_order.h). `function(in, out)` is called
-// with in[kIn] and out[kOut] of that number type.
-template <int kIn, int kOut>
-struct LocalExpansion {
-  Eigen::Matrix<double, kOut, 1> value;
-  Eigen::Matrix<double, kOut, kIn> jacobian;
-  Eigen::Matrix<double, kIn, kIn> hessian[kOut];
-
-  // Σ_i weights_i ∇²out_i.
-  Eigen::Matrix<double, kIn, kIn> WeightedHessian(const double* weights) const {
-    Eigen::Matrix<double, kIn, kIn> sum = weights[0] * hessian[0];
-    for (int i = 1; i < kOut; ++i) sum += weights[i] * hessian[i];
-    return sum;
-  }
-};
-
-template <int kIn, int kOut, typename Function>
-void Expand(const Function& function, const double* input, LocalExpansion<kIn, kOut>* expansion) {
-  using Number = SecondOrder<kIn>;
-  Number in[kIn], out[kOut];
-  for (int k = 0; k < kIn; ++k) in[k] = Number::Variable(input[k], k);
-  function(in, out);
-  for (int i = 0; i < kOut; ++i) {
-    expansion->value[i] = out[i].value;
-    for (int r = 0; r < kIn; ++r) {
-      expansion->jacobian(i, r) = out[i].gradient[r];
-      for (int c = r; c < kIn; ++c) {
-        expansion->hessian[i](r, c) = expansion->hessian[i](c, r) = out[i].Hessian(r, c);
-      }
-    }
-  }
-}
-
-// The curvature binormal of a → p → b over the relative coordinates (a − p, b − p).
-void ExpandBinormal(const double* a, const double* p, const double* b,
-                    LocalExpansion<6, 3>* expansion) {
-  const double relative[6] = {a[0] - p[0], a[1] - p[1], a[2] - p[2],
-                              b[0] - p[0], b[1] - p[1], b[2] - p[2]};
-  Expand<6, 3>(
-      [](const auto* in, auto* out) {
-        using T = std::remove_const_t<std::remove_reference_t<decltype(in[0])>>;
-        const T origin[3] = {T(), T(), T()};
-        CurvatureBinormal(in, origin, in + 3, out);
-      },
-      relative, expansion);
-}
-
-// The unit vector along b − a over the coordinates of b − a.
-void ExpandUnitDirection(const double* a, const double* b, LocalExpansion<3, 3>* expansion) {
-  const double relative[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  Expand<3, 3>(
-      [](const auto* in, auto* out) {
-        using T = std::remove_const_t<std::remove_reference_t<decltype(in[0])>>;
-        const T origin[3] = {T(), T(), T()};
-        UnitDirection(origin, in, out);
-      },
-      relative, expansion);
-}
 
 // The constant matrix L of a functor's residual stage r = L y, read off by a first-order Jet.
 template <int kIn, int kOut, typename Function>
@@ -162,15 +102,6 @@ BendingNodes::Hessian CombineBending(const BendingNodes::Jacobian<12>& dq,
   return h;
 }
 
-// The section of binormal k and tangent t (both with their values) over (k, t).
-template <int kTangentIn>
-void ExpandSection(const LocalExpansion<6, 3>& k, const LocalExpansion<kTangentIn, 3>& t,
-                   double size, LocalExpansion<6, 4>* section) {
-  const double input[6] = {k.value[0], k.value[1], k.value[2], t.value[0], t.value[1], t.value[2]};
-  Expand<6, 4>([size](const auto* in, auto* out) { FvBending::Section(in, in + 3, size, out); },
-               input, section);
-}
-
 // A 3-node term's H₊ into `projection`: its exact Hessian `h` where that is semidefinite, else
 // the stand-in that `blockwise()` builds from its curvature blocks (fast_hessian.h, "Projection").
 template <typename Blockwise>
@@ -207,15 +138,10 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
                                       double* energy, double* gradient, double* hessian,
                                       StagedProjection* projection) {
   enum { kW, kP, kE, kS, kN };
-  LocalExpansion<6, 3> k1, k2;
-  LocalExpansion<3, 3> t1, t2;
-  ExpandBinormal(x[kW], x[kP], x[kE], &k1);
-  ExpandBinormal(x[kS], x[kP], x[kN], &k2);
-  ExpandUnitDirection(x[kW], x[kE], &t1);
-  ExpandUnitDirection(x[kS], x[kN], &t2);
-  LocalExpansion<6, 4> y1, y2;
-  ExpandSection(k1, t2, functor.size1, &y1);
-  ExpandSection(k2, t1, functor.size2, &y2);
+  const BinormalDerivatives k1(x[kW], x[kP], x[kE]), k2(x[kS], x[kP], x[kN]);
+  const UnitDirectionDerivatives t1(x[kW], x[kE]), t2(x[kS], x[kN]);
+  const SectionDerivatives y1(k1.value, t2.value, functor.size1);
+  const SectionDerivatives y2(k2.value, t1.value, functor.size2);
 
   const Eigen::Matrix<double, 8, 8> l =
       LinearStage<8, 8>([&functor](const auto* y, auto* r) { functor.Residuals(y, y + 4, r); });
@@ -255,8 +181,9 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
   if (finite && projection) {  // H where semidefinite, else Jᵀ J (fast_hessian.h, "Projection")
     Eigen::Map<BendingNodes::Hessian> projected(projection->hessian);
     projection->changed = !IsSemidefinite(full_hessian);
-    if (projection->changed) {
-      projected = SmallCongruence(dq, gauss_newton);
+    if (projection->changed) {  // Jᵀ J with J = L ∂y/∂Q ∂Q/∂x (8×15)
+      const Eigen::Matrix<double, 8, 15> j = SmallProduct(ldy, dq);
+      projected = SmallProduct(j.transpose(), j);
     } else {
       projected = full_hessian;
     }
@@ -269,8 +196,7 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
 bool FastHessian<FvBendingEdge>::Evaluate(const FvBendingEdge& functor, const double* const* x,
                                           double* energy, double* gradient, double* hessian,
                                           StagedProjection* projection) {
-  LocalExpansion<6, 3> k;
-  ExpandBinormal(x[0], x[1], x[2], &k);
+  const BinormalDerivatives k(x[0], x[1], x[2]);
   const Eigen::Matrix3d l =
       LinearStage<3, 3>([&functor](const auto* q, auto* r) { functor.Residuals(q, r); });
   const Eigen::Vector3d r = l * k.value;

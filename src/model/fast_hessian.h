@@ -7,14 +7,16 @@
 // the coordinates), then its residuals from those 3 numbers. Nested Jets over one whole functor
 // carry 6–12 derivatives through every operation; here each stage is differentiated on its own
 // with the few variables it reads (6 relative coordinates for a binormal, 3 for a tangent, 6 for
-// a section, 3 Gram entries), by second-order forward differentiation (second_order.h: value,
-// gradient and packed Hessian in one number), and the results are chained: for E = ½|r|², r = L
-// y(Q(x)),
+// a section, 3 Gram entries), and the results are chained: for E = ½|r|², r = L y(Q(x)),
 //   ∇E = J_Qᵀ g_Q,   ∇²E = J_Qᵀ H_Q J_Q + Σ_j g_Q,j ∇²Q_j,
 // where g_Q, H_Q are the gradient and Hessian of E over the intermediate values Q (themselves from
 // the chain rule through the sections and the constant matrix L, read off the functor's linear
-// residual stage by a first-order Jet). Every stage function is the functor's own; the results are
-// checked against the nested-Jet Hessian of the whole functor in tests/term_checks.h.
+// residual stage by a first-order Jet). The bending stages' values are the functor's own stage
+// functions; their Jacobians and weighted Hessians Σ_j g_j ∇²Q_j are closed forms
+// (stage_derivatives.h, each checked against second-order automatic differentiation of the same
+// stage function). FvMembrane's residual stage is differentiated by second-order forward
+// differentiation (second_order.h: value, gradient and packed Hessian in one number). Every
+// result is checked against the nested-Jet Hessian of the whole functor in tests/term_checks.h.
 //
 // Projection (StagedProjection, for the projected-Newton matrix H₊): a term whose exact local
 // Hessian is positive semidefinite (LDLᵀ, to 1e-12 of its largest entry) gives it unchanged.
