@@ -95,6 +95,8 @@ void FreeHessian::BuildDestinations() {
   const std::vector<int>& to_free = dofs_.global_to_free();
   term_offsets_.reserve(model_.terms.size() + 1);
   term_offsets_.push_back(0);
+  scatter_starts_.reserve(model_.terms.size() + 1);
+  scatter_starts_.push_back(0);
   for (const auto& term : model_.terms) {
     const int n = term->num_coordinates();
     const auto& nodes = term->nodes();
@@ -102,16 +104,16 @@ void FreeHessian::BuildDestinations() {
       const int row = to_free[3 * nodes[r / 3] + r % 3];
       for (int c = 0; c < n; ++c) {
         const int column = to_free[3 * nodes[c / 3] + c % 3];
-        int destination = -1;
-        if (row >= 0 && column >= 0 && row <= column) {
-          const auto first = rows_.begin() + column_starts_[column];
-          const auto last = rows_.begin() + column_starts_[column + 1];
-          destination = static_cast<int>(std::lower_bound(first, last, row) - rows_.begin());
-        }
-        destinations_.push_back(destination);
+        if (row < 0 || column < 0 || row > column) continue;
+        const auto first = rows_.begin() + column_starts_[column];
+        const auto last = rows_.begin() + column_starts_[column + 1];
+        const int destination =
+            static_cast<int>(std::lower_bound(first, last, row) - rows_.begin());
+        scatter_.push_back({r * n + c, destination});
       }
     }
-    term_offsets_.push_back(static_cast<int>(destinations_.size()));
+    term_offsets_.push_back(term_offsets_.back() + n * n);
+    scatter_starts_.push_back(static_cast<int>(scatter_.size()));
   }
 }
 
@@ -156,12 +158,18 @@ bool EvaluateTerm(const Term& term, const double* positions, EigenvalueFilter fi
   return true;
 }
 
-// Adds a term's n×n local matrix into the global values, entry k to destination[k] (< 0: a fixed
-// coordinate's entry, left out).
-void AddLocalMatrix(const int* destination, int n, const double* local,
-                    std::vector<double>* values) {
-  for (int k = 0; k < n * n; ++k) {
-    if (destination[k] >= 0) (*values)[destination[k]] += local[k];
+// Adds a term's local matrix `local` into `values` along its scatter entries [begin, end), and,
+// when given, its local stand-in `local_projected` into `projected` (one pass over the entries).
+template <typename Entry>
+void AddLocalMatrices(const Entry* begin, const Entry* end, const double* local, double* values,
+                      const double* local_projected, double* projected) {
+  if (local_projected == nullptr) {
+    for (const Entry* e = begin; e != end; ++e) values[e->destination] += local[e->local];
+    return;
+  }
+  for (const Entry* e = begin; e != end; ++e) {
+    values[e->destination] += local[e->local];
+    projected[e->destination] += local_projected[e->local];
   }
 }
 
@@ -216,12 +224,16 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
       const auto& nodes = term.nodes();
       const double* local_gradient = block_gradient_.data() + block_gradient_offsets_[i];
       for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
-      const int* destination = destinations_.data() + term_offsets_[t];
-      AddLocalMatrix(destination, n, block_hessian_.data() + term_offsets_[t] - base, &values_);
-      if (!project) continue;
-      if (block_status_[i] == kProjected) ++assembly->projected_terms;
-      AddLocalMatrix(destination, n, block_projected_.data() + term_offsets_[t] - base,
-                     &projected_);
+      if (project && block_status_[i] == kProjected) ++assembly->projected_terms;
+      // An unchanged term's stand-in is its Hessian, equal to it bit for bit: read it once.
+      const double* local = block_hessian_.data() + term_offsets_[t] - base;
+      const double* stand_in = !project ? nullptr
+                               : block_status_[i] == kProjected
+                                   ? block_projected_.data() + term_offsets_[t] - base
+                                   : local;
+      AddLocalMatrices(scatter_.data() + scatter_starts_[t],
+                       scatter_.data() + scatter_starts_[t + 1], local, values_.data(), stand_in,
+                       projected_.data());
     }
   }
   return std::isfinite(assembly->energy);

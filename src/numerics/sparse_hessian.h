@@ -75,9 +75,16 @@ class FreeHessian {
   const Model& model_;
   const DofMap& dofs_;
   std::vector<int> column_starts_, rows_, diagonal_;
-  // For term t, destinations_[term_offsets_[t] + r * size + c] is the index in the value arrays of
-  // its local entry (r, c), or -1 (fixed coordinate, or below the diagonal).
-  std::vector<int> term_offsets_, destinations_;
+  // A local entry r * size + c of a term's Hessian and its index in the value arrays.
+  struct ScatterEntry {
+    int local;
+    int destination;
+  };
+  // Term t's local Hessian is stored at term_offsets_[t] (size² entries); the entries it adds to
+  // the value arrays are scatter_[scatter_starts_[t] .. scatter_starts_[t + 1]) (none for a fixed
+  // coordinate's entries or those below the diagonal).
+  std::vector<int> term_offsets_, scatter_starts_;
+  std::vector<ScatterEntry> scatter_;
   std::vector<double> values_, projected_;
   EigenvalueFilter filter_ = EigenvalueFilter::kClamp;
   int threads_ = DefaultAssemblyThreads();
