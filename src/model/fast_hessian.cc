@@ -102,6 +102,23 @@ BendingNodes::Hessian CombineBending(const BendingNodes::Jacobian<12>& dq,
   return h;
 }
 
+// Whether FvBending's Hessian h is semidefinite, tested on its 12×12 block without P's rows and
+// columns: the energy is a function of x_a − x_P (a = W, E, S, N), whose Hessian that block is, and
+// h = Tᵀ (block) T with T onto, so the two are semidefinite together (a 12×12 Cholesky costs half a
+// 15×15 one).
+template <typename Matrix>
+bool BendingIsSemidefinite(const Eigen::MatrixBase<Matrix>& h) {
+  enum { kW, kP, kE, kS, kN };
+  constexpr int kOthers[4] = {kW, kE, kS, kN};
+  Eigen::Matrix<double, 12, 12> relative;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      relative.block<3, 3>(3 * i, 3 * j) = h.template block<3, 3>(3 * kOthers[i], 3 * kOthers[j]);
+    }
+  }
+  return IsSemidefinite(relative);
+}
+
 // A 3-node term's H₊ into `projection`: its exact Hessian `h` where that is semidefinite, else
 // the stand-in that `blockwise()` builds from its curvature blocks (fast_hessian.h, "Projection").
 template <typename Blockwise>
@@ -154,7 +171,7 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
   Eigen::Matrix<double, 8, 12> dy = Eigen::Matrix<double, 8, 12>::Zero();
   dy.block<4, 6>(0, 0) = y1.jacobian;
   dy.block<4, 6>(4, 6) = y2.jacobian;
-  const Eigen::Matrix<double, 12, 1> g_q = dy.transpose() * c;
+  const Eigen::Matrix<double, 12, 1> g_q = SmallProduct(dy.transpose(), c);
   const Eigen::Matrix<double, 8, 12> ldy = SmallProduct(l, dy);
   const Eigen::Matrix<double, 12, 12> gauss_newton = SmallProduct(ldy.transpose(), ldy);
   BendingCurvatures curvatures;
@@ -174,13 +191,13 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
   Eigen::Map<Eigen::Matrix<double, 15, 1>> full_gradient(gradient);
   Eigen::Map<BendingNodes::Hessian> full_hessian(hessian);
   full_hessian = CombineBending(dq, gauss_newton, curvatures);
-  full_gradient = dq.transpose() * g_q;
+  full_gradient = SmallProduct(dq.transpose(), g_q);
   *energy = 0.5 * r.squaredNorm();
   const bool finite =
       std::isfinite(*energy) && full_gradient.allFinite() && full_hessian.allFinite();
   if (finite && projection) {  // H where semidefinite, else Jᵀ J (fast_hessian.h, "Projection")
     Eigen::Map<BendingNodes::Hessian> projected(projection->hessian);
-    projection->changed = !IsSemidefinite(full_hessian);
+    projection->changed = !BendingIsSemidefinite(full_hessian);
     if (projection->changed) {  // Jᵀ J with J = L ∂y/∂Q ∂Q/∂x (8×15)
       const Eigen::Matrix<double, 8, 15> j = SmallProduct(ldy, dq);
       projected = SmallProduct(j.transpose(), j);
