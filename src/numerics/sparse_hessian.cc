@@ -173,6 +173,13 @@ void AddLocalMatrices(const Entry* begin, const Entry* end, const double* local,
   }
 }
 
+// Makes `buffer` hold at least `size` elements, never shrinking it: a shorter last block of terms
+// followed by a full first one would otherwise zero-fill megabytes on every assembly.
+template <typename T>
+void GrowTo(int size, std::vector<T>* buffer) {
+  if (static_cast<int>(buffer->size()) < size) buffer->resize(size);
+}
+
 }  // namespace
 
 int DefaultAssemblyThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
@@ -190,18 +197,18 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
   for (int first = 0; first < num_terms; first += kTermsPerBlock) {
     const int last = std::min(num_terms, first + kTermsPerBlock);
     const int count = last - first;
-    block_energy_.resize(count);
-    block_status_.resize(count);
-    block_gradient_offsets_.resize(count + 1);
+    GrowTo(count, &block_energy_);
+    GrowTo(count, &block_status_);
+    GrowTo(count + 1, &block_gradient_offsets_);
     block_gradient_offsets_[0] = 0;
     for (int t = first; t < last; ++t) {
       block_gradient_offsets_[t - first + 1] =
           block_gradient_offsets_[t - first] + model_.terms[t]->num_coordinates();
     }
     const int base = term_offsets_[first];
-    block_gradient_.resize(block_gradient_offsets_[count]);
-    block_hessian_.resize(term_offsets_[last] - base);
-    if (project) block_projected_.resize(block_hessian_.size());
+    GrowTo(block_gradient_offsets_[count], &block_gradient_);
+    GrowTo(term_offsets_[last] - base, &block_hessian_);
+    if (project) GrowTo(term_offsets_[last] - base, &block_projected_);
     ParallelFor(count, threads_, [&](int begin, int end) {
       for (int i = begin; i < end; ++i) {
         const int t = first + i;
