@@ -94,7 +94,7 @@ BendingNodes::Hessian CombineBending(const BendingNodes::Jacobian<12>& dq,
   Eigen::Matrix<double, 12, 12> h_q = gauss_newton;
   h_q.block<6, 6>(0, 0) += curvatures.section1;
   h_q.block<6, 6>(6, 6) += curvatures.section2;
-  BendingNodes::Hessian h = SmallCongruence(dq, h_q);
+  BendingNodes::Hessian h = SymmetricCongruence(dq, h_q);
   BendingNodes::AddRelativeToCentre(curvatures.k1, kW, kP, kE, &h);
   BendingNodes::AddDifference(curvatures.t2, kS, kN, &h);
   BendingNodes::AddRelativeToCentre(curvatures.k2, kS, kP, kN, &h);
@@ -136,7 +136,7 @@ void StoreTriangleProjection(bool semidefinite, const TriangleNodes::Hessian& h,
 // Jᵀ H J + M ⊗ I₃ over (u, v).
 Eigen::Matrix<double, 6, 6> MembraneRelative(const Eigen::Matrix<double, 3, 6>& j,
                                              const Eigen::Matrix3d& h_q, const Eigen::Matrix2d& m) {
-  Eigen::Matrix<double, 6, 6> h = SmallCongruence(j, h_q);
+  Eigen::Matrix<double, 6, 6> h = SymmetricCongruence(j, h_q);
   for (int a = 0; a < 2; ++a) {
     for (int b = 0; b < 2; ++b) h.block<3, 3>(3 * a, 3 * b).diagonal().array() += m(a, b);
   }
@@ -173,7 +173,7 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
   dy.block<4, 6>(4, 6) = y2.jacobian;
   const Eigen::Matrix<double, 12, 1> g_q = SmallProduct(dy.transpose(), c);
   const Eigen::Matrix<double, 8, 12> ldy = SmallProduct(l, dy);
-  const Eigen::Matrix<double, 12, 12> gauss_newton = SmallProduct(ldy.transpose(), ldy);
+  const Eigen::Matrix<double, 12, 12> gauss_newton = SymmetricProduct(ldy, ldy);
   BendingCurvatures curvatures;
   curvatures.section1 = y1.WeightedHessian(c.data());
   curvatures.section2 = y2.WeightedHessian(c.data() + 4);
@@ -200,7 +200,7 @@ bool FastHessian<FvBending>::Evaluate(const FvBending& functor, const double* co
     projection->changed = !BendingIsSemidefinite(full_hessian);
     if (projection->changed) {  // Jᵀ J with J = L ∂y/∂Q ∂Q/∂x (8×15)
       const Eigen::Matrix<double, 8, 15> j = SmallProduct(ldy, dq);
-      projected = SmallProduct(j.transpose(), j);
+      projected = SymmetricProduct(j, j);
     } else {
       projected = full_hessian;
     }
@@ -221,7 +221,7 @@ bool FastHessian<FvBendingEdge>::Evaluate(const FvBendingEdge& functor, const do
   TriangleNodes::Jacobian<3> dq = TriangleNodes::Jacobian<3>::Zero();
   TriangleNodes::AddRelativeToCentre<3>(k.jacobian, 0, 1, 2, dq);
   const TriangleNodes::Jacobian<3> j = SmallProduct(l, dq);
-  const TriangleNodes::Hessian gauss_newton = SmallProduct(j.transpose(), j);
+  const TriangleNodes::Hessian gauss_newton = SymmetricProduct(j, j);
   Eigen::Matrix<double, 6, 6> curvature = k.WeightedHessian(g_q.data());
   TriangleNodes::Hessian h = gauss_newton;
   TriangleNodes::AddRelativeToCentre(curvature, 0, 1, 2, &h);

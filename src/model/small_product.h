@@ -15,11 +15,25 @@ auto SmallProduct(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) 
   return a.lazyProduct(b).eval();
 }
 
-// aᵀ · m · a, with the inner product evaluated once.
+// aᵀ b where the product is known to be symmetric (b = m a with m symmetric, or b = a): its upper
+// triangle by dot products of columns, mirrored. About half the work of the full product: the
+// bending term's 15×15 congruence takes 0.51 µs this way against 0.95 µs as two SmallProducts
+// (docs/benchmarks.md, session 14).
+template <typename A, typename B>
+auto SymmetricProduct(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b) {
+  constexpr int kSize = A::ColsAtCompileTime;
+  static_assert(kSize != Eigen::Dynamic && kSize == B::ColsAtCompileTime);
+  Eigen::Matrix<double, kSize, kSize> product;
+  for (int r = 0; r < kSize; ++r) {
+    for (int c = r; c < kSize; ++c) product(r, c) = product(c, r) = a.col(r).dot(b.col(c));
+  }
+  return product;
+}
+
+// aᵀ m a for a symmetric m, with m a formed once.
 template <typename A, typename M>
-auto SmallCongruence(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<M>& m) {
-  const auto inner = SmallProduct(a.transpose(), m);
-  return SmallProduct(inner, a);
+auto SymmetricCongruence(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<M>& m) {
+  return SymmetricProduct(a, SmallProduct(m, a));
 }
 
 }  // namespace drape
