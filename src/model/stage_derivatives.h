@@ -7,9 +7,10 @@
 // derivatives are written here, as the formulas below. Every derivative is checked against
 // second-order automatic differentiation of the same stage function at random and at straight
 // (flat) states (tests/stage_derivatives_test.cc), and each term's assembled result against the
-// nested-Jet Hessian of the whole functor (tests/term_checks.h). Second-order forward
-// differentiation of the stages, the path these replace, carried a packed Hessian through every
-// operation: about 2,000 flops for one binormal, against about 200 here.
+// nested-Jet Hessian of the whole functor (tests/term_checks.h). They replace second-order
+// forward differentiation of the stages, which carried a packed Hessian through every operation:
+// the finite-volume terms' local derivatives fell from 5.5 to 3.4 CPU µs per node
+// (docs/benchmarks.md, session 14).
 //
 // A weighted Hessian Σ_i w_i ∇²q_i (the stage's outputs q weighted by w) is what the chain rule
 // needs (fast_hessian.h), so each stage gives that and never its outputs' Hessians one by one.

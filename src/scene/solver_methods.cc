@@ -59,7 +59,8 @@ MethodOption NloptLocalEnergy() {
 std::vector<SolverMethod> BuildCatalogue() {
   return {
       {"newton",
-       "Newton on the exact energy: nested-Jet Hessians, per-term PSD projection far from the "
+       "Newton on the exact energy: exact Hessians (nested Jets, or the finite-volume terms' "
+       "staged chain rule), per-term PSD projection far from the "
        "solution, CHOLMOD supernodal Cholesky, pseudo-time regularisation M/dt^2 and an Armijo "
        "line search; quadratic near the end (the default)",
        1000,
