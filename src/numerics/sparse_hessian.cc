@@ -223,27 +223,33 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
     });
     for (int i = 0; i < count; ++i) {
       if (block_status_[i] == kFailed) return false;
-      const int t = first + i;
-      const Term& term = *model_.terms[t];
-      const int n = term.num_coordinates();
-      assembly->energy += block_energy_[i];
-      assembly->energy_magnitude += std::abs(block_energy_[i]);
-      const auto& nodes = term.nodes();
-      const double* local_gradient = block_gradient_.data() + block_gradient_offsets_[i];
-      for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
-      if (project && block_status_[i] == kProjected) ++assembly->projected_terms;
-      // An unchanged term's stand-in is its Hessian, equal to it bit for bit: read it once.
-      const double* local = block_hessian_.data() + term_offsets_[t] - base;
-      const double* stand_in = !project ? nullptr
-                               : block_status_[i] == kProjected
-                                   ? block_projected_.data() + term_offsets_[t] - base
-                                   : local;
-      AddLocalMatrices(scatter_.data() + scatter_starts_[t],
-                       scatter_.data() + scatter_starts_[t + 1], local, values_.data(), stand_in,
-                       projected_.data());
+      AddBlockTerm(first, i, project, assembly, gradient);
     }
   }
   return std::isfinite(assembly->energy);
+}
+
+// Adds term first + i's local results, held in the block buffers, into the assembly.
+void FreeHessian::AddBlockTerm(int first, int i, bool project, Assembly* assembly,
+                               std::vector<double>* gradient) {
+  const int t = first + i;
+  const Term& term = *model_.terms[t];
+  const int n = term.num_coordinates();
+  assembly->energy += block_energy_[i];
+  assembly->energy_magnitude += std::abs(block_energy_[i]);
+  const auto& nodes = term.nodes();
+  const double* local_gradient = block_gradient_.data() + block_gradient_offsets_[i];
+  for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
+  const double* local = block_hessian_.data() + term_offsets_[t] - term_offsets_[first];
+  // An unchanged term's stand-in is its Hessian, equal to it bit for bit: read it once.
+  const double* stand_in = nullptr;
+  if (project) {
+    const bool changed = block_status_[i] == kProjected;
+    assembly->projected_terms += changed;
+    stand_in = changed ? block_projected_.data() + term_offsets_[t] - term_offsets_[first] : local;
+  }
+  AddLocalMatrices(scatter_.data() + scatter_starts_[t], scatter_.data() + scatter_starts_[t + 1],
+                   local, values_.data(), stand_in, projected_.data());
 }
 
 void FreeHessian::Multiply(const std::vector<double>& values, const double* x, double* y) const {

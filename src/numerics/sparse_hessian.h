@@ -71,6 +71,8 @@ class FreeHessian {
  private:
   void BuildPattern();
   void BuildDestinations();
+  void AddBlockTerm(int first, int i, bool project, Assembly* assembly,
+                    std::vector<double>* gradient);
 
   const Model& model_;
   const DofMap& dofs_;
