@@ -86,9 +86,8 @@ TEST(Newton, LeavesASaddleThatStallsItAndEndsAtAStableDrape) {
   // lowers the energy there (at a relative residual of about 1.5e-9): newton stalls before the
   // residual is met. Had the stall no escape, newton would stop there, converged no, after 11
   // iterations (checked by disabling it); a step along the most negative curvature leaves it for
-  // the drape. (Before, this test used a
-  // finite-volume drape whose path reached such a saddle only by the rounding of one build and
-  // one set of BLAS kernels.)
+  // the drape. (Before, this test used a finite-volume drape whose path reached such a saddle
+  // only by the rounding of one build and one set of BLAS kernels.)
   const Scene scene = LoadScene(std::string(DRAPE_SOURCE_DIR) + "/configs/netlogo/disc_arc.yaml",
                                 {"solver.tolerance=1e-13"});
   Model model = BuildModel(scene);

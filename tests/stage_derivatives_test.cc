@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <random>
+#include <type_traits>
 
 #include "costs/fv_bending.h"
 #include "src/model/second_order.h"

@@ -19,7 +19,9 @@
 // result is checked against the nested-Jet Hessian of the whole functor in tests/term_checks.h.
 //
 // Projection (StagedProjection, for the projected-Newton matrix H₊): a term whose exact local
-// Hessian is positive semidefinite (Cholesky, to 1e-12 of its largest entry) gives it unchanged.
+// Hessian is positive semidefinite (Cholesky, to 1e-12 of its largest entry; FvBending's tested on
+// its 12×12 block without P, the Hessian over the other nodes' positions relative to P) gives it
+// unchanged.
 // Otherwise:
 //   FvMembrane, FvBendingEdge: the chain-rule sum is formed again with the Gauss–Newton part kept
 //     as it is (it is semidefinite) and each small curvature block made semidefinite on its own
