@@ -1,11 +1,17 @@
-// RunLibrariesOnOneThread: CHOLMOD's OpenMP regions and OpenBLAS end up on one thread; the
-// OpenBLAS kernels drape asks for.
+// RunLibrariesOnOneThread: CHOLMOD's OpenMP regions and OpenBLAS end up on one thread, the regions
+// inline; the OpenBLAS kernels drape asks for.
 #include "src/numerics/library_threads.h"
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <vector>
+
+#include "src/numerics/sparse_hessian.h"
+#include "tests/assembled_hessian.h"
+#include "tests/hand_built_models.h"
 
 namespace drape {
 namespace {
@@ -29,6 +35,33 @@ TEST(LibraryThreads, OpenMpAndOpenBlasRunOnOneThreadUnlessTheUserChose) {
   const LibraryThreads again = RunLibrariesOnOneThread();
   EXPECT_EQ(again.openmp_single, result.openmp_single);
   EXPECT_EQ(again.openblas_single, result.openblas_single);
+}
+
+// CHOLMOD's OpenMP regions reach drape's GOMP_parallel, which runs them inline where OpenMP runs on
+// one thread (and hands them to libgomp where the user chose its threads); the factorisation they
+// compute solves its system.
+TEST(LibraryThreads, CholmodRegionsRunInlineWhereOpenMpRunsOnOneThread) {
+  const LibraryThreads threads = RunLibrariesOnOneThread();
+  testing::SheetSpec spec;
+  spec.nu = 30;
+  spec.nv = 30;
+  spec.fixed = {0, 29};
+  const testing::AssembledHessian assembled(testing::Sheet(spec), /*project=*/true);
+  const FreeHessian& hessian = assembled.hessian;
+  SparseCholesky cholesky(hessian);
+  const long before = InlineOpenMpRegions();
+  const std::vector<double> shift(hessian.size(), 1.0);
+  ASSERT_TRUE(cholesky.Factorize(hessian.projected_values(), &shift));
+  if (threads.openmp_single) {
+    EXPECT_GT(InlineOpenMpRegions(), before);
+  } else {
+    EXPECT_EQ(InlineOpenMpRegions(), before);
+  }
+  std::vector<double> b(hessian.size()), x, product(hessian.size());
+  for (int k = 0; k < hessian.size(); ++k) b[k] = std::sin(k);
+  cholesky.Solve(b, &x);
+  hessian.Multiply(hessian.projected_values(), x.data(), product.data());
+  for (int k = 0; k < hessian.size(); ++k) EXPECT_NEAR(product[k] + x[k], b[k], 1e-9);
 }
 
 // Faster kernels are asked for only where OpenBLAS fell back to its generic ones, and only those

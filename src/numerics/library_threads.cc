@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <initializer_list>
 
@@ -41,6 +42,42 @@ LibraryThreads RunLibrariesOnOneThread() {
   static const LibraryThreads configured = Configure();
   return configured;
 }
+
+namespace {
+
+std::atomic<long> inline_openmp_regions{0};
+
+using ParallelFunction = void (*)(void (*)(void*), void*, unsigned, unsigned);
+
+// libgomp's own GOMP_parallel, the next definition after drape's; null if none is loaded.
+ParallelFunction LibgompParallel() {
+  static const auto function =
+      reinterpret_cast<ParallelFunction>(dlsym(RTLD_NEXT, "GOMP_parallel"));
+  return function;
+}
+
+}  // namespace
+
+long InlineOpenMpRegions() { return inline_openmp_regions.load(); }
+
+}  // namespace drape
+
+// The entry point of `#pragma omp parallel` in GCC's OpenMP ABI (libgomp): `body(data)` on a team
+// of `num_threads` threads (0: the default). See InlineOpenMpRegions (library_threads.h). Inline,
+// the body sees what a team of one shows it: omp_get_thread_num() 0, omp_get_num_threads() 1, and
+// a worksharing construct inside it is shared by the one thread.
+extern "C" void GOMP_parallel(void (*body)(void*), void* data, unsigned num_threads,
+                              unsigned flags) {
+  const drape::ParallelFunction libgomp = drape::LibgompParallel();
+  if (libgomp != nullptr && !drape::RunLibrariesOnOneThread().openmp_single) {
+    libgomp(body, data, num_threads, flags);
+    return;
+  }
+  ++drape::inline_openmp_regions;
+  body(data);
+}
+
+namespace drape {
 
 namespace {
 

@@ -21,6 +21,17 @@ struct LibraryThreads {
 // and LAPACK, not of drape); a missing one is left alone. Idempotent; the first call does the work.
 LibraryThreads RunLibrariesOnOneThread();
 
+// How many OpenMP parallel regions (CHOLMOD's) drape has run inline, on the calling thread, in
+// place of libgomp's team of one. drape defines libgomp's entry point GOMP_parallel, which comes
+// first in the dynamic linker's search for CHOLMOD's calls: where RunLibrariesOnOneThread made
+// OpenMP's regions inactive (openmp_single), a region's body is called directly, which is what a
+// team of one runs, without the team's set-up and closing barrier, whose futex wake is a system
+// call; otherwise (the user chose OpenMP's threads) the region goes to libgomp's GOMP_parallel.
+// CHOLMOD opens several regions per supernode: on the 2,821-node drape tester 3,500 per
+// factorisation, which took 0.0121 s with libgomp's teams of one and 0.0059 s inline on this
+// project's virtual machine (docs/benchmarks.md, session 15).
+long InlineOpenMpRegions();
+
 // Which OpenBLAS kernels run, and whether drape chose them. Debian 12's OpenBLAS (0.3.21) picks
 // its kernels when it loads, from the processor's model number; for a model newer than it knows
 // (e.g. Intel's 5th-generation Xeon, model 207) it falls back to its generic Prescott (SSE3)
