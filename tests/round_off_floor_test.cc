@@ -50,6 +50,22 @@ TEST(RoundOffFloor, IsZeroWithoutFreeCoordinatesAndGrowsWithTheDistanceFromTheOr
   EXPECT_GT(RelativeResidualFloor(model, model.positions.data()), 10.0 * here);
 }
 
+// A solver's estimator keeps the Hessian's pattern between estimates: at each of several positions
+// it gives what a fresh estimate gives there, to the last bit.
+TEST(RoundOffFloor, AnEstimatorGivesAFreshEstimateAtEveryPosition) {
+  Scene scene = LongStiffCable();
+  Model model = BuildModel(scene);
+  ResidualFloorEstimator estimator(model);
+  for (int shift = 0; shift < 3; ++shift) {
+    for (size_t k = 0; k < model.positions.size(); k += 3) {
+      if (!model.fixed[k]) model.positions[k] += 1e3 * shift;
+    }
+    EXPECT_EQ(estimator.At(model.positions.data()),
+              RelativeResidualFloor(model, model.positions.data()))
+        << "shift " << shift;
+  }
+}
+
 // Before: "no step decreases the energy" or the iteration limit, converged no, at ~1e-8.
 TEST(RoundOffFloor, TheStiffCableStopsAtTheFloorAndSaysSo) {
   Scene scene = LongStiffCable();

@@ -31,12 +31,19 @@ bool ForceMagnitudes(const Model& model, const double* positions, std::vector<do
 }  // namespace
 
 double RelativeResidualFloor(const Model& model, const double* positions) {
-  const DofMap dofs(model);
+  return ResidualFloorEstimator(model).At(positions);
+}
+
+double ResidualFloorEstimator::At(const double* positions) {
+  const Model& model = model_;
+  if (!dofs_) dofs_ = std::make_unique<const DofMap>(model);
+  const DofMap& dofs = *dofs_;
   if (dofs.num_free() == 0) return 0.0;
   constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
   std::vector<double> magnitudes;
   if (!ForceMagnitudes(model, positions, &magnitudes)) return INFINITY;
-  FreeHessian hessian(model, dofs);
+  if (!hessian_) hessian_ = std::make_unique<FreeHessian>(model, dofs);
+  FreeHessian& hessian = *hessian_;
   FreeHessian::Assembly assembly;
   std::vector<double> gradient;
   if (!hessian.Assemble(positions, /*project=*/false, &assembly, &gradient)) return INFINITY;

@@ -13,13 +13,31 @@
 #ifndef DRAPE_SRC_NUMERICS_ROUND_OFF_FLOOR_H_
 #define DRAPE_SRC_NUMERICS_ROUND_OFF_FLOOR_H_
 
+#include <memory>
+
+#include "src/model/equilibrium.h"
 #include "src/model/model.h"
+#include "src/numerics/sparse_hessian.h"
 
 namespace drape {
 
 // The relative residual's round-off floor at `positions` (see above); 0 when the model has no
 // free coordinate, +∞ when the forces or the Hessian are not finite there.
 double RelativeResidualFloor(const Model& model, const double* positions);
+
+// The same at successive positions of one model (a solver's stagnation checks): the free Hessian's
+// pattern and scatter map, most of one estimate's cost (two thirds on the 2,821-node drape tester,
+// docs/benchmarks.md, session 15), are built at the first estimate and kept.
+class ResidualFloorEstimator {
+ public:
+  explicit ResidualFloorEstimator(const Model& model) : model_(model) {}
+  double At(const double* positions);
+
+ private:
+  const Model& model_;
+  std::unique_ptr<const DofMap> dofs_;  // both built at the first At()
+  std::unique_ptr<FreeHessian> hessian_;
+};
 
 // A residual within this factor of the floor is at the floor (the estimate is of its order).
 constexpr double kFloorFactor = 2.0;

@@ -34,6 +34,7 @@ IterationMonitor::IterationMonitor(const Model& model, const SolverOptions& opti
     : model_(model),
       options_(options),
       summary_(summary),
+      floor_(model),
       start_(std::chrono::steady_clock::now()) {
   summary_->converged = false;
   summary_->termination.clear();
@@ -50,7 +51,7 @@ void IterationMonitor::Stop(const std::string& termination) {
 }
 
 void IterationMonitor::StopStalled(double relative_residual, const std::string& termination) {
-  const double floor = RelativeResidualFloor(model_, model_.positions.data());
+  const double floor = floor_.At(model_.positions.data());
   if (std::isfinite(relative_residual) && relative_residual <= kFloorFactor * floor) {
     summary_->residual_floor = floor;
     ConvergeAtFloor(relative_residual);
@@ -80,7 +81,7 @@ bool IterationMonitor::AtRoundOffFloor(int iteration, double relative_residual) 
   if (iteration - stagnation_iteration_ < stagnation_wait_) return false;
   stagnation_iteration_ = iteration;  // check again after twice as many (the check costs a Hessian)
   stagnation_wait_ *= 2;
-  const double floor = RelativeResidualFloor(model_, model_.positions.data());
+  const double floor = floor_.At(model_.positions.data());
   if (!(relative_residual <= kFloorFactor * floor)) return false;
   summary_->residual_floor = floor;
   return true;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "src/model/model.h"
+#include "src/numerics/round_off_floor.h"
 
 namespace drape {
 
@@ -106,6 +107,7 @@ class IterationMonitor {
   void ConvergeAtFloor(double relative_residual);
 
   SolverSummary* summary_;
+  ResidualFloorEstimator floor_;
   std::chrono::steady_clock::time_point start_;
   double stagnation_mark_ = INFINITY;  // residual at the last halving
   int stagnation_iteration_ = 0;       // iteration of the last halving (or floor check)
