@@ -27,9 +27,10 @@ LibraryThreads RunLibrariesOnOneThread();
 // OpenMP's regions inactive (openmp_single), a region's body is called directly, which is what a
 // team of one runs, without the team's set-up and closing barrier, whose futex wake is a system
 // call; otherwise (the user chose OpenMP's threads) the region goes to libgomp's GOMP_parallel.
-// CHOLMOD opens several regions per supernode: on the 2,821-node drape tester 3,500 per
-// factorisation, which took 0.0121 s with libgomp's teams of one and 0.0059 s inline on this
-// project's virtual machine (docs/benchmarks.md, session 15).
+// CHOLMOD opens several regions per supernode: a 5.4 s solve of the 2,821-node drape tester made
+// 791,093 futex calls in 224 factorisations, and one factorisation took 0.0121 s with libgomp's
+// teams of one, 0.0059 s inline, on this project's virtual machine (docs/benchmarks.md, session
+// 15).
 long InlineOpenMpRegions();
 
 // Which OpenBLAS kernels run, and whether drape chose them. Debian 12's OpenBLAS (0.3.21) picks

@@ -26,8 +26,8 @@ namespace drape {
 double RelativeResidualFloor(const Model& model, const double* positions);
 
 // The same at successive positions of one model (a solver's stagnation checks): the free Hessian's
-// pattern and scatter map, most of one estimate's cost (two thirds on the 2,821-node drape tester,
-// docs/benchmarks.md, session 15), are built at the first estimate and kept.
+// pattern and scatter map, most of one estimate's cost (three quarters on the 2,821-node drape
+// tester, docs/benchmarks.md, session 15), are built at the first estimate and kept.
 class ResidualFloorEstimator {
  public:
   explicit ResidualFloorEstimator(const Model& model) : model_(model) {}
