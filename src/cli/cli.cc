@@ -36,6 +36,7 @@
 #include "src/scene/solver_methods.h"
 #include "src/solvers/run.h"
 #include "src/solvers/solver.h"
+#include "src/solvers/state_text.h"
 #include "src/sweep/sweep.h"
 #include "src/sweep/sweep_file.h"
 
@@ -127,19 +128,6 @@ void EnableInterrupt() {
   pthread_sigmask(SIG_UNBLOCK, &interrupt, nullptr);
 }
 
-// What the certificate says of the state: a stable minimum, a saddle (with the most negative
-// eigenvalue of the free Hessian), or why it cannot be certified.
-std::string StabilityText(const RunResult& result) {
-  if (!result.certificate.unsound.empty()) return "not certified: " + result.certificate.unsound;
-  const Stability& stability = result.stability;
-  if (!stability.computed) return "stability not computed";
-  if (stability.stable) return "stable minimum";
-  char text[120];
-  std::snprintf(text, sizeof text, "saddle: most negative eigenvalue %.3g N/m",
-                stability.min_eigenvalue);
-  return text;
-}
-
 // A state with nodes under a support disk is not a drape over it, whatever the certificate says.
 std::string UnderDiskText(const RunResult& result) {
   const int under = result.contact.nodes_under_disk;
@@ -160,7 +148,7 @@ std::string ResultLine(const RunResult& result, const std::string& directory) {
                 "%s: converged %s, %d iterations, %.3g s, relative residual %.3g, ",
                 summary.solver.c_str(), result.converged ? "yes" : "no", summary.iterations,
                 summary.wall_time_s, result.certificate.relative_residual);
-  return std::string(text) + StabilityText(result) + UnderDiskText(result) + " (" +
+  return std::string(text) + StateText(result) + UnderDiskText(result) + " (" +
          summary.termination + "); results in " + directory;
 }
 

@@ -21,6 +21,7 @@
 #include "src/parallel/task_farm.h"
 #include "src/scene/scene_loader.h"
 #include "src/solvers/solver.h"
+#include "src/solvers/state_text.h"
 #include "src/sweep/sweep_report.h"
 
 namespace drape {
@@ -69,14 +70,6 @@ std::string Fingerprint(const std::string& bytes) {
   return text;
 }
 
-// What the certificate says of the final state, in words (as drape solve's result line).
-std::string CertificateText(const RunResult& result) {
-  if (!result.certificate.unsound.empty()) return "not certified: " + result.certificate.unsound;
-  if (!result.stability.computed) return "stability not computed";
-  if (result.stability.stable) return "stable minimum";
-  return "saddle: most negative eigenvalue " + FormatNumber(result.stability.min_eigenvalue, 3) +
-         " N/m";
-}
 
 // The cells of task `task` before its results: number, values, repeat.
 std::vector<std::string> TaskCells(const SweepSpec& spec, int task) {
@@ -100,7 +93,7 @@ std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveR
                 stable_known ? (stability.stable ? "yes" : "no") : "",
                 report.drape ? Cell(ReportedDrapeCoefficient(report)) : "",
                 report.drape ? std::to_string(report.drape->folds.count) : "",
-                CertificateText(result), warm_from >= 0 ? std::to_string(warm_from) : ""});
+                StateText(result), warm_from >= 0 ? std::to_string(warm_from) : ""});
   return cells;
 }
 
