@@ -70,7 +70,6 @@ std::string Fingerprint(const std::string& bytes) {
   return text;
 }
 
-
 // The cells of task `task` before its results: number, values, repeat.
 std::vector<std::string> TaskCells(const SweepSpec& spec, int task) {
   std::vector<std::string> cells = {std::to_string(task)};
@@ -92,8 +91,8 @@ std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveR
                 Cell(result.certificate.max_node_force),
                 stable_known ? (stability.stable ? "yes" : "no") : "",
                 report.drape ? Cell(ReportedDrapeCoefficient(report)) : "",
-                report.drape ? std::to_string(report.drape->folds.count) : "",
-                StateText(result), warm_from >= 0 ? std::to_string(warm_from) : ""});
+                report.drape ? std::to_string(report.drape->folds.count) : "", StateText(result),
+                warm_from >= 0 ? std::to_string(warm_from) : ""});
   return cells;
 }
 
