@@ -157,6 +157,9 @@ TEST_F(WritersTest, SummaryJsonReadsBackWithTheValuesOfTheResult) {
   ASSERT_EQ(reactions.size(), 3u);
   for (int c = 0; c < 3; ++c) EXPECT_EQ(reactions[c], result.certificate.reaction_sum[c]);
   EXPECT_FALSE(summary["stable"].as<bool>());
+  // Not converged: however its Hessian looks, the state is not called a minimum.
+  EXPECT_EQ(summary["state"].as<std::string>(),
+            "not an equilibrium (most negative eigenvalue -0.25 N/m)");
   EXPECT_EQ(summary["min_eigenvalue"].as<double>(), -0.25);
   EXPECT_EQ(summary["tolerance"].as<double>(), 1e-9);
   EXPECT_EQ(summary["statistics"]["factorizations"].as<double>(), 7.0);

@@ -29,6 +29,7 @@
 #include "src/output/scene_yaml.h"
 #include "src/output/version.h"
 #include "src/scene/material_keys.h"
+#include "src/solvers/state_text.h"
 
 namespace drape {
 
@@ -232,6 +233,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
       {"balance", BalanceObject(certificate)},
       {"stable", result.stability.computed ? JsonBool(result.stability.stable) : "null"},
       {"saddle", JsonBool(result.Saddle())},
+      {"state", JsonString(StateText(result))},
       {"interrupted", JsonBool(result.summary.termination.rfind("interrupted", 0) == 0)},
   };
   if (result.stability.computed && !result.stability.stable && certificate.unsound.empty()) {
