@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
+#include "src/numerics/sparse_hessian.h"
 #include "src/scene/scene_loader.h"
 #include "src/solvers/run.h"
 #include "tests/test_scenes.h"
@@ -64,6 +66,18 @@ TEST(RoundOffFloor, AnEstimatorGivesAFreshEstimateAtEveryPosition) {
               RelativeResidualFloor(model, model.positions.data()))
         << "shift " << shift;
   }
+}
+
+// The same with a FreeHessian the caller gives (RunSolve's, which the solver assembled in).
+TEST(RoundOffFloor, AGivenHessianGivesAFreshEstimate) {
+  Scene scene = LongStiffCable();
+  Model model = BuildModel(scene);
+  HessianWorkspace workspace(model);
+  std::vector<double> elsewhere = model.positions;
+  for (size_t k = 0; k < elsewhere.size(); k += 3) elsewhere[k] += 1e3;
+  RelativeResidualFloor(model, elsewhere.data(), &workspace.hessian);  // values left from there
+  EXPECT_EQ(RelativeResidualFloor(model, model.positions.data(), &workspace.hessian),
+            RelativeResidualFloor(model, model.positions.data()));
 }
 
 // Before: "no step decreases the energy" or the iteration limit, converged no, at ~1e-8.

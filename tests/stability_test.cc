@@ -116,6 +116,43 @@ TEST(Stability, NegativeCurvatureIsFalseForAPositiveDefiniteHessian) {
   EXPECT_FALSE(NegativeCurvature(hessian.hessian, &eigenvalue, &v));
 }
 
+// RunSolve certifies in the workspace the solver used (HessianWorkspace): whatever was assembled
+// and factorised in it before, the verdict and the eigenvalue estimate are a fresh analysis's, to
+// the last bit.
+TEST(Stability, AWorkspaceUsedBeforeGivesTheVerdictOfAFreshAnalysis) {
+  ChainSpec spec;
+  spec.length = 0.8;
+  spec.rest_length = 0.1;
+  Model hanging = Chain(spec);
+  HessianWorkspace used_by_newton(hanging);
+  SolverOptions options;
+  options.workspace = &used_by_newton;
+  ASSERT_TRUE(FindSolver("newton")->make()->Solve(hanging, options).converged);
+  const Stability fresh_hanging = AnalyseStability(hanging, hanging.positions.data());
+  const Stability shared_hanging =
+      AnalyseStability(hanging, hanging.positions.data(), &used_by_newton);
+  EXPECT_TRUE(shared_hanging.stable);
+  EXPECT_EQ(shared_hanging.stable, fresh_hanging.stable);
+
+  const Model compressed = Chain(CompressedChain());
+  HessianWorkspace workspace(compressed);
+  std::vector<double> elsewhere = compressed.positions;  // a stretched, positive definite state
+  for (size_t k = 0; k < elsewhere.size(); k += 3) elsewhere[k] *= 1.5;
+  ASSERT_TRUE(AnalyseStability(compressed, elsewhere.data(), &workspace).stable);
+  const Stability fresh = AnalyseStability(compressed, compressed.positions.data());
+  const Stability shared = AnalyseStability(compressed, compressed.positions.data(), &workspace);
+  EXPECT_FALSE(shared.stable);
+  EXPECT_EQ(shared.min_eigenvalue, fresh.min_eigenvalue);
+
+  double fresh_eigenvalue = 0.0, shared_eigenvalue = 0.0;
+  std::vector<double> fresh_mode, shared_mode;
+  ASSERT_TRUE(NegativeCurvature(workspace.hessian, &fresh_eigenvalue, &fresh_mode));
+  ASSERT_TRUE(
+      NegativeCurvature(workspace.hessian, &shared_eigenvalue, &shared_mode, &workspace.cholesky));
+  EXPECT_EQ(shared_eigenvalue, fresh_eigenvalue);
+  EXPECT_EQ(shared_mode, fresh_mode);
+}
+
 TEST(Stability, NothingFreeIsTriviallyStable) {
   ChainSpec spec;
   spec.nodes = 2;

@@ -30,20 +30,23 @@ bool ForceMagnitudes(const Model& model, const double* positions, std::vector<do
 
 }  // namespace
 
-double RelativeResidualFloor(const Model& model, const double* positions) {
-  return ResidualFloorEstimator(model).At(positions);
+double RelativeResidualFloor(const Model& model, const double* positions, FreeHessian* hessian) {
+  return ResidualFloorEstimator(model, hessian).At(positions);
 }
 
 double ResidualFloorEstimator::At(const double* positions) {
   const Model& model = model_;
-  if (!dofs_) dofs_ = std::make_unique<const DofMap>(model);
-  const DofMap& dofs = *dofs_;
-  if (dofs.num_free() == 0) return 0.0;
+  if (model.num_free_dofs() == 0) return 0.0;
   constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
   std::vector<double> magnitudes;
   if (!ForceMagnitudes(model, positions, &magnitudes)) return INFINITY;
-  if (!hessian_) hessian_ = std::make_unique<FreeHessian>(model, dofs);
+  if (!hessian_) {
+    own_dofs_ = std::make_unique<const DofMap>(model);
+    own_hessian_ = std::make_unique<FreeHessian>(model, *own_dofs_);
+    hessian_ = own_hessian_.get();
+  }
   FreeHessian& hessian = *hessian_;
+  const DofMap& dofs = hessian.dofs();
   FreeHessian::Assembly assembly;
   std::vector<double> gradient;
   if (!hessian.Assemble(positions, /*project=*/false, &assembly, &gradient)) return INFINITY;

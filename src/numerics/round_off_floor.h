@@ -23,20 +23,25 @@ namespace drape {
 
 // The relative residual's round-off floor at `positions` (see above); 0 when the model has no
 // free coordinate, +∞ when the forces or the Hessian are not finite there.
-double RelativeResidualFloor(const Model& model, const double* positions);
+// `hessian`, when given, is a FreeHessian of `model` to assemble in (its values are overwritten).
+double RelativeResidualFloor(const Model& model, const double* positions,
+                             FreeHessian* hessian = nullptr);
 
 // The same at successive positions of one model (a solver's stagnation checks): the free Hessian's
 // pattern and scatter map, most of one estimate's cost (three quarters on the 2,821-node drape
-// tester, docs/benchmarks.md, session 15), are built at the first estimate and kept.
+// tester, docs/benchmarks.md, session 15), are built at the first estimate and kept; or, when
+// `hessian` is given, that FreeHessian of the model is used (its values are overwritten).
 class ResidualFloorEstimator {
  public:
-  explicit ResidualFloorEstimator(const Model& model) : model_(model) {}
+  explicit ResidualFloorEstimator(const Model& model, FreeHessian* hessian = nullptr)
+      : model_(model), hessian_(hessian) {}
   double At(const double* positions);
 
  private:
   const Model& model_;
-  std::unique_ptr<const DofMap> dofs_;  // both built at the first At()
-  std::unique_ptr<FreeHessian> hessian_;
+  FreeHessian* hessian_;                    // the given one, else own_hessian_ once built
+  std::unique_ptr<const DofMap> own_dofs_;  // both built at the first At() without a given one
+  std::unique_ptr<FreeHessian> own_hessian_;
 };
 
 // A residual within this factor of the floor is at the floor (the estimate is of its order).

@@ -57,6 +57,7 @@ class FreeHessian {
   int threads() const { return threads_; }
 
   int size() const { return dofs_.num_free(); }
+  const DofMap& dofs() const { return dofs_; }
   int num_nonzeros() const { return static_cast<int>(rows_.size()); }
   const std::vector<int>& column_starts() const { return column_starts_; }
   const std::vector<int>& rows() const { return rows_; }
@@ -126,6 +127,18 @@ class SparseCholesky {
   cholmod_factor* factor_ = nullptr;
   cholmod_dense* rhs_ = nullptr;
   double last_factorization_seconds_ = 0.0;
+};
+
+// One model's free coordinates, its FreeHessian and that pattern's CHOLMOD analysis, built once.
+// RunSolve builds one and hands it to the solver (newton assembles and factorises in it) and then
+// certifies the answer in it (round-off floor, stability): the certificate then needs no second
+// pattern, analysis or factor of its own. The model must have a free coordinate and outlive it.
+struct HessianWorkspace {
+  explicit HessianWorkspace(const Model& model)
+      : dofs(model), hessian(model, dofs), cholesky(hessian) {}
+  const DofMap dofs;
+  FreeHessian hessian;
+  SparseCholesky cholesky;
 };
 
 }  // namespace drape

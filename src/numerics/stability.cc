@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -82,36 +83,44 @@ double MostNegativeEigenvalue(const FreeHessian& hessian, SparseCholesky* choles
   return std::min(-low, std::max(-high, estimate));
 }
 
+// τ: the shift below which an eigenvalue counts as a neutral zero mode.
+double NeutralShift(const FreeHessian& hessian) {
+  const double scale = MeanAbsoluteDiagonal(hessian);
+  return kNeutralTolerance * (scale > 0.0 ? scale : 1.0);
+}
+
 }  // namespace
 
 bool NegativeCurvature(const FreeHessian& hessian, double* eigenvalue,
-                       std::vector<double>* direction) {
-  SparseCholesky cholesky(hessian);
-  const double scale = MeanAbsoluteDiagonal(hessian);
-  const double tau = kNeutralTolerance * (scale > 0.0 ? scale : 1.0);
-  if (PositiveDefiniteWithShift(hessian, &cholesky, tau)) return false;
-  *eigenvalue = MostNegativeEigenvalue(hessian, &cholesky, tau, direction);
+                       std::vector<double>* direction, SparseCholesky* cholesky) {
+  std::unique_ptr<SparseCholesky> own;
+  if (!cholesky) cholesky = (own = std::make_unique<SparseCholesky>(hessian)).get();
+  const double tau = NeutralShift(hessian);
+  if (PositiveDefiniteWithShift(hessian, cholesky, tau)) return false;
+  *eigenvalue = MostNegativeEigenvalue(hessian, cholesky, tau, direction);
   return std::isfinite(*eigenvalue);
 }
 
-Stability AnalyseStability(const Model& model, const double* positions) {
+Stability AnalyseStability(const Model& model, const double* positions,
+                           HessianWorkspace* workspace) {
   Stability stability;
-  const DofMap dofs(model);
-  if (dofs.num_free() == 0) {  // nothing can move: trivially stable
+  if (model.num_free_dofs() == 0) {  // nothing can move: trivially stable
     stability.computed = true;
     stability.stable = true;
     return stability;
   }
-  FreeHessian hessian(model, dofs);
+  std::unique_ptr<HessianWorkspace> own;
+  if (!workspace) workspace = (own = std::make_unique<HessianWorkspace>(model)).get();
+  FreeHessian& hessian = workspace->hessian;
   FreeHessian::Assembly assembly;
   std::vector<double> gradient;
   if (!hessian.Assemble(positions, /*project=*/false, &assembly, &gradient)) return stability;
-  SparseCholesky cholesky(hessian);
-  const double scale = MeanAbsoluteDiagonal(hessian);
-  const double tau = kNeutralTolerance * (scale > 0.0 ? scale : 1.0);
+  const double tau = NeutralShift(hessian);
   stability.computed = true;
-  stability.stable = PositiveDefiniteWithShift(hessian, &cholesky, tau);
-  if (!stability.stable) stability.min_eigenvalue = MostNegativeEigenvalue(hessian, &cholesky, tau);
+  stability.stable = PositiveDefiniteWithShift(hessian, &workspace->cholesky, tau);
+  if (!stability.stable) {
+    stability.min_eigenvalue = MostNegativeEigenvalue(hessian, &workspace->cholesky, tau);
+  }
   return stability;
 }
 

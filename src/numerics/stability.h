@@ -16,13 +16,18 @@ struct Stability {
   double min_eigenvalue = 0.0;  // estimate of the most negative eigenvalue when not stable, N/m
 };
 
-Stability AnalyseStability(const Model& model, const double* positions);
+// `workspace`, when given, is the model's (src/numerics/sparse_hessian.h): the Hessian is assembled
+// and factorised in it (its values and factor are overwritten).
+Stability AnalyseStability(const Model& model, const double* positions,
+                           HessianWorkspace* workspace = nullptr);
 
 // For the assembled true Hessian `hessian` (its values()): false if it is positive definite (to
 // the same tolerance as AnalyseStability); else true, with an estimate of its most negative
 // eigenvalue and of the corresponding eigenvector (unit norm, over the free coordinates).
+// `cholesky`, when given, is an analysis of hessian's pattern to factorise in (its factor is
+// overwritten).
 bool NegativeCurvature(const FreeHessian& hessian, double* eigenvalue,
-                       std::vector<double>* direction);
+                       std::vector<double>* direction, SparseCholesky* cholesky = nullptr);
 
 }  // namespace drape
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -126,6 +127,10 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
     return !on_iteration || on_iteration(record);
   };
 
+  // One free Hessian and CHOLMOD analysis for the solve and the certificate after it.
+  std::unique_ptr<HessianWorkspace> workspace;
+  if (model.num_free_dofs() > 0) workspace = std::make_unique<HessianWorkspace>(model);
+  options.workspace = workspace.get();
   RunResult result;
   result.summary = info->make()->Solve(model, options);
   result.summary.solver = method;
@@ -134,9 +139,10 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   result.certificate = ComputeCertificate(model, model.positions.data(), constraint);
   ReturnToLastFinite(scene, method, last, model, &result);
   result.contact = MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
-  result.residual_floor = RelativeResidualFloor(model, model.positions.data());
+  FreeHessian* hessian = workspace ? &workspace->hessian : nullptr;
+  result.residual_floor = RelativeResidualFloor(model, model.positions.data(), hessian);
   if (result.certificate.unsound.empty()) {
-    result.stability = AnalyseStability(model, model.positions.data());
+    result.stability = AnalyseStability(model, model.positions.data(), workspace.get());
   } else {  // a state that cannot be certified is not called stable
     result.stability.computed = true;
     result.stability.stable = false;

@@ -15,6 +15,7 @@
 
 #include "src/model/model.h"
 #include "src/numerics/round_off_floor.h"
+#include "src/numerics/sparse_hessian.h"
 
 namespace drape {
 
@@ -35,6 +36,10 @@ struct SolverOptions {
   // Called after every iteration, with model.positions at the current iterate. Returning false
   // stops the solve (termination "stopped by caller").
   std::function<bool(const IterationRecord&)> on_iteration;
+  // The model's free Hessian and its CHOLMOD analysis, when the caller has built them (RunSolve,
+  // which certifies the answer in them afterwards): a solver that assembles or factorises the
+  // Hessian uses these instead of building its own. May be null.
+  HessianWorkspace* workspace = nullptr;
 };
 
 struct SolverSummary {

@@ -47,6 +47,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -158,9 +159,11 @@ class NewtonIteration {
       : model_(model),
         settings_(ReadSettings(options.method_options)),
         monitor_(model, options, summary),
-        dofs_(model),
-        hessian_(model, dofs_),
-        cholesky_(hessian_),
+        own_workspace_(options.workspace ? nullptr : std::make_unique<HessianWorkspace>(model)),
+        workspace_(options.workspace ? *options.workspace : *own_workspace_),
+        dofs_(workspace_.dofs),
+        hessian_(workspace_.hessian),
+        cholesky_(workspace_.cholesky),
         weights_(PseudoTimeWeights(model, dofs_)),
         mu_(settings_.regularization),
         model_size_(BoundingBoxDiagonal(model)) {}
@@ -186,9 +189,11 @@ class NewtonIteration {
   Model& model_;
   const NewtonSettings settings_;
   IterationMonitor monitor_;
-  const DofMap dofs_;
-  FreeHessian hessian_;
-  SparseCholesky cholesky_;
+  const std::unique_ptr<HessianWorkspace> own_workspace_;  // when the caller gave none
+  HessianWorkspace& workspace_;
+  const DofMap& dofs_;
+  FreeHessian& hessian_;
+  SparseCholesky& cholesky_;
   const std::vector<double> weights_;
   double mu_;
   const double model_size_;
@@ -450,7 +455,7 @@ bool NewtonIteration::EscapeSaddle() {
   if (counters_.saddle_escapes >= kMaxEscapes) return false;
   double eigenvalue;
   std::vector<double> direction;
-  if (!NegativeCurvature(hessian_, &eigenvalue, &direction)) return false;
+  if (!NegativeCurvature(hessian_, &eigenvalue, &direction, &cholesky_)) return false;
   const double rounding =
       64.0 * std::numeric_limits<double>::epsilon() * assembly_.energy_magnitude;
   double best_energy = assembly_.energy - rounding;
