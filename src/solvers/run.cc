@@ -127,9 +127,13 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
     return !on_iteration || on_iteration(record);
   };
 
-  // One free Hessian and CHOLMOD analysis for the solve and the certificate after it.
+  // One free Hessian and CHOLMOD analysis for the solve and the certificate after it (built after
+  // the solve for a method that does not use it: it would only add to that method's memory).
   std::unique_ptr<HessianWorkspace> workspace;
-  if (model.num_free_dofs() > 0) workspace = std::make_unique<HessianWorkspace>(model);
+  const bool has_free = model.num_free_dofs() > 0;
+  if (has_free && info->uses_hessian_workspace) {
+    workspace = std::make_unique<HessianWorkspace>(model);
+  }
   options.workspace = workspace.get();
   RunResult result;
   result.summary = info->make()->Solve(model, options);
@@ -139,6 +143,7 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   result.certificate = ComputeCertificate(model, model.positions.data(), constraint);
   ReturnToLastFinite(scene, method, last, model, &result);
   result.contact = MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
+  if (has_free && !workspace) workspace = std::make_unique<HessianWorkspace>(model);
   FreeHessian* hessian = workspace ? &workspace->hessian : nullptr;
   result.residual_floor = RelativeResidualFloor(model, model.positions.data(), hessian);
   if (result.certificate.unsound.empty()) {

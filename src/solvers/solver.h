@@ -74,6 +74,9 @@ class Solver {
 struct SolverInfo {
   std::string name;
   std::function<std::unique_ptr<Solver>()> make;
+  // Whether the method assembles and factorises the free Hessian (SolverOptions::workspace):
+  // RunSolve then builds the workspace before the solve, else only after it, for the certificate.
+  bool uses_hessian_workspace = false;
 };
 
 const std::vector<SolverInfo>& AllSolvers();

@@ -13,7 +13,7 @@ namespace {
 
 std::vector<SolverInfo> Factories() {
   return {
-      {"newton", [] { return NewNewtonSolver(); }},
+      {"newton", [] { return NewNewtonSolver(); }, /*uses_hessian_workspace=*/true},
       {"ceres-lbfgs", [] { return NewCeresLbfgsSolver(); }},
       {"ceres-lm", [] { return NewCeresLeastSquaresSolver(ceres::LEVENBERG_MARQUARDT); }},
       {"ceres-dogleg", [] { return NewCeresLeastSquaresSolver(ceres::DOGLEG); }},
