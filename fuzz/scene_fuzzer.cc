@@ -1,6 +1,7 @@
 // libFuzzer target: the scene loader, the model builder and the OBJ and PLY mesh readers on
-// arbitrary bytes (fuzz/fuzz_input.h says how an input becomes a scene and mesh files). Built with
-// -DDRAPE_FUZZ=ON and clang; run by .ci/fuzz.
+// arbitrary bytes (fuzz/fuzz_input.h says how an input becomes a scene and mesh files). Built by
+// the sanitized build with clang (-DDRAPE_SANITIZE=ON -DCMAKE_CXX_COMPILER=clang++); run by
+// .ci/fuzz.
 #include <cstddef>
 #include <cstdint>
 

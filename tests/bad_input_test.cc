@@ -1,5 +1,5 @@
-// Bad input, end to end through the `drape` command (DRAPE_BINARY): every scene in tests/data/bad/
-// is rejected by `drape check` and `drape solve` with exit status 2, a message
+// Bad input, end to end through the `drape` command (drape_tests::kDrapeBinary): every scene in
+// tests/data/bad/ is rejected by `drape check` and `drape solve` with exit status 2, a message
 // "FILE:LINE:COLUMN: key.path: what is wrong" on stderr, and nothing written.
 //
 // Each fixture states what it expects on its first line:
@@ -21,12 +21,14 @@
 #include <string>
 #include <vector>
 
+#include "tests/test_paths.h"
+
 namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kBadFolder = fs::path(DRAPE_SOURCE_DIR) / "tests" / "data" / "bad";
+const fs::path kBadFolder = fs::path(drape_tests::kSourceDir) / "tests" / "data" / "bad";
 
 struct Outcome {
   int exit_status = -1;
@@ -107,7 +109,7 @@ class BadInputTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(scratch_); }
 
   Outcome Drape(const std::vector<std::string>& args) const {
-    std::string command = ShellQuoted(DRAPE_BINARY);
+    std::string command = ShellQuoted(drape_tests::kDrapeBinary);
     for (const auto& arg : args) command += " " + ShellQuoted(arg);
     const fs::path err = scratch_ / "stderr.txt";
     command += " > /dev/null 2> " + ShellQuoted(err.string());
@@ -265,8 +267,8 @@ TEST_F(BadInputTest, OutOfMemoryIsAMessageAndExitStatus2) {
                           "fixed:\n  - nodes: {edge: top}\n"
                           "loads: {gravity: [0, 0, -9.81]}\n";
   const fs::path err = scratch_ / "stderr.txt";
-  const std::string command = "ulimit -v 1000000; " + ShellQuoted(DRAPE_BINARY) + " check " +
-                              ShellQuoted(scene.string()) + " > /dev/null 2> " +
+  const std::string command = "ulimit -v 1000000; " + ShellQuoted(drape_tests::kDrapeBinary) +
+                              " check " + ShellQuoted(scene.string()) + " > /dev/null 2> " +
                               ShellQuoted(err.string());
   const int status = std::system(("bash -c " + ShellQuoted(command)).c_str());
   ASSERT_TRUE(WIFEXITED(status));

@@ -1,5 +1,5 @@
-// The `drape` command, run as a process (DRAPE_BINARY): subcommands, exit status, what is written
-// and what is not.
+// The `drape` command, run as a process (drape_tests::kDrapeBinary): subcommands, exit status,
+// what is written and what is not.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -21,6 +21,7 @@
 #include "src/output/version.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/solvers/solver.h"
+#include "tests/test_paths.h"
 
 namespace drape {
 namespace {
@@ -102,7 +103,7 @@ class CliTest : public ::testing::Test {
   }
 
   Outcome Drape(const std::vector<std::string>& args) const {
-    std::string command = ShellQuoted(DRAPE_BINARY);
+    std::string command = ShellQuoted(drape_tests::kDrapeBinary);
     for (const auto& arg : args) command += " " + ShellQuoted(arg);
     const fs::path out = directory_ / "stdout.txt", err = directory_ / "stderr.txt";
     command += " > " + ShellQuoted(out.string()) + " 2> " + ShellQuoted(err.string());
@@ -307,7 +308,7 @@ TEST_F(CliTest, ResultFolderRecordsItsProvenance) {
 // KES inputs: summary.json and `drape check` give the SI values they were converted to.
 TEST_F(CliTest, KesInputsAreReportedInSiUnits) {
   const std::string scene =
-      std::string(DRAPE_SOURCE_DIR) + "/configs/fv/drape_tester_cotton_24.yaml";
+      std::string(drape_tests::kSourceDir) + "/configs/fv/drape_tester_cotton_24.yaml";
   const Outcome check = Drape({"check", scene, "--set", "material.finite_volume.kes.B_warp=0.2"});
   ASSERT_EQ(check.exit_status, 0) << check.err;
   EXPECT_NE(check.out.find("D_warp " + FormatNumber(KesBendingRigidity(0.2), 6) + " N*m"),
@@ -411,7 +412,8 @@ TEST_F(CliTest, SolveConvergesAndWritesEveryRequestedFile) {
 // solver.levels: one summary entry per level (coarsest first), the extrapolation, and the
 // stdout line ending with it (the tip-loaded cantilever: 11, 21 and 41 nodes).
 TEST_F(CliTest, LevelsReportEachLevelAndTheExtrapolation) {
-  const std::string scene = std::string(DRAPE_SOURCE_DIR) + "/configs/fv/cantilever_tip.yaml";
+  const std::string scene =
+      std::string(drape_tests::kSourceDir) + "/configs/fv/cantilever_tip.yaml";
   const Outcome outcome = Drape({"solve", scene, "--out", out_.string(), "--set",
                                  "mesh.nodes=[41, 1]", "--set", "solver.levels=3"});
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
@@ -509,7 +511,8 @@ void ExpectInterruptSavesTheLastIterate(const fs::path& directory, const std::st
   if (child == 0) {
     const std::string quiet = (directory / "child_output.txt").string();
     if (!freopen(quiet.c_str(), "w", stdout) || !freopen(quiet.c_str(), "a", stderr)) _exit(100);
-    execl(DRAPE_BINARY, DRAPE_BINARY, "solve", scene.c_str(), static_cast<char*>(nullptr));
+    execl(drape_tests::kDrapeBinary, drape_tests::kDrapeBinary, "solve", scene.c_str(),
+          static_cast<char*>(nullptr));
     _exit(101);
   }
   sigprocmask(SIG_SETMASK, &previous, nullptr);
@@ -561,8 +564,8 @@ TEST_F(CliTest, StabilityIsOnTheResultLineAndASaddleExitsThree) {
   EXPECT_FALSE(Summary(out_)["saddle"].as<bool>());
 
   const Outcome saddle =
-      Drape({"solve", std::string(DRAPE_SOURCE_DIR) + "/configs/puiseux/curtain_3d.yaml", "--out",
-             (directory_ / "curtain").string()});
+      Drape({"solve", std::string(drape_tests::kSourceDir) + "/configs/puiseux/curtain_3d.yaml",
+             "--out", (directory_ / "curtain").string()});
   EXPECT_EQ(saddle.exit_status, 3) << saddle.out << saddle.err;
   EXPECT_NE(saddle.out.find("converged yes"), std::string::npos) << saddle.out;
   EXPECT_NE(saddle.out.find("saddle: most negative eigenvalue -"), std::string::npos) << saddle.out;
@@ -595,7 +598,7 @@ TEST_F(CliTest, ASecondRunIntoAHeldFolderIsRefusedBeforeItSolves) {
 // `drape sweep` on a coarse drape tester (a fraction of a second per task): the sweep file is
 // written next to a copy of the repository's cotton scene.
 std::string WriteSweepFile(const fs::path& folder, const std::string& grid) {
-  fs::copy_file(fs::path(DRAPE_SOURCE_DIR) / "configs/fv/drape_tester_cotton_30.yaml",
+  fs::copy_file(fs::path(drape_tests::kSourceDir) / "configs/fv/drape_tester_cotton_30.yaml",
                 folder / "base.yaml");
   std::ofstream(folder / "sweep.yaml") << "scene: base.yaml\nset: {mesh.spacing: 0.05}\ngrid:\n"
                                        << grid;

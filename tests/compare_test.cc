@@ -11,6 +11,7 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/scene/scene_loader.h"
+#include "tests/test_paths.h"
 
 namespace drape {
 namespace {
@@ -18,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string SourcePath(const std::string& relative) {
-  return (fs::path(DRAPE_SOURCE_DIR) / relative).string();
+  return (fs::path(drape_tests::kSourceDir) / relative).string();
 }
 
 std::string ReadText(const fs::path& path) {

@@ -15,6 +15,7 @@
 
 #include "tests/fit_test_support.h"
 #include "tests/mpi_run.h"
+#include "tests/test_paths.h"
 
 namespace drape::testing {
 namespace {
@@ -81,7 +82,8 @@ TEST_P(FitMpi, AParallelFitGivesTheSerialFit) {
   }
   const std::string folder = FitTempDir("mpi_" + GetParam());
   const std::string fit = ThreeHammocksFit(folder);
-  const std::string drape = std::string(DRAPE_BINARY) + " fit " + fit + " --method " + GetParam();
+  const std::string drape =
+      std::string(drape_tests::kDrapeBinary) + " fit " + fit + " --method " + GetParam();
   const auto run = [&](const std::string& launcher, const std::string& name,
                        const std::string& threads) {
     const ProgramOutcome outcome = RunProgram(

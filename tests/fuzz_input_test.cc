@@ -12,13 +12,16 @@
 #include <map>
 #include <string>
 
+#include "tests/test_paths.h"
+
 namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
 
 int RunSeed(const std::string& name) {
-  std::ifstream file(fs::path(DRAPE_SOURCE_DIR) / "fuzz" / "corpus" / name, std::ios::binary);
+  std::ifstream file(fs::path(drape_tests::kSourceDir) / "fuzz" / "corpus" / name,
+                     std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   EXPECT_FALSE(bytes.empty()) << name;
   return drape_fuzz::RunInput(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
@@ -34,7 +37,8 @@ TEST(FuzzInput, MeshSeedsReachTheMeshReaders) {
 }
 
 TEST(FuzzInput, EverySeedLoadsOrIsRefused) {
-  for (const auto& entry : fs::directory_iterator(fs::path(DRAPE_SOURCE_DIR) / "fuzz" / "corpus")) {
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(drape_tests::kSourceDir) / "fuzz" / "corpus")) {
     const int outcome = RunSeed(entry.path().filename().string());
     EXPECT_GE(outcome, -2) << entry.path();
   }

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/test_paths.h"
+
 namespace drape {
 namespace {
 
@@ -56,7 +58,8 @@ std::vector<std::string> RepoIncludes(const fs::path& file) {
 std::vector<fs::path> SourceFiles() {
   std::vector<fs::path> files;
   for (const char* top : {"src", "costs"}) {
-    for (const auto& entry : fs::recursive_directory_iterator(fs::path(DRAPE_SOURCE_DIR) / top)) {
+    for (const auto& entry :
+         fs::recursive_directory_iterator(fs::path(drape_tests::kSourceDir) / top)) {
       const auto ext = entry.path().extension();
       if (entry.is_regular_file() && (ext == ".h" || ext == ".cc")) files.push_back(entry.path());
     }
@@ -67,7 +70,7 @@ std::vector<fs::path> SourceFiles() {
 
 TEST(LayerRule, EverySourceFileLivesInALayerFolder) {
   for (const auto& file : SourceFiles()) {
-    const auto relative = fs::relative(file, DRAPE_SOURCE_DIR).generic_string();
+    const auto relative = fs::relative(file, drape_tests::kSourceDir).generic_string();
     EXPECT_GE(LayerIndex(FolderOf(relative)), 0) << relative << " is in no layer folder";
   }
 }
@@ -75,7 +78,7 @@ TEST(LayerRule, EverySourceFileLivesInALayerFolder) {
 TEST(LayerRule, NoIncludePointsUpTheStack) {
   int checked = 0;
   for (const auto& file : SourceFiles()) {
-    const auto relative = fs::relative(file, DRAPE_SOURCE_DIR).generic_string();
+    const auto relative = fs::relative(file, drape_tests::kSourceDir).generic_string();
     const int own = LayerIndex(FolderOf(relative));
     for (const auto& include : RepoIncludes(file)) {
       const int target = LayerIndex(FolderOf(include));

@@ -9,6 +9,8 @@
 #include <set>
 #include <string>
 
+#include "tests/test_paths.h"
+
 namespace drape {
 namespace {
 
@@ -28,7 +30,7 @@ MeshSpec GridSpec(int nu, int nv, double width, double height) {
 MeshSpec FileSpec(const std::string& name) {
   MeshSpec spec;
   spec.kind = MeshSpec::Kind::kFile;
-  spec.path = std::string(DRAPE_SOURCE_DIR) + "/tests/data/meshes/" + name;
+  spec.path = std::string(drape_tests::kSourceDir) + "/tests/data/meshes/" + name;
   spec.where = SceneLocation();
   return spec;
 }

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/test_paths.h"
+
 namespace drape {
 namespace {
 
@@ -88,7 +90,7 @@ std::string OptionsTable() {
 }
 
 std::string ReadmeSection(const std::string& begin, const std::string& end) {
-  std::ifstream file(std::string(DRAPE_SOURCE_DIR) + "/README.md");
+  std::ifstream file(std::string(drape_tests::kSourceDir) + "/README.md");
   std::stringstream text;
   text << file.rdbuf();
   const std::string readme = text.str();

@@ -9,6 +9,7 @@
 #include "src/solvers/run.h"
 #include "src/solvers/solvers.h"
 #include "tests/hand_built_models.h"
+#include "tests/test_paths.h"
 
 namespace drape {
 namespace {
@@ -88,8 +89,9 @@ TEST(Newton, LeavesASaddleThatStallsItAndEndsAtAStableDrape) {
   // iterations (checked by disabling it); a step along the most negative curvature leaves it for
   // the drape. (Before, this test used a finite-volume drape whose path reached such a saddle
   // only by the rounding of one build and one set of BLAS kernels.)
-  const Scene scene = LoadScene(std::string(DRAPE_SOURCE_DIR) + "/configs/netlogo/disc_arc.yaml",
-                                {"solver.tolerance=1e-13"});
+  const Scene scene =
+      LoadScene(std::string(drape_tests::kSourceDir) + "/configs/netlogo/disc_arc.yaml",
+                {"solver.tolerance=1e-13"});
   Model model = BuildModel(scene);
   const RunResult result = RunSolve(scene, model, "newton");
   ASSERT_TRUE(result.converged) << result.summary.termination;
@@ -112,7 +114,8 @@ TEST(Newton, AModelWithoutFreeCoordinatesIsEvaluatedNotSolved) {
 // eigenvalue −1.24 N/m, energy −0.00431 J, drape ratio 0.94) and exit 0; now it leaves it along
 // the negative curvature and finds the drape (−0.01387 J).
 TEST(Newton, LeavesTheSaddleOfTheFlatDiscOnAPin) {
-  const Scene scene = LoadScene(std::string(DRAPE_SOURCE_DIR) + "/configs/netlogo/disc_arc.yaml");
+  const Scene scene =
+      LoadScene(std::string(drape_tests::kSourceDir) + "/configs/netlogo/disc_arc.yaml");
   Model model = BuildModel(scene);
   const RunResult result = RunSolve(scene, model, "newton");
   EXPECT_TRUE(result.converged) << result.summary.termination;
@@ -124,8 +127,9 @@ TEST(Newton, LeavesTheSaddleOfTheFlatDiscOnAPin) {
 
 // With escape_saddles: 0 it stops there, and the result says it is a saddle.
 TEST(Newton, WithoutEscapeTheSaddleIsReportedAsOne) {
-  const Scene scene = LoadScene(std::string(DRAPE_SOURCE_DIR) + "/configs/netlogo/disc_arc.yaml",
-                                {"solver.newton.escape_saddles=0"});
+  const Scene scene =
+      LoadScene(std::string(drape_tests::kSourceDir) + "/configs/netlogo/disc_arc.yaml",
+                {"solver.newton.escape_saddles=0"});
   Model model = BuildModel(scene);
   const RunResult result = RunSolve(scene, model, "newton");
   EXPECT_TRUE(result.converged) << result.summary.termination;

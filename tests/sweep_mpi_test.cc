@@ -10,6 +10,7 @@
 
 #include "src/sweep/sweep.h"
 #include "tests/mpi_run.h"
+#include "tests/test_paths.h"
 
 namespace drape {
 namespace {
@@ -57,7 +58,7 @@ class SweepMpi : public ::testing::Test {
                ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(folder_);
     fs::create_directories(folder_);
-    fs::copy_file(fs::path(DRAPE_SOURCE_DIR) / "configs/fv/drape_tester_cotton_30.yaml",
+    fs::copy_file(fs::path(drape_tests::kSourceDir) / "configs/fv/drape_tester_cotton_30.yaml",
                   folder_ / "base.yaml");
   }
   void TearDown() override { fs::remove_all(folder_); }
@@ -65,8 +66,9 @@ class SweepMpi : public ::testing::Test {
   // `drape sweep` of `text` into out_<label>, under `mpirun -np ranks` (0: alone, one thread).
   ProgramOutcome Sweep(const std::string& text, int ranks, const std::string& label) const {
     std::ofstream(folder_ / "sweep.yaml") << text;
-    const std::string command = std::string(DRAPE_BINARY) + " sweep sweep.yaml --no-plots -o out_" +
-                                label + (ranks == 0 ? " --threads 1" : "");
+    const std::string command = std::string(drape_tests::kDrapeBinary) +
+                                " sweep sweep.yaml --no-plots -o out_" + label +
+                                (ranks == 0 ? " --threads 1" : "");
     return RunProgram(
         "cd '" + folder_.string() + "' && " + (ranks == 0 ? command : MpiRun(ranks) + command),
         folder_);

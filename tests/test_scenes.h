@@ -9,11 +9,12 @@
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
 #include "src/solvers/run.h"
+#include "tests/test_paths.h"
 
 namespace drape::testing {
 
 inline std::string SourcePath(const std::string& relative) {
-  return std::string(DRAPE_SOURCE_DIR) + "/" + relative;
+  return std::string(drape_tests::kSourceDir) + "/" + relative;
 }
 
 inline Scene LoadConfig(const std::string& relative,

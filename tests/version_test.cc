@@ -6,6 +6,7 @@
 #include <string>
 
 #include "src/output/command_output.h"
+#include "tests/test_paths.h"
 
 namespace drape {
 namespace {
@@ -18,7 +19,7 @@ namespace {
 TEST(Version, NamesTheSourcesItWasBuiltFrom) {
   const std::string version = DrapeVersion();
   EXPECT_EQ(version.rfind("0.", 0), 0u) << version;
-  const std::string source = DRAPE_SOURCE_DIR;
+  const std::string source = drape_tests::kSourceDir;
   if (!std::filesystem::exists(source + "/.git")) GTEST_SKIP() << "not built from a git clone";
   const std::string describe =
       CommandOutput("git -C '" + source + "' describe --always --dirty 2>/dev/null");

@@ -6,7 +6,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
 
 #include "src/model/small_product.h"
 
@@ -36,25 +35,19 @@ bool CholeskyShowsSemidefinite(const Matrix& matrix, double tolerance) {
 // semidefinite in place: each negative eigenvalue set to zero (kClamp) or to its magnitude
 // (kAbsolute). A matrix that a Cholesky factorisation already shows to be semidefinite (to
 // roundoff: 1e-12 of its largest entry) is left alone, which spares the eigen-decomposition for
-// most. Returns true if it changed.
+// most. Returns true if it changed. Defined in psd_projection.cc and instantiated there once for
+// N = 2, 3, 6, 9, 12, 15 and Eigen::Dynamic (Eigen's eigensolvers are the heaviest code a unit
+// can compile; docs/building.md): another N does not link until it is added there.
 template <int N>
-bool ProjectSymmetric(EigenvalueFilter filter, int n, double* data) {
-  using Matrix = Eigen::Matrix<double, N, N, Eigen::RowMajor>;
-  Eigen::Map<Matrix> matrix(data, n, n);
-  const double scale = matrix.cwiseAbs().maxCoeff();
-  if (scale == 0.0) return false;
-  const double tolerance = 1e-12 * scale;  // rounding of a semidefinite matrix's zero eigenvalues
-  if (CholeskyShowsSemidefinite(matrix, tolerance)) return false;
-  const Eigen::SelfAdjointEigenSolver<Matrix> eigen(matrix);
-  const auto& values = eigen.eigenvalues();
-  if (values.minCoeff() >= -tolerance) return false;
-  using Vector = Eigen::Matrix<double, N, 1>;
-  const Vector filtered = filter == EigenvalueFilter::kAbsolute ? Vector(values.cwiseAbs())
-                                                                : Vector(values.cwiseMax(0.0));
-  const Matrix scaled = eigen.eigenvectors() * filtered.asDiagonal();
-  matrix = SmallProduct(scaled, eigen.eigenvectors().transpose());
-  return true;
-}
+bool ProjectSymmetric(EigenvalueFilter filter, int n, double* data);
+
+extern template bool ProjectSymmetric<2>(EigenvalueFilter, int, double*);
+extern template bool ProjectSymmetric<3>(EigenvalueFilter, int, double*);
+extern template bool ProjectSymmetric<6>(EigenvalueFilter, int, double*);
+extern template bool ProjectSymmetric<9>(EigenvalueFilter, int, double*);
+extern template bool ProjectSymmetric<12>(EigenvalueFilter, int, double*);
+extern template bool ProjectSymmetric<15>(EigenvalueFilter, int, double*);
+extern template bool ProjectSymmetric<Eigen::Dynamic>(EigenvalueFilter, int, double*);
 
 // The same for a fixed-size symmetric Eigen matrix (either storage order).
 template <int N, int kOptions>
