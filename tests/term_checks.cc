@@ -38,6 +38,7 @@ Eigen::MatrixXd GaussNewtonByCeres(const Term& term, const std::vector<double>& 
   for (int node : term.nodes()) parameters.push_back(positions.data() + 3 * node);
   std::vector<double> residuals(outputs), blocks(nodes * outputs * 3);
   std::vector<double*> jacobians;
+  jacobians.reserve(nodes);
   for (int a = 0; a < nodes; ++a) jacobians.push_back(blocks.data() + a * outputs * 3);
   EXPECT_TRUE(cost->Evaluate(parameters.data(), residuals.data(), jacobians.data()));
   Eigen::MatrixXd jacobian(outputs, 3 * nodes);
