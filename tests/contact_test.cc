@@ -148,6 +148,39 @@ TEST(Contact, CountsTheNodesThatWentUnderASupportDisk) {
   EXPECT_EQ(NodesUnderDisks(obstacles, contact.thickness, model, model.positions.data()).nodes, 0);
 }
 
+// The fabric's edges that cross a support disk's plane inside its rim pass through the disk,
+// whatever side their nodes are counted on: an edge from over the disc to under it, one from over
+// the disc to beside it cutting the rim's corner below the plane, and not one that crosses the
+// plane beyond the rim or stays above it.
+TEST(Contact, CountsTheEdgesThroughASupportDisk) {
+  Model model = testing::Sheet(SmallSheet({}));
+  ObstacleSpec disk;
+  disk.kind = "disk";
+  disk.center = {0.0, 0.0, 0.0};
+  disk.radius = 0.05;
+  const std::vector<ObstacleSpec> obstacles = {disk};
+  std::vector<double> x(model.positions.size(), 1.0);  // every node far above the disk
+  auto place = [&](int node, double rho, double z) {
+    x[3 * node] = rho;
+    x[3 * node + 1] = 0.0;
+    x[3 * node + 2] = z;
+  };
+  model.triangles = {{0, 1, 2}, {3, 4, 5}};
+  model.edges.clear();
+  place(0, 0.02, 0.001);    // edge 0–1 through the disc, 2 cm from its axis
+  place(1, 0.02, -0.001);   //
+  place(2, 0.3, 0.001);     // edge 1–2 crosses the plane beyond the rim, 0–2 stays above it
+  place(3, 0.045, 0.0005);  // edge 3–4 from over the disc to beside its rim, crossing the plane
+  place(4, 0.065, -0.002);  // at ρ = 4.9 cm: through the corner, 1 mm inside the rim
+  place(5, 0.07, 0.01);     // edge 4–5 crosses the plane beyond the rim; 3–5 stays above
+  const UnderDisks under = NodesUnderDisks(obstacles, 0.001, model, x.data());
+  EXPECT_EQ(under.edges, 2);
+  EXPECT_NEAR(under.inside, 0.03, 1e-12);  // node 1 and edge 0–1, 3 cm inside the rim
+  const ContactReport report = MeasureContact(obstacles, ContactSpec{}, model, x.data());
+  EXPECT_EQ(report.edges_through_disk, 2);
+  EXPECT_TRUE(report.ThroughDisk());
+}
+
 // A square sheet draped over a sphere, its centre node held sideways (x, y) and one edge node
 // held along y (no spin about the vertical), solved with newton: the stiffness rule keeps every
 // node within 10 % of the thickness, for the spring and the finite-volume fabric alike.

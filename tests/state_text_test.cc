@@ -1,6 +1,7 @@
 // StateText: what drape solve's result line and drape sweep's rows say of the final state. A run
 // that stopped short of the tolerance (an iteration or time limit) is not an equilibrium, whatever
-// its Hessian: it used to be called a "stable minimum" there.
+// its Hessian: it used to be called a "stable minimum" there. Nor is a state with the fabric
+// through a support disk.
 #include "src/solvers/state_text.h"
 
 #include <gtest/gtest.h>
@@ -27,6 +28,27 @@ TEST(StateText, ARunThatDidNotConvergeIsNotAnEquilibrium) {
             "not an equilibrium (Hessian positive definite there)");
   EXPECT_EQ(StateText(Result(false, false, -0.49)),
             "not an equilibrium (most negative eigenvalue -0.49 N/m)");
+}
+
+// A state with the fabric through a support disk is no drape over it: never a stable minimum,
+// whatever its Hessian (the counts and depth are MeasureContact's, src/model/contact.h).
+TEST(StateText, FabricThroughASupportDiskIsNeverAStableMinimum) {
+  RunResult under = Result(true, true, 0.25);
+  under.contact.nodes_under_disk = 216;
+  under.contact.under_disk_inside = 0.0062;
+  EXPECT_EQ(StateText(under),
+            "fabric through the support disk (216 nodes under it, up to 6.2 mm "
+            "inside its rim)");
+  RunResult through = Result(false, true, 0.25);
+  through.contact.edges_through_disk = 1;
+  through.contact.under_disk_inside = 0.0003;
+  EXPECT_EQ(StateText(through),
+            "fabric through the support disk (1 edge through it, up to 0.3 mm "
+            "inside its rim), not an equilibrium");
+  under.contact.edges_through_disk = 3;
+  EXPECT_EQ(StateText(under),
+            "fabric through the support disk (216 nodes under it, 3 edges "
+            "through it, up to 6.2 mm inside its rim)");
 }
 
 TEST(StateText, NoVerdictWhereTheStateIsUnsoundOrStabilityWasNotComputed) {

@@ -65,7 +65,8 @@ constexpr char kExitStatus[] =
     "exit status: 0 converged to a stable minimum; 1 ran but did not reach the tolerance\n"
     "(results written, converged: false; also after SIGINT or SIGTERM, which save the last\n"
     "iterate); 2 bad input, bad usage or an unwritable output folder (nothing written);\n"
-    "3 converged to a saddle, not a minimum (results written, saddle: true).\n"
+    "3 converged, but to a saddle (saddle: true) or with the fabric through a support disk\n"
+    "(results written).\n"
     "Results go to stdout; progress, warnings and errors to stderr.\n";
 
 constexpr char kSetHelp[] =
@@ -128,19 +129,6 @@ void EnableInterrupt() {
   pthread_sigmask(SIG_UNBLOCK, &interrupt, nullptr);
 }
 
-// A state with nodes under a support disk is not a drape over it, whatever the certificate says.
-std::string UnderDiskText(const RunResult& result) {
-  const int under = result.contact.nodes_under_disk;
-  if (under == 0) return "";
-  char inside[64];
-  std::snprintf(inside, sizeof inside, ", up to %.2g mm inside its rim",
-                1e3 * result.contact.under_disk_inside);
-  return ", but " + std::to_string(under) + (under == 1 ? " node hangs" : " nodes hang") +
-         " under the support disk" + inside +
-         ": the mesh's edges cut the rim's corner (the contact acts on nodes only); refine the "
-         "mesh";
-}
-
 std::string ResultLine(const RunResult& result, const std::string& directory) {
   const SolverSummary& summary = result.summary;
   char text[200];
@@ -148,15 +136,15 @@ std::string ResultLine(const RunResult& result, const std::string& directory) {
                 "%s: converged %s, %d iterations, %.3g s, relative residual %.3g, ",
                 summary.solver.c_str(), result.converged ? "yes" : "no", summary.iterations,
                 summary.wall_time_s, result.certificate.relative_residual);
-  return std::string(text) + StateText(result) + UnderDiskText(result) + " (" +
-         summary.termination + "); results in " + directory;
+  return std::string(text) + StateText(result) + " (" + summary.termination + "); results in " +
+         directory;
 }
 
-// 0 converged to a stable minimum (or stability not computed), 3 converged to a saddle, 1 not
-// converged.
+// 0 converged to a stable minimum (or stability not computed), 3 converged to a saddle or with
+// the fabric through a support disk, 1 not converged.
 int ExitStatus(const RunResult& result) {
   if (!result.converged) return kExitNotConverged;
-  return result.Saddle() ? kExitSaddle : kExitConverged;
+  return result.Saddle() || result.contact.ThroughDisk() ? kExitSaddle : kExitConverged;
 }
 
 // The stdout summary of a `solver.levels` run: the iterations and time of all levels together

@@ -14,7 +14,8 @@ enum ExitStatus {
   kExitConverged = 0,     // solved to the tolerance (or another subcommand succeeded)
   kExitNotConverged = 1,  // ran, results written, but the tolerance was not reached
   kExitBadInput = 2,      // bad scene, bad usage, or results that could not be written
-  kExitSaddle = 3,        // converged, results written, but not a stable minimum (a saddle)
+  kExitSaddle = 3,        // converged, results written, but not a stable minimum (a saddle, or
+                          // the fabric through a support disk)
 };
 
 struct CommandOptions {

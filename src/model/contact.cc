@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <set>
 #include <string>
+#include <utility>
 
 #include "src/model/obstacle_kinds.h"
 
@@ -22,6 +24,18 @@ void CheckContactInput(const std::vector<ObstacleSpec>& obstacles, const Contact
     const Location& where = contact.where.line > 0 ? contact.where : obstacles.front().where;
     throw InputError(where, "contact.thickness must be positive when there are obstacles");
   }
+}
+
+// Every edge of the fabric once (the triangles' sides and the line elements), as (lower, higher)
+// node ids.
+std::set<std::pair<int, int>> FabricEdges(const Model& model) {
+  std::set<std::pair<int, int>> edges;
+  auto add = [&edges](int a, int b) { edges.insert({std::min(a, b), std::max(a, b)}); };
+  for (const auto& triangle : model.triangles) {
+    for (int side = 0; side < 3; ++side) add(triangle[side], triangle[(side + 1) % 3]);
+  }
+  for (const auto& edge : model.edges) add(edge[0], edge[1]);
+  return edges;
 }
 
 }  // namespace
@@ -95,6 +109,7 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
   }
   const UnderDisks under = NodesUnderDisks(obstacles, contact.thickness, model, positions);
   report.nodes_under_disk = under.nodes;
+  report.edges_through_disk = under.edges;
   report.under_disk_inside = under.inside;
   return report;
 }
@@ -104,6 +119,31 @@ namespace {
 // ρ: a point's distance from a disk's axis.
 double DistanceFromAxis(const ObstacleSpec& disc, const double* x) {
   return std::hypot(x[0] - disc.center.x(), x[1] - disc.center.y());
+}
+
+// Adds the fabric's edges that cross a disk's plane inside its rim to `under`.
+void CountEdgesThroughDisks(const std::vector<ObstacleSpec>& obstacles, const Model& model,
+                            const double* positions, UnderDisks* under) {
+  bool any_disk = false;
+  for (const ObstacleSpec& obstacle : obstacles) any_disk = any_disk || obstacle.kind == "disk";
+  if (!any_disk) return;
+  for (const auto& [a, b] : FabricEdges(model)) {
+    const double* x_a = positions + 3 * a;
+    const double* x_b = positions + 3 * b;
+    for (const ObstacleSpec& disc : obstacles) {
+      if (disc.kind != "disk") continue;
+      const double h_a = x_a[2] - disc.center.z(), h_b = x_b[2] - disc.center.z();
+      if (!((h_a > 0.0 && h_b < 0.0) || (h_a < 0.0 && h_b > 0.0))) continue;
+      const double s = h_a / (h_a - h_b);
+      const double crossing[3] = {x_a[0] + s * (x_b[0] - x_a[0]), x_a[1] + s * (x_b[1] - x_a[1]),
+                                  disc.center.z()};
+      const double inside = disc.radius - DistanceFromAxis(disc, crossing);
+      if (!(inside > 0.0)) continue;
+      ++under->edges;
+      under->inside = std::max(under->inside, inside);
+      break;
+    }
+  }
 }
 
 }  // namespace
@@ -133,6 +173,7 @@ UnderDisks NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double cl
       under.inside = std::max(under.inside, disc.radius - DistanceFromAxis(disc, x));
     }
   }
+  CountEdgesThroughDisks(obstacles, model, positions, &under);
   return under;
 }
 
