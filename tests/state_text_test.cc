@@ -30,25 +30,27 @@ TEST(StateText, ARunThatDidNotConvergeIsNotAnEquilibrium) {
             "not an equilibrium (most negative eigenvalue -0.49 N/m)");
 }
 
+// A positive definite state with `nodes` under a support disk and `edges` through it, `inside`
+// metres inside its rim at the deepest.
+RunResult ThroughDisk(bool converged, int nodes, int edges, double inside) {
+  RunResult result = Result(converged, true, 0.25);
+  result.contact.nodes_under_disk = nodes;
+  result.contact.edges_through_disk = edges;
+  result.contact.under_disk_inside = inside;
+  return result;
+}
+
 // A state with the fabric through a support disk is no drape over it: never a stable minimum,
 // whatever its Hessian (the counts and depth are MeasureContact's, src/model/contact.h).
 TEST(StateText, FabricThroughASupportDiskIsNeverAStableMinimum) {
-  RunResult under = Result(true, true, 0.25);
-  under.contact.nodes_under_disk = 216;
-  under.contact.under_disk_inside = 0.0062;
-  EXPECT_EQ(StateText(under),
-            "fabric through the support disk (216 nodes under it, up to 6.2 mm "
-            "inside its rim)");
-  RunResult through = Result(false, true, 0.25);
-  through.contact.edges_through_disk = 1;
-  through.contact.under_disk_inside = 0.0003;
-  EXPECT_EQ(StateText(through),
-            "fabric through the support disk (1 edge through it, up to 0.3 mm "
-            "inside its rim), not an equilibrium");
-  under.contact.edges_through_disk = 3;
-  EXPECT_EQ(StateText(under),
-            "fabric through the support disk (216 nodes under it, 3 edges "
-            "through it, up to 6.2 mm inside its rim)");
+  EXPECT_EQ(StateText(ThroughDisk(true, 216, 0, 0.0062)),
+            "fabric through the support disk (216 nodes under it, up to 6.2 mm inside its rim)");
+  EXPECT_EQ(StateText(ThroughDisk(false, 0, 1, 0.0003)),
+            "fabric through the support disk (1 edge through it, up to 0.3 mm inside its rim), "
+            "not an equilibrium");
+  EXPECT_EQ(StateText(ThroughDisk(true, 216, 3, 0.0062)),
+            "fabric through the support disk (216 nodes under it, 3 edges through it, up to "
+            "6.2 mm inside its rim)");
 }
 
 TEST(StateText, NoVerdictWhereTheStateIsUnsoundOrStabilityWasNotComputed) {
