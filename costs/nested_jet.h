@@ -49,4 +49,16 @@ EnableForNestedJet<T, N, S> operator/(S s, const Jet<T, N>& f) {
 
 }  // namespace ceres
 
+namespace drape {
+
+// The value of a number, a Jet or a nested Jet, as a plain double (its derivative parts dropped):
+// for a functor that decides from the value alone which branch its derivatives take.
+inline double ScalarPart(double x) { return x; }
+template <typename T, int N>
+double ScalarPart(const ceres::Jet<T, N>& x) {
+  return ScalarPart(x.a);
+}
+
+}  // namespace drape
+
 #endif  // DRAPE_COSTS_NESTED_JET_H_

@@ -111,12 +111,12 @@ TEST(Contact, MeasuresTheDeepestNodeInsideTheClearance) {
   EXPECT_DOUBLE_EQ(report.stiffness, ContactStiffness(contact, model));
 }
 
-// The nodes that started above a support disk and ended under it (NodesUnderDisks): below its
+// The nodes that started above a support disk and hang under it (NodesUnderDisks): below its
 // mid-plane in its contact layer, or below the layer more than the clearance inside the rim.
 // Not counted: a node in the upper half of the layer, one below the layer within the clearance
-// of the rim (a lattice edge cutting the rim's corner), one beyond the rim, one that started
-// below the disk.
-TEST(Contact, CountsTheNodesThatWentUnderASupportDisk) {
+// of the rim, one beyond the rim, one that started below the disk. No edge passes through the
+// disk (the sheet's triangles join no two of these nodes across it): not through it.
+TEST(Contact, CountsTheNodesThatHangUnderASupportDisk) {
   Model model = testing::Sheet(SmallSheet({}));
   ObstacleSpec disk;
   disk.kind = "disk";
@@ -138,12 +138,14 @@ TEST(Contact, CountsTheNodesThatWentUnderASupportDisk) {
   place(4, 0.06, -0.01);    // beyond the rim
   model.initial[3 * 5 + 2] = -0.02;
   place(5, 0.01, -0.01);  // started below the disk
+  model.triangles.clear();
+  model.edges.clear();
   const UnderDisks under = NodesUnderDisks(obstacles, contact.thickness, model, x.data());
   EXPECT_EQ(under.nodes, 2);
-  EXPECT_NEAR(under.inside, 0.04, 1e-15);  // node 0, 1 cm from the centre of a 5 cm disk
+  EXPECT_EQ(under.edges, 0);
   const ContactReport report = MeasureContact(obstacles, contact, model, x.data());
   EXPECT_EQ(report.nodes_under_disk, 2);
-  EXPECT_EQ(report.under_disk_inside, under.inside);
+  EXPECT_FALSE(report.ThroughDisk());
   EXPECT_EQ(PlaceOnDisc(disk, contact.thickness, &x[3 * 3]), DiscPlace::kBesideRimBelow);
   EXPECT_EQ(NodesUnderDisks(obstacles, contact.thickness, model, model.positions.data()).nodes, 0);
 }
@@ -175,7 +177,7 @@ TEST(Contact, CountsTheEdgesThroughASupportDisk) {
   place(5, 0.07, 0.01);     // edge 4–5 crosses the plane beyond the rim; 3–5 stays above
   const UnderDisks under = NodesUnderDisks(obstacles, 0.001, model, x.data());
   EXPECT_EQ(under.edges, 2);
-  EXPECT_NEAR(under.inside, 0.03, 1e-12);  // node 1 and edge 0–1, 3 cm inside the rim
+  EXPECT_NEAR(under.inside, 0.03, 1e-12);  // edge 0–1, 3 cm inside the rim
   const ContactReport report = MeasureContact(obstacles, ContactSpec{}, model, x.data());
   EXPECT_EQ(report.edges_through_disk, 2);
   EXPECT_TRUE(report.ThroughDisk());
@@ -264,11 +266,12 @@ TEST(ObstacleStepLimit, StopsANodeBeforeItJumpsOverAPinOrThroughADiskOrAPlane) {
 
 // A square sheet dropped from rest onto a pin or a 1 mm disk under its centre (held in x and y
 // only, resting on the clearance layer) with every solver that accepts obstacles (the puiseux
-// methods refuse contact terms): it ends resting on them, the centre node held up in the clearance
-// layer. Newton and nlopt-lbfgs used to step through and run away (z = −2.7e11 m); explicit-euler,
-// whose default step left out the contact's stiffness, was flung off the pin (0 nodes in contact
-// after 30,000 steps, residual 31); with it, it settles in ~124,000 steps (its default limit,
-// 200,000, is what the test allows).
+// methods refuse contact terms): it ends resting on them, nothing through the disk, the centre
+// node held up in the pin's clearance layer or by the sheet's edges on the disk's rim. Newton and
+// nlopt-lbfgs used to step through and run away (z = −2.7e11 m); explicit-euler, whose default step
+// left out the contact's stiffness, was flung off the pin (0 nodes in contact after 30,000 steps,
+// residual 31); with it, it settles in ~124,000 steps (its default limit, 200,000, is what the test
+// allows).
 //
 // Three methods cannot finish this scene, and the test asserts their honest outcome instead: the
 // sheet resting on the obstacle, nothing passed through, the state sound, "converged no".
@@ -278,14 +281,22 @@ TEST(ObstacleStepLimit, StopsANodeBeforeItJumpsOverAPinOrThroughADiskOrAPlane) {
 // nlopt-mma: 0.005 (pin) and 0.015 (disk) after 30,000 evaluations. nlopt-slsqp found no lower
 // energy than the start until its first step was scaled to the mesh (src/solvers/solver_nlopt.cc):
 // it now converges in ~750 evaluations.
+// On the disk, two more: its rim holds the sheet's 3.3 cm edges (costs/edge_contact.h: 33 points
+// each), a stiffer landscape. ceres-lbfgs needs 71,859 iterations (11.5 s) for the tolerance
+// (2.3e-6 after 30,000); explicit-euler's stable step is shorter by the edges' contact stiffness
+// and it stands at 0.45 after 200,000 steps. Before the edge terms both "converged" here:
+// ceres-lbfgs at the flat sheet balanced on the disk (a saddle), explicit-euler with 2 edges
+// through the disk.
 class DropOntoThinObstacle : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {
 };
 
 bool GaussNewton(const std::string& method) {
   return method == "ceres-lm" || method == "ceres-dogleg";
 }
-bool CannotFinish(const std::string& method) {
-  return GaussNewton(method) || method == "nlopt-mma";
+bool OnTheDisk(const std::string& obstacle) { return obstacle.rfind("disk", 0) == 0; }
+bool CannotFinish(const std::string& obstacle, const std::string& method) {
+  return GaussNewton(method) || method == "nlopt-mma" ||
+         (OnTheDisk(obstacle) && (method == "ceres-lbfgs" || method == "explicit-euler"));
 }
 
 // The iteration limits bound each run, so that its outcome does not depend on the machine; the
@@ -293,7 +304,7 @@ bool CannotFinish(const std::string& method) {
 // tolerance under the sanitizers on a slower machine: 2e-6 after 60 s, 1.8 s in a Release build).
 Scene DropScene(const std::string& obstacle, const std::string& method) {
   const std::string iterations =
-      CannotFinish(method) ? "2000" : (method == "explicit-euler" ? "200000" : "30000");
+      method == "explicit-euler" ? "200000" : (CannotFinish(obstacle, method) ? "2000" : "30000");
   const std::string text = R"(name: drop
 mesh:
   kind: grid
@@ -337,21 +348,27 @@ TEST_P(DropOntoThinObstacle, RestsOnIt) {
   const int centre = 3 * 7 + 3;
   const double z = model.positions[3 * centre + 2];
   EXPECT_GT(z, -0.001);  // above the pin or the disk (both at z = −1 mm)
+  EXPECT_EQ(result.contact.edges_through_disk, 0);
+  // On the pin the centre node rests in the clearance layer (z < 0). On the disk the sheet's
+  // 3.3 cm edges rest on its rim's corner (costs/edge_contact.h) and hold the centre node a little
+  // above the layer (newton: 0.8 mm); 2 mm bounds it, well short of a fall.
+  const double resting_below = OnTheDisk(obstacle) ? 0.002 : 0.0;
   for (double x : model.positions) EXPECT_LT(std::abs(x), 1.0);
   double weight = 0.0;
   for (int node = 0; node < model.num_nodes; ++node) weight += model.applied[3 * node + 2];
-  if (CannotFinish(method)) {  // the honest outcome (see above)
+  if (CannotFinish(obstacle, method)) {  // the honest outcome (see above)
     EXPECT_FALSE(result.converged);
     EXPECT_FALSE(result.summary.termination.empty());
     if (GaussNewton(method)) {
       EXPECT_NE(result.summary.termination.find("iteration limit"), std::string::npos)
           << result.summary.termination;
     }
-    EXPECT_LT(z, 0.0);                                             // resting in the clearance layer
-    EXPECT_GT(result.certificate.contact_sum.z(), -0.5 * weight);  // most of the weight
+    EXPECT_LT(z, resting_below);  // resting on it,
+    EXPECT_GT(result.certificate.contact_sum.z(),
+              0.0);  // which holds it up (38-100 % of its weight)
     return;
   }
-  EXPECT_LT(z, 0.0);  // resting in the clearance layer
+  EXPECT_LT(z, resting_below);  // resting on it
   EXPECT_TRUE(result.converged) << result.summary.termination;
   // The flat sheet balanced on the pin is an equilibrium, a saddle: the methods without curvature
   // information may stop there, and then the certificate says so (exit status 3); newton goes on

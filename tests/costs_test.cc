@@ -19,6 +19,7 @@
 #include "costs/constant_force_potential.h"
 #include "costs/cylinder_contact.h"
 #include "costs/disk_contact.h"
+#include "costs/edge_contact.h"
 #include "costs/fv_bending.h"
 #include "costs/fv_membrane.h"
 #include "costs/plane_contact.h"
@@ -141,6 +142,22 @@ struct Sample<DiskContact> {
   }
 };
 
+// An edge over the rim of a disc (R = 1 m, t = 1 cm) at 8 points, cutting the rim's corner as in
+// tests/edge_contact_test.cc (no point within 1 mm of the rim circle or of the clearance layer's
+// boundary, where the energy is less smooth than a difference needs), and an edge lying flat on the
+// disc's top. The disc lies at z = −1 m so that Ceres's relative difference steps are not tiny.
+template <>
+struct Sample<EdgeContact<DiskContact>> {
+  static constexpr const char* kName = "EdgeContact";
+  static EdgeContact<DiskContact> Make() {
+    const double centre[3] = {0.0, 0.0, -1.0};
+    return EdgeContact(DiskContact::Create(centre, 1.0, kClearance, kContactStiffness), 8);
+  }
+  static std::vector<std::vector<double>> States() {
+    return {{0.96, 0.0, -0.9882, 1.0588, 0.0, -1.015}, {0.3, 0.4, -0.995, 0.5, 0.4, -0.994}};
+  }
+};
+
 template <>
 struct Sample<CylinderContact> {
   static constexpr const char* kName = "CylinderContact";
@@ -205,10 +222,11 @@ std::unique_ptr<Term> SampleTerm() {
 template <typename Functor>
 class CostsTest : public ::testing::Test {};
 
-using Functors = ::testing::Types<SpringStretch, TensionOnlySpring, ZeroLengthSpring,
-                                  StretchLimitBarrier, ConstantForcePotential, PressurePotential,
-                                  SphereContact, PlaneContact, DiskContact, CylinderContact,
-                                  BoxContact, FvMembrane, FvBendingEdge, FvBending>;
+using Functors =
+    ::testing::Types<SpringStretch, TensionOnlySpring, ZeroLengthSpring, StretchLimitBarrier,
+                     ConstantForcePotential, PressurePotential, SphereContact, PlaneContact,
+                     DiskContact, EdgeContact<DiskContact>, CylinderContact, BoxContact, FvMembrane,
+                     FvBendingEdge, FvBending>;
 
 class FunctorNames {
  public:

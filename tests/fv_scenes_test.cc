@@ -137,7 +137,7 @@ TEST(FvScenes, TensionOnlySeamOnAFiniteVolumeTablecloth) {
     if (term->type() != "line") kept.push_back(std::move(term));
   }
   without.terms = std::move(kept);
-  for (auto& contact : without.contact_terms) contact[0] = new_index[contact[0]];
+  for (auto& contact : without.contact_terms) contact.term = new_index[contact.term];
   ASSERT_EQ(without.TermCounts(), plain.model.TermCounts());
   const RunResult run = RunSolve(plain.scene, without, "newton");
   ASSERT_TRUE(run.converged) << run.summary.termination;

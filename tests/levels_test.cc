@@ -132,9 +132,12 @@ TEST(Levels, ProlongationOverADiscRimLeavesTheDiscAndKeepsTheLengths) {
       }
     }
   }
-  double lowest = 0.0;  // the start does hang over the rim
+  // The start does hang over the rim: 1 cm (ten contact thicknesses) below it at least. (The 4 cm
+  // lattice's edges rest on the rim's corner, so its skirt hangs about 2 cm deep, where with node
+  // contact alone its edges cut the corner and it hung 3 cm deep.)
+  double lowest = 0.0;
   for (int k = 0; k < fine.num_nodes; ++k) lowest = std::min(lowest, fine.positions[3 * k + 2]);
-  EXPECT_LT(lowest, fine_scene.obstacles.at(0).center.z() - 0.03);
+  EXPECT_LT(lowest, fine_scene.obstacles.at(0).center.z() - 0.01);
 }
 
 // The refinement study on a case with a known answer. A weightless strip, clamped, with a small

@@ -1,7 +1,7 @@
 // drape_tester_report: solves the drape-tester scenes of configs/fv/ (a cotton shirting and a light
 // polyester, 24, 30 and 36 cm specimens on the standard 18 cm disc) with newton and prints the
 // table of docs/drape-tester.md: nodes, iterations, wall time, relative residual, stability, the
-// nodes that ended under the support disc (src/model/contact.h, NodesUnderDisks), the
+// fabric's edges through the support disc (src/model/contact.h, NodesUnderDisks), the
 // drape coefficient in both conventions (Cusick's (A_shadow − A_disc)/(A_specimen − A_disc) and
 // A_shadow/A_flat) and the fold count (src/analysis/drape_analysis.h).
 //   drape_tester_report [REPO_ROOT] [--only TEXT] [--set key.path=value ...]
@@ -49,7 +49,7 @@ void PrintRow(const std::string& file, const Options& options) {
   std::printf("| %s | %d | %d | %.1f | %.1e | %s | %s | %d | %.3f | %.3f | %d |\n", file.c_str(),
               model.num_nodes, run.summary.iterations, run.summary.wall_time_s,
               run.certificate.relative_residual, run.converged ? "yes" : "no",
-              run.stability.stable ? "yes" : "no", run.contact.nodes_under_disk,
+              run.stability.stable ? "yes" : "no", run.contact.edges_through_disk,
               drape.coefficient.cusick, drape.coefficient.ratio, drape.folds.count);
   std::fflush(stdout);
 }
@@ -58,7 +58,7 @@ int Main(int argc, char** argv) {
   const Options options = ParseArguments(argc, argv);
   std::printf(
       "| scene | nodes | iterations | time (s) | relative residual | converged | stable | "
-      "nodes under the disc | DC (Cusick) | A_shadow/A_flat | folds |\n"
+      "edges through the disc | DC (Cusick) | A_shadow/A_flat | folds |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const char* fabric : {"cotton", "polyester"}) {
     for (const char* size : {"24", "30", "36"}) {

@@ -268,12 +268,12 @@ std::string Joined(const std::vector<int>& values) {
 void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* report) {
   std::vector<double> spacing, energy, dc;
   std::vector<int> folds;
-  bool all_converged = true, all_dc = true, any_under_disk = false;
+  bool all_converged = true, all_dc = true, any_through_disk = false;
   for (const LevelRecord& level : levels) {
     spacing.push_back(level.spacing);
     energy.push_back(level.energy);
     all_converged = all_converged && level.converged;
-    any_under_disk = any_under_disk || level.nodes_under_disk > 0;
+    any_through_disk = any_through_disk || level.edges_through_disk > 0;
     all_dc = all_dc && level.drape_coefficient.has_value();
     if (level.drape_coefficient) dc.push_back(*level.drape_coefficient);
     if (level.folds) folds.push_back(*level.folds);
@@ -294,8 +294,8 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
       e.reason = "needs 3 levels (solver.levels: 3 or more)";
     } else if (!all_converged) {
       e.reason = "a level did not converge";
-    } else if (any_under_disk) {
-      e.reason = "the fabric passes through the support disk on a level (nodes_under_disk)";
+    } else if (any_through_disk) {
+      e.reason = "the fabric passes through the support disk on a level (edges_through_disk)";
     } else if (folds_differ) {
       e.reason = "the fold count differs between the finest levels (" + Joined(last_folds) +
                  "): different fold patterns, not one converging answer";
@@ -306,13 +306,13 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
   }
 }
 
-// A coarse lattice can step over a support disc (no coarse node between the clamp and the rim),
-// and the disc's contact acts from both sides: an interpolated node that lands in or under a disc
-// it started above would stay there. Such nodes are moved out to the disc's clearance, the
-// nearest point where its contact (costs/disk_contact.h) is zero on the side it started: up over
-// the disc (also a node hanging just inside the rim, where a coarse edge cut the rim's corner:
-// left there, the finer lattice's edge to the clamp pulls it under the rim), out from the rim
-// beside it.
+// The disc's contact acts from both sides, so an interpolated node that lands in the disc's
+// contact layer below its mid-plane, over a part where the coarse surface lay on its top, would
+// be pushed down through it; one that lands within the clearance of the rim starts deep in its
+// contact. Such nodes are moved out to the disc's clearance, the nearest point where its contact
+// (costs/disk_contact.h) is zero on the side it started: up over the disc, out from the rim
+// beside it. Nodes below the layer stay where the coarse surface put them: the coarse level had
+// no edge through the disc (else this level starts flat), so they hang under it round its rim.
 void KeepOnDiscs(const Scene& scene, Model* model) {
   const double clearance = scene.contact.thickness;
   for (const ObstacleSpec& disc : scene.obstacles) {
@@ -322,7 +322,7 @@ void KeepOnDiscs(const Scene& scene, Model* model) {
       if (!(model->initial[3 * k + 2] > disc.center.z())) continue;
       if (model->fixed[3 * k] || model->fixed[3 * k + 1] || model->fixed[3 * k + 2]) continue;
       const DiscPlace place = PlaceOnDisc(disc, clearance, x);
-      if (place != DiscPlace::kClear) {  // over the disc: back on its top
+      if (place == DiscPlace::kInLayer) {  // over the disc: back on its top
         x[2] = disc.center.z() + clearance;
         continue;
       }
@@ -480,12 +480,12 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     if (!finest) coarse = BuildModel(scenes[k]);
     Model& current = finest ? model : coarse;
     // The coarser answer starts this level unless it passed under a disk.
-    const bool interpolated = k > 0 && report->levels.back().nodes_under_disk == 0;
+    const bool interpolated = k > 0 && report->levels.back().edges_through_disk == 0;
     LevelRecord record;
     record.started_flat = k > 0 && !interpolated;
     if (interpolated) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
     result = RunSolve(scenes[k], current, method, on_iteration);
-    if (interpolated && result.contact.nodes_under_disk > 0) {
+    if (interpolated && result.contact.ThroughDisk()) {
       // The interpolated start led the fabric through a support disk: solve from the flat start.
       record.restarted_flat = true;
       record.iterations = result.summary.iterations;
@@ -501,7 +501,7 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     record.energy = result.certificate.energy;
     record.converged = result.converged;
     record.stable = result.stability.computed && result.stability.stable;
-    record.nodes_under_disk = result.contact.nodes_under_disk;
+    record.edges_through_disk = result.contact.edges_through_disk;
     if (HasDrapeCoefficient(scenes[k], current)) {
       const DrapeAnalysis drape = AnalyseDrape(scenes[k], current);
       if (drape.disc_radius > 0.0) record.drape_coefficient = drape.coefficient.cusick;

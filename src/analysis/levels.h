@@ -37,14 +37,9 @@ struct LevelRecord {
   bool stable = false;
   std::optional<double> drape_coefficient;  // where the scene has one
   std::optional<int> folds;
-  // Nodes that started above a support disk and end under it: below its mid-plane inside its rim,
-  // in its contact layer (the disk pushes them down) or below the layer inside radius −
-  // clearance. The fabric has passed through the disk or wrapped around its rim to its underside
-  // (its contact acts on nodes only, and a coarse lattice can step over the ring between a clamp
-  // and the rim). Nodes hanging below the layer just inside the rim are not counted: there a
-  // lattice edge cuts the rim's corner.
-  // Such an answer is not used to start the next level.
-  int nodes_under_disk = 0;
+  // The fabric's edges through a support disk (ContactReport::edges_through_disk): the fabric
+  // passed through it. Such an answer is not used to start the next level.
+  int edges_through_disk = 0;
   // The coarser level's answer passed through a disk, so this level started flat.
   bool started_flat = false;
   // The interpolated start led through a disk, so the level was solved again from the flat

@@ -67,18 +67,41 @@ void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSp
   // Least-squares shift of the potential (src/model/term.h): the energy at a full clearance's
   // depth.
   const double shift = stiffness * std::pow(contact.thickness, 3) / 3.0;
+  const std::set<std::pair<int, int>> edges = FabricEdges(*model);
   for (size_t index = 0; index < obstacles.size(); ++index) {
     const ObstacleSpec& obstacle = obstacles[index];
     const ObstacleKind& kind = ObstacleKindOf(obstacle);
+    auto within_reach = [&](int node) {
+      return !anchored ||
+             ObstacleDistance(obstacle, model->position(node).data()) - contact.thickness <= reach;
+    };
     for (int k = 0; k < model->num_nodes; ++k) {
-      if (model->fully_fixed(k)) continue;
-      const double* x = model->position(k).data();
-      if (anchored && ObstacleDistance(obstacle, x) - contact.thickness > reach) continue;
+      if (model->fully_fixed(k) || !within_reach(k)) continue;
       model->contact_terms.push_back(
-          {static_cast<int>(model->terms.size()), static_cast<int>(index)});
+          {static_cast<int>(model->terms.size()), static_cast<int>(index), 0});
       model->terms.push_back(kind.make_term(obstacle, k, contact.thickness, stiffness, shift));
     }
+    if (!kind.make_edge_term) continue;
+    for (const auto& [a, b] : edges) {
+      if (model->fully_fixed(a) && model->fully_fixed(b)) continue;
+      if (!within_reach(a) && !within_reach(b)) continue;
+      const int points = EdgeContactPoints(model->position(a), model->position(b), contact);
+      if (points == 0) continue;
+      model->contact_terms.push_back(
+          {static_cast<int>(model->terms.size()), static_cast<int>(index), points});
+      model->terms.push_back(
+          kind.make_edge_term(obstacle, a, b, points, contact.thickness, stiffness, shift));
+    }
   }
+}
+
+int EdgeContactPoints(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                      const ContactSpec& contact) {
+  // A length within a millionth of t of a multiple of t counts as that multiple, so that lattice
+  // edges of such lengths (1 cm with t = 1 mm) get the same count after a change of units.
+  const double spacing = (b - a).norm() / contact.thickness - 1e-6;
+  if (!(spacing > 1.0)) return 0;
+  return static_cast<int>(std::ceil(spacing)) - 1;
 }
 
 ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
@@ -170,7 +193,6 @@ UnderDisks NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double cl
         continue;
       if (!counted) ++under.nodes;
       counted = true;
-      under.inside = std::max(under.inside, disc.radius - DistanceFromAxis(disc, x));
     }
   }
   CountEdgesThroughDisks(obstacles, model, positions, &under);
@@ -235,6 +257,21 @@ double ObstacleSafeFraction(const Model& model, const double* from, const double
   double fraction = 1.0;
   for (int node = 0; node < model.num_nodes; ++node) {
     fraction = std::min(fraction, NodeSafeFraction(model, from + 3 * node, to + 3 * node));
+  }
+  for (const Model::ContactTerm& term : model.contact_terms) {
+    if (term.edge_points == 0) continue;
+    const std::vector<int>& ends = model.terms[term.term]->nodes();
+    const ObstacleSpec& obstacle = model.obstacles[term.obstacle];
+    for (int j = 1; j <= term.edge_points; ++j) {
+      const double s = static_cast<double>(j) / (term.edge_points + 1);
+      double point_from[3], point_to[3];
+      for (int c = 0; c < 3; ++c) {
+        point_from[c] = from[3 * ends[0] + c] + s * (from[3 * ends[1] + c] - from[3 * ends[0] + c]);
+        point_to[c] = to[3 * ends[0] + c] + s * (to[3 * ends[1] + c] - to[3 * ends[0] + c]);
+      }
+      fraction = std::min(fraction,
+                          SafeFractionFor(obstacle, model.contact.thickness, point_from, point_to));
+    }
   }
   return fraction;
 }

@@ -88,15 +88,15 @@ void AddContactForces(const Model& model, const double* positions, Certificate* 
   certificate->contact_forces.assign(model.num_dofs(), 0.0);
   certificate->contact_sum_by_obstacle.assign(model.obstacles.size(), Eigen::Vector3d::Zero());
   double local_gradient[3 * 32];
-  for (const auto& [term_index, obstacle] : model.contact_terms) {
-    const Term& term = *model.terms[term_index];
+  for (const Model::ContactTerm& contact : model.contact_terms) {
+    const Term& term = *model.terms[contact.term];
     double energy = 0.0;
     if (!term.EnergyGradient(positions, &energy, local_gradient)) continue;
     const auto& nodes = term.nodes();
     for (size_t a = 0; a < nodes.size(); ++a) {
       for (int c = 0; c < 3; ++c) {
         certificate->contact_forces[3 * nodes[a] + c] -= local_gradient[3 * a + c];
-        certificate->contact_sum_by_obstacle[obstacle][c] -= local_gradient[3 * a + c];
+        certificate->contact_sum_by_obstacle[contact.obstacle][c] -= local_gradient[3 * a + c];
         certificate->contact_sum[c] -= local_gradient[3 * a + c];
       }
     }

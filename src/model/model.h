@@ -51,12 +51,16 @@ struct Model {
   // material.springs.stretch_limit (maximum stretch ratio), 0 when the scene sets none; the
   // explicit-euler solver enforces it with Provot's constraint (src/model/stretch_limit.h).
   double stretch_limit = 0.0;
-  // The scene's obstacles and contact settings (src/model/contact.h), and for each contact term
-  // {its index in `terms`, its obstacle's index in `obstacles`}: for the step limit, the contact
-  // forces and the certificate.
+  // The scene's obstacles and contact settings (src/model/contact.h), and every contact term: for
+  // the step limit, the contact forces and the certificate.
   std::vector<ObstacleSpec> obstacles;
   ContactSpec contact;
-  std::vector<std::array<int, 2>> contact_terms;
+  struct ContactTerm {
+    int term = 0;         // its index in `terms`
+    int obstacle = 0;     // its obstacle's index in `obstacles`
+    int edge_points = 0;  // 0: a node's term; else an edge's, at that many points inside it
+  };
+  std::vector<ContactTerm> contact_terms;
   // For each region of the scene (regions:), how many nodes it selects and how many of those no
   // later region selects too (for drape check).
   struct RegionCount {

@@ -7,6 +7,7 @@
 #include "costs/box_contact.h"
 #include "costs/cylinder_contact.h"
 #include "costs/disk_contact.h"
+#include "costs/edge_contact.h"
 #include "costs/plane_contact.h"
 #include "costs/sphere_contact.h"
 
@@ -16,8 +17,8 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// A row whose distance and contact term come from the functor `make(obstacle, t, k)` returns
-// (the term is named "<kind>_contact").
+// A row whose distance and contact terms come from the functor `make(obstacle, t, k)` returns
+// (the terms are named "<kind>_contact" for a node, "<kind>_edge_contact" for an edge's inside).
 template <typename MakeFunctor>
 ObstacleKind Row(std::string name, std::vector<std::string> keys, std::string doc, bool support,
                  MakeFunctor make) {
@@ -33,6 +34,11 @@ ObstacleKind Row(std::string name, std::vector<std::string> keys, std::string do
                                                     double clearance, double stiffness,
                                                     double shift) {
     return MakeTerm(type, {node}, make(obstacle, clearance, stiffness), shift);
+  };
+  kind.make_edge_term = [make, type = name + "_edge_contact"](const ObstacleSpec& obstacle, int a,
+                                                              int b, int points, double clearance,
+                                                              double stiffness, double shift) {
+    return MakeTerm(type, {a, b}, EdgeContact(make(obstacle, clearance, stiffness), points), shift);
   };
   kind.check = [](const ObstacleSpec&) {};
   return kind;
@@ -136,6 +142,7 @@ ObstacleKind PlaneRow() {
     return std::vector<ObstaclePart>{part};
   };
   row.lowest_z = [](const ObstacleSpec&) { return -kInfinity; };
+  row.make_edge_term = nullptr;  // an edge between two points outside a half-space stays outside
   return row;
 }
 
@@ -151,6 +158,9 @@ ObstacleKind PinRow() {
     return {Cylinder(o.center, 0.006 * frame.extent, stem, true)};
   };
   row.lowest_z = [](const ObstacleSpec&) { return kInfinity; };
+  // A point passes through a triangle's inside as easily as through an edge, which no edge term
+  // prevents: the fabric rests on a pin at a node (a scene puts one over it).
+  row.make_edge_term = nullptr;
   return row;
 }
 

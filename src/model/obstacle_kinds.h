@@ -56,6 +56,12 @@ struct ObstacleKind {
   std::function<std::unique_ptr<Term>(const ObstacleSpec&, int node, double clearance,
                                       double stiffness, double shift)>
       make_term;
+  // The contact term of the inside of the fabric edge a–b, at `points` points along it
+  // (costs/edge_contact.h); null for the plane (a straight edge between two nodes outside a
+  // half-space stays outside) and the pin (a point: see PinRow).
+  std::function<std::unique_ptr<Term>(const ObstacleSpec&, int a, int b, int points,
+                                      double clearance, double stiffness, double shift)>
+      make_edge_term;
   // The solids that draw it.
   std::function<std::vector<ObstaclePart>(const ObstacleSpec&, const DrawingFrame&)> draw;
   // The height of its lowest point, m (+∞ for a body drawn down to the floor, −∞ for an

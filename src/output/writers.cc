@@ -145,7 +145,7 @@ void AddLevelsMembers(const LevelsReport& report,
         {"drape_coefficient",
          level.drape_coefficient ? JsonNumber(*level.drape_coefficient) : "null"},
         {"folds", level.folds ? std::to_string(*level.folds) : "null"},
-        {"nodes_under_disk", std::to_string(level.nodes_under_disk)},
+        {"edges_through_disk", std::to_string(level.edges_through_disk)},
         {"started_flat", JsonBool(level.started_flat)},
         {"restarted_flat", JsonBool(level.restarted_flat)}};
     levels += (k ? ", " : "") + JsonObject(fields, 2);

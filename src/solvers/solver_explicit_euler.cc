@@ -188,9 +188,11 @@ double DefaultTimeStep(const Model& model) {
   if (!model.contact_terms.empty()) {
     const double contact = 2.0 * ContactStiffness(model.contact, model) * kAllowedPenetration *
                            model.contact.thickness;
-    for (const auto& [term, obstacle] : model.contact_terms) {
-      (void)obstacle;
-      stiffness[model.terms[term]->nodes()[0]] += contact;
+    for (const Model::ContactTerm& term : model.contact_terms) {
+      // An edge's m points pass (1 − s_j) and s_j of their stiffness to its two nodes: a row of
+      // its Hessian sums to at most Σ_j (1 − s_j) = m/2 times a point's.
+      const double share = term.edge_points > 0 ? 0.5 * term.edge_points : 1.0;
+      for (int node : model.terms[term.term]->nodes()) stiffness[node] += share * contact;
     }
   }
   double omega_squared = 0.0;

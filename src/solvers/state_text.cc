@@ -7,14 +7,12 @@ namespace drape {
 
 namespace {
 
-// "fabric through the support disk (…)": how many nodes hang under a support disk, how many edges
-// pass through one, and how far inside the rim.
+// "fabric through the support disk (…)": how many edges pass through a support disk, and how far
+// inside the rim.
 std::string ThroughDiskText(const ContactReport& contact) {
-  std::string text = "fabric through the support disk (";
-  const int nodes = contact.nodes_under_disk, edges = contact.edges_through_disk;
-  if (nodes > 0) text += std::to_string(nodes) + (nodes == 1 ? " node" : " nodes") + " under it";
-  if (nodes > 0 && edges > 0) text += ", ";
-  if (edges > 0) text += std::to_string(edges) + (edges == 1 ? " edge" : " edges") + " through it";
+  const int edges = contact.edges_through_disk;
+  std::string text = "fabric through the support disk (" + std::to_string(edges) +
+                     (edges == 1 ? " edge" : " edges") + " through it";
   char inside[64];
   std::snprintf(inside, sizeof inside, ", up to %.2g mm inside its rim)",
                 1e3 * contact.under_disk_inside);
