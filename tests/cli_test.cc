@@ -9,6 +9,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -441,6 +443,45 @@ TEST_F(CliTest, LevelsReportEachLevelAndTheExtrapolation) {
             std::string::npos)
       << outcome.out;
   EXPECT_NE(outcome.out.find(" in all): extrapolated energy"), std::string::npos) << outcome.out;
+}
+
+// A drape test reports its drape coefficient with an error bar by default: a second, coarser level
+// solved from the flat start (the scene's own answer is unchanged, bit for bit, against
+// solver.levels: 1), the change between them on the stdout line and in summary.json, with the
+// fold counts; and a coarse mesh for the fabric is warned about on stderr, with the expected error.
+TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
+  const std::string scene =
+      std::string(drape_tests::kSourceDir) + "/configs/fv/drape_tester_polyester_24.yaml";
+  const Outcome outcome =
+      Drape({"solve", scene, "--out", out_.string(), "--set", "mesh.spacing=0.02"});
+  ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
+  const YAML::Node summary = Summary(out_);
+  ASSERT_EQ(summary["levels"].size(), 2u);
+  const double coarse = summary["levels"][0]["drape_coefficient"].as<double>();
+  const double fine = summary["drape_coefficient"].as<double>();
+  EXPECT_TRUE(summary["levels"][1]["started_flat"].as<bool>());
+  const YAML::Node bar = summary["drape_coefficient_error"];
+  EXPECT_DOUBLE_EQ(bar["estimate"].as<double>(), std::abs(fine - coarse));
+  EXPECT_EQ(bar["basis"].as<std::string>(), "change from the 4 cm level");
+  EXPECT_EQ(bar["folds_by_level"].size(), 2u);
+  char dc[16];
+  std::snprintf(dc, sizeof dc, "%.3f", fine);
+  EXPECT_NE(outcome.out.find("2 levels ("), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find(std::string("drape coefficient ") + dc + " ± "), std::string::npos)
+      << outcome.out;
+  // The polyester's bending length is 1.2 cm: 2 cm is coarse for it.
+  EXPECT_NE(outcome.err.find("warning: mesh.spacing 2 cm is coarse for this fabric"),
+            std::string::npos)
+      << outcome.err;
+  EXPECT_TRUE(summary["mesh_rule"]["coarse"].as<bool>());
+
+  const fs::path plain = out_.string() + "_plain";
+  const Outcome one = Drape({"solve", scene, "--out", plain.string(), "--set", "mesh.spacing=0.02",
+                             "--set", "solver.levels=1"});
+  ASSERT_EQ(one.exit_status, 0) << one.err;
+  EXPECT_EQ(Summary(plain)["drape_coefficient"].as<double>(), fine);
+  EXPECT_FALSE(Summary(plain)["levels"]);
+  fs::remove_all(plain);
 }
 
 // A mesh that cannot be coarsened: exit 2, the error located at the key, nothing written.

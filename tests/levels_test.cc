@@ -42,6 +42,68 @@ TEST(Levels, ExtrapolationRefusesWhatIsNotConverging) {
   EXPECT_NE(Extrapolate("energy", {0.2, 0.1}, {1.0, 1.1}).reason, "");
 }
 
+// Converged drape-test levels (coarsest first) with DC(h) = 0.5 + 0.3 h / 0.04 (first order, a
+// known limit 0.5) and the given fold counts.
+std::vector<LevelRecord> FirstOrderLevels(const std::vector<double>& spacing,
+                                          const std::vector<int>& folds) {
+  std::vector<LevelRecord> levels;
+  for (size_t k = 0; k < spacing.size(); ++k) {
+    LevelRecord level;
+    level.spacing = spacing[k];
+    level.converged = true;
+    level.drape_coefficient = 0.5 + 0.3 * spacing[k] / 0.04;
+    level.folds = folds[k];
+    levels.push_back(level);
+  }
+  return levels;
+}
+
+std::vector<Extrapolation> DrapeExtrapolation(const std::vector<LevelRecord>& levels) {
+  std::vector<double> h, q;
+  for (const LevelRecord& level : levels) {
+    h.push_back(level.spacing);
+    q.push_back(*level.drape_coefficient);
+  }
+  return {Extrapolate("drape_coefficient", h, q)};
+}
+
+// The drape coefficient's error bar on a case of known order 1: with three levels, Richardson's
+// estimate, the finest level's true error |DC(h) − 0.5|; with two, the change from the coarser
+// level, which for first order is that error too. A fold count that changes between the two
+// finest levels is flagged.
+TEST(Levels, DrapeErrorBarOnAFirstOrderCase) {
+  const std::vector<LevelRecord> three = FirstOrderLevels({0.04, 0.02, 0.01}, {8, 9, 9});
+  const std::optional<DrapeErrorBar> richardson = DrapeErrorOf(three, DrapeExtrapolation(three));
+  ASSERT_TRUE(richardson);
+  EXPECT_DOUBLE_EQ(richardson->value, 0.575);
+  EXPECT_NEAR(richardson->error, 0.075, 1e-12);
+  EXPECT_EQ(richardson->basis, "Richardson, observed order 1.00");
+  EXPECT_FALSE(richardson->folds_differ);
+  EXPECT_EQ(richardson->folds, (std::vector<int>{8, 9, 9}));
+
+  const std::vector<LevelRecord> two = FirstOrderLevels({0.02, 0.01}, {9, 8});
+  const std::optional<DrapeErrorBar> change = DrapeErrorOf(two, DrapeExtrapolation(two));
+  ASSERT_TRUE(change);
+  EXPECT_NEAR(change->error, 0.075, 1e-12);
+  EXPECT_EQ(change->basis, "change from the 2 cm level");
+  EXPECT_TRUE(change->folds_differ);
+}
+
+// No error bar from levels that cannot give one: an unconverged level, fabric through the disc,
+// a single level, a scene without a drape coefficient.
+TEST(Levels, NoDrapeErrorBarWhereALevelCannotGiveOne) {
+  std::vector<LevelRecord> levels = FirstOrderLevels({0.02, 0.01}, {9, 9});
+  levels[0].converged = false;
+  EXPECT_FALSE(DrapeErrorOf(levels, {}));
+  levels = FirstOrderLevels({0.02, 0.01}, {9, 9});
+  levels[1].edges_through_disk = 3;
+  EXPECT_FALSE(DrapeErrorOf(levels, {}));
+  EXPECT_FALSE(DrapeErrorOf(FirstOrderLevels({0.01}, {9}), {}));
+  levels = FirstOrderLevels({0.02, 0.01}, {9, 9});
+  levels[0].drape_coefficient.reset();
+  EXPECT_FALSE(DrapeErrorOf(levels, {}));
+}
+
 // A coarser scene: the same strip on a lattice of twice the spacing, its clamp (ids [0, 1]) still
 // the first two nodes; a circle's spacing doubles; a spring sheet's flexion stiffness falls 16×.
 TEST(Levels, CoarsenedScenesKeepTheSpecimen) {

@@ -3,7 +3,9 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
@@ -465,8 +467,9 @@ Extrapolation Extrapolate(const std::string& quantity, const std::vector<double>
 
 RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
                     const std::function<bool(const IterationRecord&)>& on_iteration,
-                    LevelsReport* report) {
+                    LevelsReport* report, LevelStart start) {
   const int count = std::max(1, scene.solver.levels);
+  assert(count > 1 && "RunLevels solves two levels at least");
   std::vector<Scene> scenes;  // coarsest first; every level checked before any solve
   for (int level = count - 1; level >= 0; --level)
     scenes.push_back(CoarsenedScene(scene, 1 << level));
@@ -479,8 +482,9 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     Model coarse;
     if (!finest) coarse = BuildModel(scenes[k]);
     Model& current = finest ? model : coarse;
-    // The coarser answer starts this level unless it passed under a disk.
-    const bool interpolated = k > 0 && report->levels.back().edges_through_disk == 0;
+    // The coarser answer starts this level unless it passed through a disk.
+    const bool interpolated =
+        start == LevelStart::kFromCoarser && k > 0 && report->levels.back().edges_through_disk == 0;
     LevelRecord record;
     record.started_flat = k > 0 && !interpolated;
     if (interpolated) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
@@ -511,7 +515,56 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     if (!finest) previous = std::move(coarse);
   }
   AddExtrapolations(report->levels, report);
+  report->drape_error = DrapeErrorOf(report->levels, report->extrapolations);
   return result;
+}
+
+namespace {
+
+// "2 cm", "5.2 mm": a lattice spacing as the error bar's basis names it.
+std::string SpacingText(double metres) {
+  char text[32];
+  if (metres >= 0.01) {
+    std::snprintf(text, sizeof text, "%.3g cm", 100.0 * metres);
+  } else {
+    std::snprintf(text, sizeof text, "%.2g mm", 1000.0 * metres);
+  }
+  return text;
+}
+
+}  // namespace
+
+double LatticeSpacing(const MeshSpec& mesh) {
+  if (mesh.kind != MeshSpec::Kind::kCircle && mesh.kind != MeshSpec::Kind::kGrid) return 0.0;
+  if (mesh.kind == MeshSpec::Kind::kGrid && !mesh.u.empty()) return 0.0;  // not uniform
+  return AxesOf(mesh).u.h;
+}
+
+std::optional<DrapeErrorBar> DrapeErrorOf(const std::vector<LevelRecord>& levels,
+                                          const std::vector<Extrapolation>& extrapolations) {
+  const int n = static_cast<int>(levels.size());
+  if (n < 2) return std::nullopt;
+  const LevelRecord &fine = levels[n - 1], &coarser = levels[n - 2];
+  for (const LevelRecord* level : {&fine, &coarser}) {
+    if (!level->drape_coefficient || !level->converged || level->edges_through_disk > 0) {
+      return std::nullopt;
+    }
+  }
+  DrapeErrorBar bar;
+  bar.value = *fine.drape_coefficient;
+  for (const LevelRecord& level : levels) bar.folds.push_back(level.folds.value_or(0));
+  bar.folds_differ = bar.folds[n - 1] != bar.folds[n - 2];
+  for (const Extrapolation& e : extrapolations) {
+    if (e.quantity != "drape_coefficient" || !e.available) continue;
+    bar.error = e.error_estimate;
+    char basis[64];
+    std::snprintf(basis, sizeof basis, "Richardson, observed order %.2f", e.observed_order);
+    bar.basis = basis;
+    return bar;
+  }
+  bar.error = std::abs(bar.value - *coarser.drape_coefficient);
+  bar.basis = "change from the " + SpacingText(coarser.spacing) + " level";
+  return bar;
 }
 
 }  // namespace drape

@@ -57,10 +57,28 @@ struct Extrapolation {
   double observed_order = 0.0;  // p
 };
 
+// The finest level's drape coefficient with an estimate of its discretisation error, |DC(h) −
+// DC(0)|: Richardson's (the drape_coefficient Extrapolation) where three levels give an observed
+// order, else the change from the next coarser level, |DC(h) − DC(2h)|, which is the error of a
+// quantity that converges at first order, as the drape coefficient does (docs/drape-tester.md:
+// the hinge where the fabric leaves the disc's rim is placed to within a spacing).
+struct DrapeErrorBar {
+  double value = 0.0;         // the finest level's drape coefficient
+  double error = 0.0;         // the estimate of |DC(h) − DC(0)|
+  std::string basis;          // "Richardson, observed order 1.27" or "change from the 2 cm level"
+  std::vector<int> folds;     // per level, coarsest first (0 where a level has none)
+  bool folds_differ = false;  // the two finest levels' fold counts differ
+};
+
 struct LevelsReport {
   std::vector<LevelRecord> levels;  // coarsest first; the last is the scene's own mesh
   std::vector<Extrapolation> extrapolations;
+  // With two levels or more whose two finest converged with no fabric through a support disk.
+  std::optional<DrapeErrorBar> drape_error;
 };
+
+// The lattice step along the warp of a grid or circle mesh, m (0 for a mesh of another kind).
+double LatticeSpacing(const MeshSpec& mesh);
 
 // The scene for lattice spacing `factor` × the scene's own (factor a power of 2). Throws
 // InputError at solver.levels if the scene cannot be coarsened that far.
@@ -74,15 +92,26 @@ Scene CoarsenedScene(const Scene& scene, int factor);
 void ProlongPositions(const Scene& coarse_scene, const Model& coarse, const Scene& fine_scene,
                       Model* fine);
 
+// The DrapeErrorBar of `levels` (coarsest first) given their extrapolations; none where the two
+// finest levels have no drape coefficient, did not converge or passed through a support disk.
+std::optional<DrapeErrorBar> DrapeErrorOf(const std::vector<LevelRecord>& levels,
+                                          const std::vector<Extrapolation>& extrapolations);
+
 // Richardson extrapolation through (h, q) pairs, coarsest first (uses the last three).
 Extrapolation Extrapolate(const std::string& quantity, const std::vector<double>& spacing,
                           const std::vector<double>& values);
 
+// How each level after the coarsest starts: from the coarser level's answer interpolated (grid
+// sequencing: the coarse level chooses the folds, which the finer keep), or from the flat start,
+// like a solve on that mesh alone (the finest level's answer is the plain solve's, bit for bit;
+// the coarser levels only measure how the answer changes with the spacing).
+enum class LevelStart { kFromCoarser, kFlat };
+
 // Solves scene.solver.levels levels; the finest is `model` (built from `scene`), whose RunResult
-// is returned. `report` gets the per-level figures and the extrapolations.
+// is returned. `report` gets the per-level figures, the extrapolations and the error bar.
 RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
                     const std::function<bool(const IterationRecord&)>& on_iteration,
-                    LevelsReport* report);
+                    LevelsReport* report, LevelStart start = LevelStart::kFromCoarser);
 
 }  // namespace drape
 

@@ -1,5 +1,6 @@
 #include "src/analysis/solve_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -12,14 +13,31 @@ SolveReport ReportOf(const Scene& scene, const Model& model, RunResult result) {
   return report;
 }
 
+int LevelsToSolve(const Scene& scene, const Model& model) {
+  if (scene.solver.levels > 0) return scene.solver.levels;
+  if (!HasDrapeCoefficient(scene, model) || !(DiscRadius(scene) > 0.0)) return 1;
+  try {
+    CoarsenedScene(scene, 2);
+  } catch (const InputError&) {
+    return 1;  // a mesh levels cannot coarsen (a file, per-node loads): the scene's mesh alone
+  }
+  return 2;
+}
+
 SolveReport SolveAndReport(const Scene& scene, Model& model, const std::string& method,
-                           const std::function<bool(const IterationRecord&)>& on_iteration) {
-  if (scene.solver.levels <= 1) {
+                           const std::function<bool(const IterationRecord&)>& on_iteration,
+                           bool automatic_levels) {
+  Scene solved = scene;
+  solved.solver.levels =
+      automatic_levels ? LevelsToSolve(scene, model) : std::max(1, scene.solver.levels);
+  if (solved.solver.levels <= 1) {
     return ReportOf(scene, model, RunSolve(scene, model, method, on_iteration));
   }
+  // Levels the scene did not ask for do not change its answer: each starts flat.
+  const LevelStart start = scene.solver.levels > 0 ? LevelStart::kFromCoarser : LevelStart::kFlat;
   LevelsReport levels;
   SolveReport report =
-      ReportOf(scene, model, RunLevels(scene, model, method, on_iteration, &levels));
+      ReportOf(scene, model, RunLevels(solved, model, method, on_iteration, &levels, start));
   report.levels = std::move(levels);
   return report;
 }

@@ -396,8 +396,10 @@ void WriteSolver(const SolverSpec& solver, YAML::Emitter& out) {
   out << YAML::Value << EffectiveMaxIterations(solver, solver.method);
   Key(out, "time_limit");
   Number(out, EffectiveTimeLimit(solver, solver.method));
-  Key(out, "levels");
-  out << YAML::Value << solver.levels;
+  if (solver.levels > 0) {  // else not given: the same rule decides again when it is read
+    Key(out, "levels");
+    out << YAML::Value << solver.levels;
+  }
   std::map<std::string, std::map<std::string, double>> options = solver.method_options;
   if (const SolverMethod* method = FindSolverMethod(solver.method)) {
     for (const MethodOption& option : method->options) {

@@ -20,6 +20,7 @@
 #include <stdexcept>
 
 #include "src/analysis/drape_analysis.h"
+#include "src/analysis/mesh_rule.h"
 #include "src/model/contact.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
@@ -165,6 +166,18 @@ void AddLevelsMembers(const LevelsReport& report,
     extrapolation.emplace_back(e.quantity, JsonObject(fields, 2));
   }
   members->emplace_back("extrapolation", JsonObject(extrapolation, 1));
+  if (const auto& bar = report.drape_error) {
+    std::string folds = "[";
+    for (size_t k = 0; k < bar->folds.size(); ++k) {
+      folds += (k ? ", " : "") + std::to_string(bar->folds[k]);
+    }
+    members->emplace_back("drape_coefficient_error",
+                          JsonObject({{"estimate", JsonNumber(bar->error)},
+                                      {"basis", JsonString(bar->basis)},
+                                      {"folds_by_level", folds + "]"},
+                                      {"folds_differ", JsonBool(bar->folds_differ)}},
+                                     1));
+  }
 }
 
 // The balance of the whole fabric: reactions + contact + constraint = −(weight + loads).
@@ -244,6 +257,16 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
     members.emplace_back("state_problem", JsonString(certificate.unsound));
   }
   if (drape) AddDrapeMembers(*drape, &members);
+  if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
+    members.emplace_back(
+        "mesh_rule",
+        JsonObject({{"spacing_m", JsonNumber(advice->spacing)},
+                    {"bending_length_m", JsonNumber(advice->bending_length)},
+                    {"expected_drape_coefficient_error", JsonNumber(advice->expected_error)},
+                    {"spacing_needed_m", JsonNumber(advice->spacing_needed)},
+                    {"coarse", JsonBool(advice->coarse)}},
+                   1));
+  }
   AddContactMembers(scene, result, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics",

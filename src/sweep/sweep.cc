@@ -177,7 +177,8 @@ TaskOutcome SolveTask(const Context& context, int task, const std::vector<double
   std::error_code ignored;
   fs::remove(fs::path(folder) / kRowFile, ignored);  // unfinished from here on
   const bool warmed = WarmStart(scene, warm, &model);
-  const SolveReport report = SolveAndReport(scene, model, scene.solver.method);
+  const SolveReport report =
+      SolveAndReport(scene, model, scene.solver.method, {}, /*automatic_levels=*/!warmed);
   TaskOutcome outcome;
   if (InterruptRequested()) {
     outcome.kind = "interrupted";

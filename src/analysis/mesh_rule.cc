@@ -1,0 +1,59 @@
+#include "src/analysis/mesh_rule.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "src/analysis/drape_analysis.h"
+#include "src/analysis/levels.h"
+
+namespace drape {
+
+namespace {
+
+// "1 cm", "2.6 mm".
+std::string Length(double metres) {
+  char text[32];
+  if (metres >= 0.01) {
+    std::snprintf(text, sizeof text, "%.2g cm", 100.0 * metres);
+  } else {
+    std::snprintf(text, sizeof text, "%.2g mm", 1000.0 * metres);
+  }
+  return text;
+}
+
+}  // namespace
+
+std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
+  const MaterialSpec& material = scene.material;
+  if (material.model != "finite_volume" || material.mass_kind != MaterialSpec::MassKind::kDensity ||
+      !scene.loads.gravity) {
+    return std::nullopt;
+  }
+  if (!HasDrapeCoefficient(scene, model) || !(DiscRadius(scene) > 0.0)) return std::nullopt;
+  const double spacing = LatticeSpacing(scene.mesh);
+  const double rigidity = std::min(material.finite_volume.D_warp, material.finite_volume.D_weft);
+  const double weight = material.mass_value * scene.loads.gravity->norm();  // N/m²
+  if (!(spacing > 0.0) || !(rigidity > 0.0) || !(weight > 0.0)) return std::nullopt;
+  MeshAdvice advice;
+  advice.spacing = spacing;
+  advice.bending_length = std::cbrt(rigidity / weight);
+  advice.expected_error = kDrapeErrorPerSpacing * spacing / advice.bending_length;
+  advice.spacing_needed = kCoarseDrapeError * advice.bending_length / kDrapeErrorPerSpacing;
+  advice.coarse = advice.expected_error > kCoarseDrapeError;
+  return advice;
+}
+
+std::string CoarseMeshWarning(const MeshAdvice& advice) {
+  char error[96];
+  std::snprintf(error, sizeof error, "%.2g", advice.expected_error);
+  char limit[16];
+  std::snprintf(limit, sizeof limit, "%.2g", kCoarseDrapeError);
+  return "mesh.spacing " + Length(advice.spacing) + " is coarse for this fabric (bending length " +
+         Length(advice.bending_length) +
+         " in its limper direction): expect its drape coefficient to be off by about " + error +
+         " (the error is first order in the spacing, docs/drape-tester.md); " +
+         Length(advice.spacing_needed) + " or finer keeps it within " + limit;
+}
+
+}  // namespace drape

@@ -1,0 +1,44 @@
+// The spacing a drape test's mesh needs for its drape coefficient (docs/drape-tester.md, "How fine
+// a mesh"). The refinement study of the limp fabric and the cotton of configs/fv/ (1 cm to 1.3 mm,
+// edge contact at the rim) finds the drape coefficient converging at first order in the lattice
+// spacing h, with an error of about
+//   e ≈ kDrapeErrorPerSpacing × h / c,   c = (D_min / (ρ g))^(1/3),
+// c the fabric's bending length in its limper direction (D_min the smaller of D_warp and D_weft,
+// ρ its areal density, g gravity): the fold troughs and the hinge where the fabric leaves the rim
+// are placed to within a spacing, on the scale of c. Measured K = e c / h: 0.21 (limp, c = 9.6 mm)
+// and 0.28 (cotton, c = 18.8 mm) at 2.6 mm, against Richardson's limit of 1 cm, 5 mm and 2.6 mm;
+// kDrapeErrorPerSpacing rounds them up.
+#ifndef DRAPE_SRC_ANALYSIS_MESH_RULE_H_
+#define DRAPE_SRC_ANALYSIS_MESH_RULE_H_
+
+#include <optional>
+#include <string>
+
+#include "src/model/model.h"
+#include "src/scene/scene.h"
+
+namespace drape {
+
+constexpr double kDrapeErrorPerSpacing = 0.3;  // K
+constexpr double kCoarseDrapeError = 0.05;     // e above which a mesh is coarse for its fabric
+
+struct MeshAdvice {
+  double spacing = 0.0;         // h, m
+  double bending_length = 0.0;  // c, m
+  double expected_error = 0.0;  // K h / c
+  double spacing_needed = 0.0;  // the h that keeps e at kCoarseDrapeError, m
+  bool coarse = false;          // expected_error > kCoarseDrapeError
+};
+
+// The advice for a drape test (a scene with a drape coefficient and a support disc) on a lattice
+// (grid or circle) of a finite-volume fabric with bending rigidity, density and gravity; none
+// for any other scene.
+std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model);
+
+// "mesh.spacing 1 cm is coarse for this fabric (bending length 1.9 cm in its limper direction):
+// expect its drape coefficient to be off by about 0.16 ...".
+std::string CoarseMeshWarning(const MeshAdvice& advice);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_ANALYSIS_MESH_RULE_H_

@@ -1,0 +1,49 @@
+#include "src/analysis/mesh_rule.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "src/model/model.h"
+#include "tests/test_scenes.h"
+
+namespace drape {
+namespace {
+
+// The cotton of configs/fv/ (KES B_weft 0.08 gf·cm²/cm, W 12 mg/cm²): its bending length in the
+// weft, c = (D_weft / (ρ g))^(1/3), the expected error K h / c at its shipped 1 cm, and the
+// spacing that keeps the error at 0.05; coarse at 1 cm, not at 3 mm.
+TEST(MeshRule, AdviceForTheCottonFollowsFromItsBendingLength) {
+  const Scene scene = testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml", {});
+  const Model model = BuildModel(scene);
+  const auto advice = AdviseMesh(scene, model);
+  ASSERT_TRUE(advice);
+  const double d_weft = scene.material.finite_volume.D_weft;
+  const double c = std::cbrt(d_weft / (0.12 * 9.81));
+  EXPECT_NEAR(advice->bending_length, c, 1e-12);
+  EXPECT_NEAR(advice->spacing, 0.01, 1e-15);
+  EXPECT_NEAR(advice->expected_error, kDrapeErrorPerSpacing * 0.01 / c, 1e-12);
+  EXPECT_NEAR(advice->spacing_needed, kCoarseDrapeError * c / kDrapeErrorPerSpacing, 1e-12);
+  EXPECT_TRUE(advice->coarse);
+  const std::string warning = CoarseMeshWarning(*advice);
+  EXPECT_NE(warning.find("mesh.spacing 1 cm is coarse"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("bending length 1.9 cm"), std::string::npos) << warning;
+
+  const Scene fine = testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml",
+                                         {"mesh.spacing=0.003", "mesh.radius=0.1"});
+  const auto fine_advice = AdviseMesh(fine, BuildModel(fine));
+  ASSERT_TRUE(fine_advice);
+  EXPECT_FALSE(fine_advice->coarse);
+}
+
+// No advice where the rule does not apply: a spring fabric, a scene without a support disc.
+TEST(MeshRule, NoAdviceOutsideADrapeTestOfAFiniteVolumeFabric) {
+  const Scene springs = testing::LoadConfig("configs/examples/hanging_sheet.yaml", {});
+  EXPECT_FALSE(AdviseMesh(springs, BuildModel(springs)));
+  const Scene table = testing::LoadConfig("configs/fv/square_table.yaml", {});
+  EXPECT_FALSE(AdviseMesh(table, BuildModel(table)));
+}
+
+}  // namespace
+}  // namespace drape
