@@ -20,8 +20,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // A row whose distance and contact terms come from the functor `make(obstacle, t, k)` returns
 // (the terms are named "<kind>_contact" for a node, "<kind>_edge_contact" for an edge's inside).
 template <typename MakeFunctor>
-ObstacleKind Row(std::string name, std::vector<std::string> keys, std::string doc, bool support,
-                 MakeFunctor make) {
+ObstacleKind Row(const std::string& name, std::vector<std::string> keys, std::string doc,
+                 bool support, MakeFunctor make) {
   ObstacleKind kind;
   kind.name = name;
   kind.keys = std::move(keys);
