@@ -35,6 +35,7 @@ std::vector<CoarseScene> CoarseScenes() {
                                      {"square_table.yaml", square},
                                      {"square_table_seam.yaml", square},
                                      {"drape_tester_cotton_30_hem.yaml", {"mesh.spacing=0.025"}},
+                                     {"drape_tester_limp_30.yaml", {"mesh.spacing=0.025"}},
                                      {"sphere.yaml", square}};
   for (const char* fabric : {"cotton", "polyester"}) {
     for (const auto& [size, spacing] :
