@@ -452,8 +452,7 @@ TEST_F(CliTest, LevelsReportEachLevelAndTheExtrapolation) {
 TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
   const std::string scene =
       std::string(drape_tests::kSourceDir) + "/configs/fv/drape_tester_polyester_24.yaml";
-  const Outcome outcome =
-      Drape({"solve", scene, "--out", out_.string(), "--set", "mesh.spacing=0.02"});
+  const Outcome outcome = Drape({"solve", scene, "--out", out_.string()});
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
   const YAML::Node summary = Summary(out_);
   ASSERT_EQ(summary["levels"].size(), 2u);
@@ -462,22 +461,21 @@ TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
   EXPECT_TRUE(summary["levels"][1]["started_flat"].as<bool>());
   const YAML::Node bar = summary["drape_coefficient_error"];
   EXPECT_DOUBLE_EQ(bar["estimate"].as<double>(), std::abs(fine - coarse));
-  EXPECT_EQ(bar["basis"].as<std::string>(), "change from the 4 cm level");
+  EXPECT_EQ(bar["basis"].as<std::string>(), "change from the 2 cm level");
   EXPECT_EQ(bar["folds_by_level"].size(), 2u);
   char dc[16];
   std::snprintf(dc, sizeof dc, "%.3f", fine);
   EXPECT_NE(outcome.out.find("2 levels ("), std::string::npos) << outcome.out;
   EXPECT_NE(outcome.out.find(std::string("drape coefficient ") + dc + " ± "), std::string::npos)
       << outcome.out;
-  // The polyester's bending length is 1.2 cm: 2 cm is coarse for it.
-  EXPECT_NE(outcome.err.find("warning: mesh.spacing 2 cm is coarse for this fabric"),
+  // The polyester's bending length is 1.3 cm: its 1 cm is coarse for it.
+  EXPECT_NE(outcome.err.find("warning: mesh.spacing 1 cm is coarse for this fabric"),
             std::string::npos)
       << outcome.err;
   EXPECT_TRUE(summary["mesh_rule"]["coarse"].as<bool>());
 
   const fs::path plain = out_.string() + "_plain";
-  const Outcome one = Drape({"solve", scene, "--out", plain.string(), "--set", "mesh.spacing=0.02",
-                             "--set", "solver.levels=1"});
+  const Outcome one = Drape({"solve", scene, "--out", plain.string(), "--set", "solver.levels=1"});
   ASSERT_EQ(one.exit_status, 0) << one.err;
   EXPECT_EQ(Summary(plain)["drape_coefficient"].as<double>(), fine);
   EXPECT_FALSE(Summary(plain)["levels"]);
