@@ -20,9 +20,11 @@ int LevelsToSolve(const Scene& scene, const Model& model) {
   // (a 10 cm level under a 5 cm scene took 2,000 iterations to no equilibrium).
   if (2.0 * LatticeSpacing(scene.mesh) > 0.25 * DiscRadius(scene)) return 1;
   try {
-    CoarsenedScene(scene, 2);
+    BuildModel(CoarsenedScene(scene, 2));
   } catch (const InputError&) {
-    return 1;  // a mesh levels cannot coarsen (a file, per-node loads): the scene's mesh alone
+    // A scene levels cannot coarsen (per-node loads), or whose coarser lattice cannot be built (a
+    // selection that takes no node of it): the scene's mesh alone, as asked.
+    return 1;
   }
   return 2;
 }

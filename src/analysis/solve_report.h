@@ -26,9 +26,9 @@ struct SolveReport {
 // How many nested lattices a solve takes: solver.levels where given; where not, 2 for a drape test
 // (a scene with a drape coefficient and a support disc) whose mesh can be coarsened once to a
 // lattice with 4 spacings across the disc's radius at least (2 cm under the standard 18 cm disc),
-// so that its drape coefficient comes with an error estimate (LevelsReport::drape_error), else 1. Levels
-// not given start flat (LevelStart::kFlat): the answer is the plain solve's, the coarser level
-// costs about a quarter of its time more.
+// so that its drape coefficient comes with an error estimate (LevelsReport::drape_error), else 1.
+// Levels not given start flat (LevelStart::kFlat): the answer is the plain solve's, the coarser
+// level costs about a quarter of its time more.
 int LevelsToSolve(const Scene& scene, const Model& model);
 
 // Solves the scene with `method` (on LevelsToSolve nested lattices when that is > 1; with
