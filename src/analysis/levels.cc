@@ -519,20 +519,15 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
   return result;
 }
 
-namespace {
-
-// "2 cm", "5.2 mm": a lattice spacing as the error bar's basis names it.
-std::string SpacingText(double metres) {
+std::string LengthText(double metres, int cm_digits) {
   char text[32];
   if (metres >= 0.01) {
-    std::snprintf(text, sizeof text, "%.3g cm", 100.0 * metres);
+    std::snprintf(text, sizeof text, "%.*g cm", cm_digits, 100.0 * metres);
   } else {
     std::snprintf(text, sizeof text, "%.2g mm", 1000.0 * metres);
   }
   return text;
 }
-
-}  // namespace
 
 double LatticeSpacing(const MeshSpec& mesh) {
   if (mesh.kind != MeshSpec::Kind::kCircle && mesh.kind != MeshSpec::Kind::kGrid) return 0.0;
@@ -563,7 +558,7 @@ std::optional<DrapeErrorBar> DrapeErrorOf(const std::vector<LevelRecord>& levels
     return bar;
   }
   bar.error = std::abs(bar.value - *coarser.drape_coefficient);
-  bar.basis = "change from the " + SpacingText(coarser.spacing) + " level";
+  bar.basis = "change from the " + LengthText(coarser.spacing, 3) + " level";
   return bar;
 }
 

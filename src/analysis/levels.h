@@ -77,6 +77,10 @@ struct LevelsReport {
   std::optional<DrapeErrorBar> drape_error;
 };
 
+// A length as drape's messages name it: "2 cm" (`cm_digits` significant digits) from 1 cm up,
+// "5.2 mm" (2 digits) below.
+std::string LengthText(double metres, int cm_digits);
+
 // The lattice step along the warp of a grid or circle mesh, m (0 for a mesh of another kind).
 double LatticeSpacing(const MeshSpec& mesh);
 

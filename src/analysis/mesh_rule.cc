@@ -9,21 +9,6 @@
 
 namespace drape {
 
-namespace {
-
-// "1 cm", "2.6 mm".
-std::string Length(double metres) {
-  char text[32];
-  if (metres >= 0.01) {
-    std::snprintf(text, sizeof text, "%.2g cm", 100.0 * metres);
-  } else {
-    std::snprintf(text, sizeof text, "%.2g mm", 1000.0 * metres);
-  }
-  return text;
-}
-
-}  // namespace
-
 std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
   const MaterialSpec& material = scene.material;
   if (material.model != "finite_volume" || material.mass_kind != MaterialSpec::MassKind::kDensity ||
@@ -49,11 +34,11 @@ std::string CoarseMeshWarning(const MeshAdvice& advice) {
   std::snprintf(error, sizeof error, "%.2g", advice.expected_error);
   char limit[16];
   std::snprintf(limit, sizeof limit, "%.2g", kCoarseDrapeError);
-  return "mesh.spacing " + Length(advice.spacing) + " is coarse for this fabric (bending length " +
-         Length(advice.bending_length) +
+  return "mesh.spacing " + LengthText(advice.spacing, 2) +
+         " is coarse for this fabric (bending length " + LengthText(advice.bending_length, 2) +
          " in its limper direction): expect its drape coefficient to be off by about " + error +
          " (the error is first order in the spacing, docs/drape-tester.md); " +
-         Length(advice.spacing_needed) + " or finer keeps it within " + limit;
+         LengthText(advice.spacing_needed, 2) + " or finer keeps it within " + limit;
 }
 
 }  // namespace drape
