@@ -30,8 +30,9 @@ TEST(MeshRule, AdviceForTheCottonFollowsFromItsBendingLength) {
   EXPECT_NE(warning.find("mesh.spacing 1 cm is coarse"), std::string::npos) << warning;
   EXPECT_NE(warning.find("bending length 1.9 cm"), std::string::npos) << warning;
 
-  const Scene fine = testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml",
-                                         {"mesh.spacing=0.003", "mesh.radius=0.1"});
+  const Scene fine =
+      testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml",
+                          {"mesh.spacing=0.003", "drape_test.specimen_diameter=0.2"});
   const auto fine_advice = AdviseMesh(fine, BuildModel(fine));
   ASSERT_TRUE(fine_advice);
   EXPECT_FALSE(fine_advice->coarse);

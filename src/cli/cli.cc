@@ -32,12 +32,14 @@
 #include "src/output/writers.h"
 #include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
+#include "src/scene/drape_test.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/run.h"
 #include "src/solvers/solver.h"
 #include "src/solvers/state_text.h"
+#include "src/sweep/drops.h"
 #include "src/sweep/sweep.h"
 #include "src/sweep/sweep_file.h"
 
@@ -47,7 +49,8 @@ namespace {
 
 constexpr char kUsage[] =
     "usage: drape solve [OPTIONS] [--] SCENE.yaml   (--solver NAME, --out DIR, --set "
-    "key.path=value)\n"
+    "key.path=value,\n"
+    "                   --drops N, --threads N)\n"
     "       drape check [OPTIONS] [--] SCENE.yaml   (--set key.path=value)\n"
     "       drape solvers\n"
     "       drape compare [OPTIONS] [--] SCENE.yaml...   (--solvers all|a,b,..., --out DIR,\n"
@@ -86,7 +89,8 @@ struct Arguments {
   std::optional<std::string> solver;
   std::optional<std::string> out;
   std::optional<std::string> method;  // fit
-  int threads = 0;                    // fit: local threads (src/parallel/task_farm.h)
+  int threads = 0;                    // fit, solve --drops: local threads (task_farm.h)
+  std::optional<int> drops;           // solve: repeated drops of a drape test
   std::vector<std::string> overrides;
 };
 
@@ -188,6 +192,46 @@ std::string LevelsLine(const LevelsReport& report) {
   return text + e.reason + ")";
 }
 
+// "; drape coefficient 0.634, 9 folds" for a one-level solve of a scene with a support disc.
+std::string DrapeLine(const SolveReport& report) {
+  if (!report.drape || !(report.drape->disc_radius > 0.0)) return "";
+  char text[80];
+  std::snprintf(text, sizeof text, "; drape coefficient %.3f, %d folds",
+                report.drape->coefficient.cusick, report.drape->folds.count);
+  return text;
+}
+
+// How many drops `drape solve` runs: --drops, else drape_test.drops, else 1. --drops > 1 needs a
+// drape_test block (the perturbations are the test's).
+int DropsOf(const Arguments& arguments, const Scene& scene) {
+  const int drops =
+      arguments.drops ? *arguments.drops : (scene.drape_test ? scene.drape_test->drops : 1);
+  if (drops > 1 && !scene.drape_test) {
+    throw InputError(scene.root,
+                     "--drops " + std::to_string(drops) +
+                         " needs a drape test: give the scene a drape_test block (README, "
+                         "\"The drape test\")");
+  }
+  return drops;
+}
+
+int SolveDrops(const Arguments& arguments, const Scene& scene, const std::string& directory,
+               std::ostream& out, std::ostream& err) {
+  DropsOptions options;
+  options.drops = DropsOf(arguments, scene);
+  options.threads = arguments.threads;
+  options.directory = directory;
+  options.command_line = arguments.command_line;
+  options.overrides = arguments.overrides;
+  EnableInterrupt();
+  const DropsSummary summary = RunDrops(scene, options, err);
+  if (!summary.coordinator) return kExitConverged;
+  out << DropsLine(summary.statistics) << "; results in " << directory << std::endl;
+  if (InterruptRequested()) return kExitNotConverged;
+  return summary.statistics.counted == summary.statistics.drops ? kExitConverged
+                                                                : kExitNotConverged;
+}
+
 int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
           const CommandOptions& options) {
   if (arguments.solver && !FindSolver(*arguments.solver)) {
@@ -209,6 +253,7 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
   if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model); advice && advice->coarse) {
     err << "drape: warning: " << CoarseMeshWarning(*advice) << "\n";
   }
+  if (DropsOf(arguments, scene) > 1) return SolveDrops(arguments, scene, directory, out, err);
   // The folder's lock is held from before the solve to the end of the writing: a second run into
   // the same folder is refused here, before it solves, and nothing of either run is lost. A run
   // that fails before writing removes the folder if the lock created it.
@@ -238,8 +283,8 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;
   }
-  out << ResultLine(report.result, directory) << (report.levels ? LevelsLine(*report.levels) : "")
-      << std::endl;
+  out << ResultLine(report.result, directory)
+      << (report.levels ? LevelsLine(*report.levels) : DrapeLine(report)) << std::endl;
   return ExitStatus(report.result);
 }
 
@@ -249,6 +294,7 @@ int Check(const Arguments& arguments, std::ostream& out) {
   const Model model = BuildModel(scene);
   out << scene.name << ": " << model.num_nodes << " nodes, " << model.num_free_dofs()
       << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << "\n";
+  if (scene.drape_test) out << DrapeTestText(scene);
   const MaterialSpec& material = scene.material;
   out << "material " << material.model
       << (material.model != "springs" && material.springs.present ? " + springs" : "")
@@ -569,6 +615,14 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   solve->add_option("--out", arguments.out,
                     "write into this folder instead of output.directory (default: "
                     "output.directory, else out/<scene name>)");
+  solve
+      ->add_option("--drops", arguments.drops,
+                   "solve N drops of the scene's drape test, seeded perturbations of the "
+                   "specimen's placement and waviness (default: drape_test.drops)")
+      ->check(CLI::Range(1, 10000));
+  solve->add_option("--threads", arguments.threads, kLocalThreadsHelp)
+      ->check(kThreadCount)
+      ->capture_default_str();
   solve->footer(kExitStatus);
 
   CLI::App* check = app.add_subcommand(

@@ -229,6 +229,26 @@ struct OutputSpec {
   Location where;
 };
 
+// A drape test (Cusick 1968; BS 5058, ISO 9073-9) given by its geometry: the scene's `drape_test`
+// block, which src/scene/drape_test.h expands into the mesh, the clamp, the support disc and
+// gravity of a hand-written tester scene. Lengths in m.
+struct DrapeTestSpec {
+  double specimen_diameter = 0.30;
+  double disc_diameter = 0.18;
+  std::optional<double> clamp_diameter;  // not given: 1 cm less than the disc
+  // The disc's centre seen from the specimen's (a real specimen is never centred exactly; the
+  // offset also breaks the lattice's symmetry, so the folds form where they want).
+  Eigen::Vector2d offset{0.0013, 0.0007};
+  // Repeated drops (src/sweep/drops.h): how many, and the seeded perturbations that make them
+  // differ: the specimen's placement on the disc (a uniform scatter of this radius around
+  // `offset`) and an initial out-of-plane waviness of the overhang (this amplitude).
+  int drops = 1;
+  double placement = 0.002;
+  double waviness = 0.002;
+  int seed = 1;
+  Location where;
+};
+
 struct Scene {
   std::string file;       // the scene file as given
   std::string directory;  // folder of the scene file
@@ -243,7 +263,8 @@ struct Scene {
   ContactSpec contact;
   SolverSpec solver;
   OutputSpec output;
-  Location root;  // the document itself (file, line 1)
+  std::optional<DrapeTestSpec> drape_test;  // given: mesh, fixed and obstacles are its expansion
+  Location root;                            // the document itself (file, line 1)
 };
 
 }  // namespace drape

@@ -16,6 +16,7 @@
 #include <map>
 #include <sstream>
 
+#include "src/scene/drape_test.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
@@ -209,14 +210,23 @@ void CheckMeshSize(const YamlMap& map, MeshSpec* spec) {
   Fail(map.value(), text.str());
 }
 
-MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory) {
-  static const std::vector<std::string> all_keys = {
+const std::vector<std::string>& MeshKeys() {
+  static const std::vector<std::string> keys = {
       "kind",  "size",   "nodes",  "u",         "v",    "plane",  "origin", "radius",   "spacing",
       "rings", "spokes", "length", "direction", "path", "points", "closed", "max_nodes"};
-  const YamlMap map(value, all_keys);
+  return keys;
+}
+
+// `default_kind` is the mesh's kind when it gives none: a grid, or a circle (of `default_radius`)
+// under a drape_test.
+MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory,
+                  const std::string& default_kind = "grid",
+                  double default_radius = MeshSpec().radius) {
+  const YamlMap map(value, MeshKeys());
   MeshSpec spec;
   spec.where = value.where;
-  std::string kind = "grid";
+  spec.radius = default_radius;
+  std::string kind = default_kind;
   std::vector<std::string> kinds;
   for (const auto& entry : MeshKeysByKind()) kinds.push_back(entry.first);
   if (const auto given = map.Find("kind")) kind = ReadChoice(*given, kinds);
@@ -957,6 +967,9 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
     if (given.empty()) Fail(*directory, "expected a folder, got nothing");
     output.directory = ResolvePath(scene.directory, given);
   }
+  if (scene.drape_test) {  // a drape test's figures: the shadow and its radial profile
+    output.write.insert(output.write.end(), {"profile", "shadow"});
+  }
   if (const auto write = map.Find("write")) {
     if (!write->get().IsSequence()) {
       Fail(*write, "expected a list such as [summary, nodes], got " + Describe(write->get()));
@@ -1034,9 +1047,34 @@ void ResolveRegionReferences(Scene* scene) {
   }
 }
 
+// A scene with a drape_test block leaves the mesh's shape, the supports and the obstacles to it.
+void RefuseWhatTheDrapeTestSets(const YamlMap& top) {
+  for (const std::string key : {"fixed", "obstacles"}) {
+    if (top.Has(key)) {
+      throw InputError(top.KeyLocation(key),
+                       "'" + key +
+                           "' is set by drape_test (the clamp and the disc): leave it out, "
+                           "or write the test out by hand without drape_test");
+    }
+  }
+  if (const auto mesh = top.Find("mesh")) {
+    const YamlMap map(*mesh);
+    for (const std::string& key : map.Keys()) {
+      if (Contains(MeshKeys(), key) && !Contains(DrapeTestMeshKeys(), key)) {
+        throw InputError(map.KeyLocation(key),
+                         "'" + key +
+                             "' is set by drape_test (specimen_diameter): a drape test's "
+                             "mesh takes only " +
+                             JoinNames(DrapeTestMeshKeys()));
+      }
+    }
+    YamlMap(*mesh, DrapeTestMeshKeys());  // any other key: unknown, the nearest one suggested
+  }
+}
+
 void ReadScene(const YamlValue& root, Scene* scene) {
   const YamlMap top(root, {"name", "dimension", "mesh", "material", "regions", "fixed", "loads",
-                           "obstacles", "contact", "solver", "output"});
+                           "obstacles", "contact", "solver", "output", "drape_test"});
   if (const auto name = top.Find("name")) scene->name = ReadName(*name);
   if (const auto dimension = top.Find("dimension")) {
     scene->dimension = ReadInt(*dimension);
@@ -1044,7 +1082,14 @@ void ReadScene(const YamlValue& root, Scene* scene) {
       Fail(*dimension, "must be 2 or 3, got " + std::to_string(scene->dimension));
     }
   }
-  scene->mesh = ReadMesh(top.Get("mesh"), scene->directory);
+  if (const auto test = top.Find("drape_test")) {
+    scene->drape_test = ReadDrapeTest(*test);
+    RefuseWhatTheDrapeTestSets(top);
+    scene->mesh = ReadMesh(OptionalSection(top, "mesh"), scene->directory, "circle",
+                           scene->drape_test->specimen_diameter / 2);
+  } else {
+    scene->mesh = ReadMesh(top.Get("mesh"), scene->directory);
+  }
   scene->material = ReadMaterial(top.Get("material"));
   if (const auto v = top.Find("regions")) scene->regions = ReadRegions(*v, scene->material);
   if (const auto v = top.Find("fixed")) scene->fixed = ReadFixed(*v);
@@ -1052,6 +1097,7 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   ResolveRegionReferences(scene);
   if (const auto v = top.Find("obstacles")) scene->obstacles = ReadObstacles(*v);
   scene->contact = ReadContact(OptionalSection(top, "contact"));
+  if (scene->drape_test) ExpandDrapeTest(scene);
   scene->solver = ReadSolver(OptionalSection(top, "solver"));
   scene->output = ReadOutput(OptionalSection(top, "output"), *scene);
   if (!top.Has("loads")) scene->loads.where = OptionalSection(top, "loads").where;

@@ -1,0 +1,148 @@
+#include "src/scene/drape_test.h"
+
+#include <cstdio>
+
+namespace drape {
+namespace {
+
+// Standard gravity as the shipped tester scenes give it (m/s²).
+constexpr double kTesterGravity = 9.81;
+// The clamp is this much narrower than the disc unless given: a 5 mm ring of the specimen rests
+// on the disc by contact inside its rim (m).
+constexpr double kClampNarrowerThanDisc = 0.01;
+// The largest number of drops one run solves.
+constexpr int kMostDrops = 10000;
+
+void ReadDrapeTestKey(const std::string& key, const YamlValue& value, DrapeTestSpec* test) {
+  if (key == "specimen_diameter") test->specimen_diameter = ReadPositive(value);
+  if (key == "disc_diameter") test->disc_diameter = ReadPositive(value);
+  if (key == "clamp_diameter") test->clamp_diameter = ReadPositive(value);
+  if (key == "offset") {
+    const std::vector<double> xy = ReadNumbers(value, 2);
+    test->offset = Eigen::Vector2d(xy[0], xy[1]);
+  }
+  if (key == "drops") {
+    test->drops = ReadIntAtLeast(value, 1);
+    if (test->drops > kMostDrops) {
+      Fail(value, "must be at most " + std::to_string(kMostDrops) + ", got " +
+                      std::to_string(test->drops));
+    }
+  }
+  if (key == "placement") test->placement = ReadNonNegative(value);
+  if (key == "waviness") test->waviness = ReadNonNegative(value);
+  if (key == "seed") test->seed = ReadIntAtLeast(value, 0);
+}
+
+std::string Centimetres(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g cm", metres * 100.0);
+  return text;
+}
+
+std::string Metres(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", metres);
+  return text;
+}
+
+}  // namespace
+
+const std::vector<std::string>& DrapeTestKeys() {
+  static const std::vector<std::string> keys = {
+      "specimen_diameter", "disc_diameter", "clamp_diameter", "offset", "drops", "placement",
+      "waviness",          "seed"};
+  return keys;
+}
+
+const std::vector<std::string>& DrapeTestMeshKeys() {
+  static const std::vector<std::string> keys = {"spacing", "max_nodes"};
+  return keys;
+}
+
+double ClampDiameter(const DrapeTestSpec& test) {
+  return test.clamp_diameter ? *test.clamp_diameter : test.disc_diameter - kClampNarrowerThanDisc;
+}
+
+DrapeTestSpec ReadDrapeTest(const YamlValue& value) {
+  const YamlMap map(value, DrapeTestKeys());
+  DrapeTestSpec test;
+  test.where = value.where;
+  for (const std::string& key : map.Keys()) ReadDrapeTestKey(key, map.Get(key), &test);
+  const YamlValue& at = map.value();
+  if (!(test.disc_diameter < test.specimen_diameter)) {
+    Fail(map.Has("disc_diameter") ? map.Get("disc_diameter") : at,
+         "the disc (" + Centimetres(test.disc_diameter) + ") must be smaller than the specimen (" +
+             Centimetres(test.specimen_diameter) + ")");
+  }
+  const double clamp = ClampDiameter(test);
+  if (!(clamp > 0.0 && clamp <= test.disc_diameter)) {
+    Fail(map.Has("clamp_diameter") ? map.Get("clamp_diameter") : at,
+         "the clamp (" + Centimetres(clamp) + ") must be positive and no wider than the disc (" +
+             Centimetres(test.disc_diameter) + ")" +
+             (test.clamp_diameter ? "" : "; give clamp_diameter for a disc this small"));
+  }
+  const double reach = test.offset.norm() + test.placement + test.disc_diameter / 2;
+  if (!(reach < test.specimen_diameter / 2)) {
+    Fail(map.Has("offset") ? map.Get("offset") : at,
+         "the disc, moved by the offset (and the drops' placement scatter), reaches past the "
+         "specimen's edge");
+  }
+  return test;
+}
+
+void ExpandDrapeTest(Scene* scene) {
+  const DrapeTestSpec& test = *scene->drape_test;
+  const double lift = scene->contact.thickness;
+  Location where = test.where;
+  MeshSpec& mesh = scene->mesh;
+  mesh.kind = MeshSpec::Kind::kCircle;
+  mesh.radius = test.specimen_diameter / 2;
+  mesh.origin = Eigen::Vector3d(0.0, 0.0, lift);
+  mesh.where = where;
+
+  FixedSpec clamp;
+  clamp.nodes.kind = NodeSelector::Kind::kWithin;
+  clamp.nodes.center = Eigen::Vector3d(test.offset.x(), test.offset.y(), lift);
+  clamp.nodes.radius = ClampDiameter(test) / 2;
+  clamp.nodes.where = where;
+  clamp.where = where;
+  scene->fixed = {clamp};
+
+  ObstacleSpec disc;
+  disc.kind = "disk";
+  disc.center = Eigen::Vector3d(test.offset.x(), test.offset.y(), 0.0);
+  disc.radius = test.disc_diameter / 2;
+  disc.given = {{"center", where}, {"radius", where}};
+  disc.where = where;
+  scene->obstacles = {disc};
+
+  if (!scene->loads.gravity) scene->loads.gravity = Eigen::Vector3d(0.0, 0.0, -kTesterGravity);
+}
+
+std::string DrapeTestText(const Scene& scene) {
+  const DrapeTestSpec& test = *scene.drape_test;
+  const ObstacleSpec& disc = scene.obstacles.front();
+  const NodeSelector& clamp = scene.fixed.front().nodes;
+  const Eigen::Vector3d& g = *scene.loads.gravity;
+  std::string text = "drape test: specimen " + Centimetres(test.specimen_diameter) + ", disc " +
+                     Centimetres(test.disc_diameter) + ", clamp " +
+                     Centimetres(ClampDiameter(test)) + ", the disc's centre at (" +
+                     Metres(test.offset.x()) + ", " + Metres(test.offset.y()) + ") m; " +
+                     std::to_string(test.drops) + (test.drops == 1 ? " drop" : " drops");
+  if (test.drops > 1) {
+    text += " (seed " + std::to_string(test.seed) + ", placement within " + Metres(test.placement) +
+            " m, waviness " + Metres(test.waviness) + " m)";
+  }
+  text += "\nexpands to: mesh {kind: circle, radius: " + Metres(scene.mesh.radius) +
+          ", spacing: " + Metres(scene.mesh.spacing) + ", origin: [0, 0, " +
+          Metres(scene.mesh.origin.z()) + "]}; fixed: [{nodes: {within: {center: [" +
+          Metres(clamp.center.x()) + ", " + Metres(clamp.center.y()) + ", " +
+          Metres(clamp.center.z()) + "], radius: " + Metres(clamp.radius) +
+          "}}}]; obstacles: [{disk: {center: [" + Metres(disc.center.x()) + ", " +
+          Metres(disc.center.y()) + ", 0], radius: " + Metres(disc.radius) +
+          "}}]; loads.gravity: [" + Metres(g.x()) + ", " + Metres(g.y()) + ", " + Metres(g.z()) +
+          "]\n";
+  return text;
+}
+
+}  // namespace drape

@@ -1,0 +1,45 @@
+// The scene's `drape_test` block: a drape test (Cusick 1968; BS 5058, ISO 9073-9) given by its
+// geometry, so that a scene says the fabric and the test and nothing else. It expands into what a
+// hand-written tester scene says (configs/fv/ has both forms):
+//   mesh       circle of radius specimen_diameter/2, spacing mesh.spacing (default 1 cm), lying
+//              on the disc's clearance layer (z = contact.thickness);
+//   fixed      the nodes within clamp_diameter/2 of the disc's centre (x, y and z): the specimen
+//              clamped between the support and cover discs;
+//   obstacles  the support disc, radius disc_diameter/2, centred at `offset` (x, y) at z = 0;
+//   loads      gravity (0, 0, −9.81) m/s² unless the scene gives its own.
+// The ring between the clamp and the disc's rim rests on the disc by contact, over which the
+// fabric folds.
+#ifndef DRAPE_SRC_SCENE_DRAPE_TEST_H_
+#define DRAPE_SRC_SCENE_DRAPE_TEST_H_
+
+#include <string>
+#include <vector>
+
+#include "src/scene/scene.h"
+#include "src/scene/yaml_reader.h"
+
+namespace drape {
+
+// The keys of the block, in the order the documentation lists them.
+const std::vector<std::string>& DrapeTestKeys();
+
+// The mesh keys a scene with a drape_test may still give (the rest is the test's).
+const std::vector<std::string>& DrapeTestMeshKeys();
+
+// Reads and checks the block (lengths positive, the clamp inside the disc, the disc inside the
+// specimen); throws InputError, located.
+DrapeTestSpec ReadDrapeTest(const YamlValue& value);
+
+// Fills the scene's mesh (keeping its spacing and max_nodes), fixed, obstacles and gravity from
+// scene->drape_test, which must be set; contact.thickness must be read already.
+void ExpandDrapeTest(Scene* scene);
+
+// The block and what it expands to, for `drape check`: two lines.
+std::string DrapeTestText(const Scene& scene);
+
+// The clamp's diameter in effect (given, else 1 cm less than the disc), m.
+double ClampDiameter(const DrapeTestSpec& test);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_SCENE_DRAPE_TEST_H_

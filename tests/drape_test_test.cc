@@ -1,0 +1,168 @@
+// The scene's drape_test block (src/scene/drape_test.h): it builds the model of the hand-written
+// tester scene it stands for, fills its defaults, refuses what would contradict it, and says
+// what it expands to.
+#include "src/scene/drape_test.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "src/model/model.h"
+#include "src/scene/scene_loader.h"
+
+namespace drape {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kFabric[] = R"(material:
+  model: finite_volume
+  density: 0.08
+  finite_volume: {E_warp: 9000, E_weft: 8000, G: 20, D_warp: 2.6e-6, D_weft: 1.7e-6}
+)";
+
+// The 24 cm polyester test at 2 cm, written out by hand as configs/fv/ wrote it before the block.
+constexpr char kByHand[] = R"(name: by-hand
+mesh: {kind: circle, radius: 0.12, spacing: 0.02, origin: [0, 0, 0.001]}
+fixed:
+  - nodes: {within: {center: [0.0013, 0.0007, 0.001], radius: 0.085}}
+loads: {gravity: [0, 0, -9.81]}
+obstacles:
+  - disk: {center: [0.0013, 0.0007, 0], radius: 0.09}
+contact: {thickness: 0.001}
+)";
+
+constexpr char kBlock[] = R"(name: block
+drape_test: {specimen_diameter: 0.24}
+mesh: {spacing: 0.02}
+)";
+
+class DrapeTestBlock : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = fs::temp_directory_path() /
+              ("drape_test_block_" + std::to_string(::getpid()) + "_" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(folder_);
+    fs::create_directories(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+
+  Scene Load(const std::string& text, const std::vector<std::string>& overrides = {}) const {
+    const fs::path path = folder_ / "scene.yaml";
+    std::ofstream(path) << text;
+    return LoadScene(path.string(), overrides);
+  }
+  std::string Error(const std::string& text) const {
+    try {
+      Load(text);
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "";
+  }
+
+  fs::path folder_;
+};
+
+TEST_F(DrapeTestBlock, BuildsTheModelOfTheHandWrittenScene) {
+  const Scene block_scene = Load(std::string(kBlock) + kFabric);
+  const Scene hand_scene = Load(std::string(kByHand) + kFabric);
+  const Model block = BuildModel(block_scene);
+  const Model hand = BuildModel(hand_scene);
+  ASSERT_GT(block.num_nodes, 100);
+  EXPECT_EQ(block.num_nodes, hand.num_nodes);
+  EXPECT_EQ(block.positions, hand.positions);
+  EXPECT_EQ(block.fixed, hand.fixed);
+  EXPECT_EQ(block.TermCounts(), hand.TermCounts());
+  EXPECT_GT(block.TermCounts().at("disk_contact"), 0);
+  EXPECT_EQ(block.applied, hand.applied);
+  EXPECT_EQ(block.mass, hand.mass);
+  ASSERT_EQ(block.obstacles.size(), 1u);
+  EXPECT_EQ(block.obstacles[0].center, hand.obstacles[0].center);
+  EXPECT_EQ(block.obstacles[0].radius, hand.obstacles[0].radius);
+  EXPECT_EQ(block_scene.loads.gravity, hand_scene.loads.gravity);
+}
+
+TEST_F(DrapeTestBlock, DefaultsAreTheStandardTest) {
+  const Scene scene = Load(std::string("drape_test: {}\n") + kFabric);
+  ASSERT_TRUE(scene.drape_test);
+  EXPECT_EQ(scene.mesh.kind, MeshSpec::Kind::kCircle);
+  EXPECT_DOUBLE_EQ(scene.mesh.radius, 0.15);
+  EXPECT_DOUBLE_EQ(scene.mesh.spacing, 0.01);
+  EXPECT_DOUBLE_EQ(scene.mesh.origin.z(), scene.contact.thickness);
+  ASSERT_EQ(scene.obstacles.size(), 1u);
+  EXPECT_EQ(scene.obstacles[0].kind, "disk");
+  EXPECT_DOUBLE_EQ(scene.obstacles[0].radius, 0.09);
+  EXPECT_DOUBLE_EQ(scene.obstacles[0].center.x(), 0.0013);
+  ASSERT_EQ(scene.fixed.size(), 1u);
+  EXPECT_DOUBLE_EQ(scene.fixed[0].nodes.radius, 0.085);
+  EXPECT_EQ(scene.drape_test->drops, 1);
+  // A drape test writes its figures by default.
+  for (const std::string kind : {"summary", "profile", "shadow"}) {
+    EXPECT_NE(std::find(scene.output.write.begin(), scene.output.write.end(), kind),
+              scene.output.write.end())
+        << kind;
+  }
+}
+
+TEST_F(DrapeTestBlock, SetOverridesReachTheBlockAndTheSpacing) {
+  const Scene scene = Load(std::string("drape_test: {}\n") + kFabric,
+                           {"drape_test.disc_diameter=0.2", "mesh.spacing=0.02"});
+  EXPECT_DOUBLE_EQ(scene.obstacles[0].radius, 0.1);
+  EXPECT_DOUBLE_EQ(scene.fixed[0].nodes.radius, 0.095);
+  EXPECT_DOUBLE_EQ(scene.mesh.spacing, 0.02);
+}
+
+TEST_F(DrapeTestBlock, RefusesWhatItSetsItself) {
+  EXPECT_NE(Error(std::string(kBlock) + kFabric +
+                  "fixed:\n  - nodes: {within: {center: [0, 0, 0], radius: 0.05}}\n")
+                .find("scene.yaml:8:1: fixed: 'fixed' is set by drape_test"),
+            std::string::npos)
+      << Error(std::string(kBlock) + kFabric + "fixed: []\n");
+  const std::string radius =
+      Error(std::string("drape_test: {}\nmesh: {spacing: 0.02, radius: 0.2}\n") + kFabric);
+  EXPECT_NE(radius.find("scene.yaml:2:23: mesh.radius"), std::string::npos) << radius;
+  EXPECT_NE(radius.find("'radius' is set by drape_test"), std::string::npos) << radius;
+  EXPECT_NE(Error(std::string("drape_test: {}\nobstacles: []\n") + kFabric)
+                .find("'obstacles' is set by drape_test"),
+            std::string::npos);
+}
+
+TEST_F(DrapeTestBlock, RefusesAnImpossibleGeometryAtItsKey) {
+  const std::string disc = Error(std::string("drape_test: {disc_diameter: 0.4}\n") + kFabric);
+  EXPECT_NE(disc.find("scene.yaml:1:29: drape_test.disc_diameter: the disc (40 cm) must be "
+                      "smaller than the specimen (30 cm)"),
+            std::string::npos)
+      << disc;
+  const std::string clamp = Error(std::string("drape_test: {clamp_diameter: 0.2}\n") + kFabric);
+  EXPECT_NE(clamp.find("drape_test.clamp_diameter: the clamp (20 cm)"), std::string::npos) << clamp;
+  const std::string offset = Error(std::string("drape_test: {offset: [0.07, 0]}\n") + kFabric);
+  EXPECT_NE(offset.find("drape_test.offset: the disc, moved by the offset"), std::string::npos)
+      << offset;
+  EXPECT_NE(Error(std::string("drape_test: {drops: 0}\n") + kFabric).find("drape_test.drops"),
+            std::string::npos);
+  EXPECT_NE(Error(std::string("drape_test: {specimen_diamter: 0.3}\n") + kFabric)
+                .find("did you mean 'specimen_diameter'?"),
+            std::string::npos);
+}
+
+TEST_F(DrapeTestBlock, SaysWhatItExpandsTo) {
+  const Scene scene = Load(std::string(kBlock) + kFabric);
+  const std::string text = DrapeTestText(scene);
+  EXPECT_NE(text.find("specimen 24 cm, disc 18 cm, clamp 17 cm"), std::string::npos) << text;
+  EXPECT_NE(text.find("mesh {kind: circle, radius: 0.12, spacing: 0.02, origin: [0, 0, 0.001]}"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("obstacles: [{disk: {center: [0.0013, 0.0007, 0], radius: 0.09}}]"),
+            std::string::npos)
+      << text;
+}
+
+}  // namespace
+}  // namespace drape
