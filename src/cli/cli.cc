@@ -40,6 +40,7 @@
 #include "src/solvers/solver.h"
 #include "src/solvers/state_text.h"
 #include "src/sweep/drops.h"
+#include "src/sweep/drops_report.h"
 #include "src/sweep/sweep.h"
 #include "src/sweep/sweep_file.h"
 
@@ -226,7 +227,14 @@ int SolveDrops(const Arguments& arguments, const Scene& scene, const std::string
   EnableInterrupt();
   const DropsSummary summary = RunDrops(scene, options, err);
   if (!summary.coordinator) return kExitConverged;
-  out << DropsLine(summary.statistics) << "; results in " << directory << std::endl;
+  const DropStatistics& statistics = summary.statistics;
+  out << DropsLine(statistics) << "; results in " << directory << " (report.html)" << std::endl;
+  if (statistics.counted > 0) {
+    if (const auto advice =
+            SpecimenSizeAdvice(scene.drape_test->specimen_diameter, statistics.mean)) {
+      out << "specimen size: " << *advice << std::endl;
+    }
+  }
   if (InterruptRequested()) return kExitNotConverged;
   return summary.statistics.counted == summary.statistics.drops ? kExitConverged
                                                                 : kExitNotConverged;

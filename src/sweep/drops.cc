@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 
 #include "src/analysis/solve_report.h"
@@ -20,6 +21,7 @@
 #include "src/scene/drape_test.h"
 #include "src/solvers/solver.h"
 #include "src/solvers/state_text.h"
+#include "src/sweep/drops_report.h"
 #include "src/sweep/sweep.h"
 
 namespace drape {
@@ -103,7 +105,23 @@ std::string DropFolder(const std::string& directory, int drop, int drops) {
   return (fs::path(directory) / "drops" / name).string();
 }
 
-DropRecord SolveDrop(const Scene& scene, const DropsOptions& options, int drop) {
+// A farm task's result: the drops.csv row, then a line with the outline (centre, radii).
+std::string TaskResult(const DropRecord& record, const DropOutline& outline) {
+  std::string text = DropCsvRow(record) + "\n" + FormatNumber(outline.centre.x(), 10) + " " +
+                     FormatNumber(outline.centre.y(), 10);
+  for (double r : outline.radius) text += " " + FormatNumber(r, 10);
+  return text;
+}
+
+DropOutline ParseOutline(const std::string& line) {
+  std::istringstream in(line);
+  DropOutline outline;
+  in >> outline.centre.x() >> outline.centre.y();
+  for (double r; in >> r;) outline.radius.push_back(r);
+  return outline;
+}
+
+std::string SolveDrop(const Scene& scene, const DropsOptions& options, int drop) {
   DropRecord record;
   record.drop = drop;
   const Scene drop_scene = DropScene(scene, drop, &record.offset);
@@ -117,7 +135,7 @@ DropRecord SolveDrop(const Scene& scene, const DropsOptions& options, int drop) 
   const RunResult& result = report.result;
   if (InterruptRequested()) {
     record.state = "interrupted";
-    return record;
+    return TaskResult(record, {});
   }
   WriteOutputs(
       drop_scene, model, report, folder,
@@ -128,20 +146,26 @@ DropRecord SolveDrop(const Scene& scene, const DropsOptions& options, int drop) 
   record.state = result.converged ? StateText(result) : "not converged: " + StateText(result);
   record.counted = result.converged && !result.Saddle() && !result.contact.ThroughDisk() &&
                    report.drape.has_value();
-  return record;
+  DropOutline outline;
+  if (report.drape) {
+    outline.centre =
+        Eigen::Vector2d(report.drape->profile.centre[0], report.drape->profile.centre[1]);
+    outline.radius = report.drape->profile.radius;
+  }
+  return TaskResult(record, outline);
 }
 
 // A drop that fails (an input the model refuses, out of memory, a folder that cannot be written)
 // is a row saying why, not an abort.
 std::string RunDrop(const Scene& scene, const DropsOptions& options, int drop) {
   try {
-    return DropCsvRow(SolveDrop(scene, options, drop));
+    return SolveDrop(scene, options, drop);
   } catch (const std::exception& error) {
     DropRecord failed;
     failed.drop = drop;
     DropScene(scene, drop, &failed.offset);
     failed.state = std::string("failed: ") + error.what();
-    return DropCsvRow(failed);
+    return TaskResult(failed, {});
   }
 }
 
@@ -177,7 +201,9 @@ void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const Dr
       << ",\n  \"most_frequent_folds\": [" << modal << "]"
       << ",\n  \"most_frequent_folds_drops\": " << s.modal_drops
       << ",\n  \"most_frequent_folds_drape_coefficient_mean\": "
-      << (any ? JsonNumber(s.modal_mean) : "null") << "\n}\n";
+      << (any ? JsonNumber(s.modal_mean) : "null");
+  const auto advice = any ? SpecimenSizeAdvice(test.specimen_diameter, s.mean) : std::nullopt;
+  out << ",\n  \"specimen_size_advice\": " << (advice ? JsonString(*advice) : "null") << "\n}\n";
 }
 
 }  // namespace
@@ -280,14 +306,17 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   std::vector<int> tasks(options.drops);
   for (int k = 0; k < options.drops; ++k) tasks[k] = k;
   std::vector<std::string> rows(options.drops);
+  std::vector<DropOutline> outlines(options.drops);
   int finished = 0;
   TaskFarmOptions farm_options;
   farm_options.local_threads = options.threads;
   const TaskFarmSummary farm = RunTaskFarm(
       tasks, [&](int task) { return RunDrop(scene, options, task + 1); },
-      [&](int task, const std::string& row) {
-        rows[task] = row;
-        const DropRecord record = ParseDropCsvRow(row);
+      [&](int task, const std::string& result) {
+        const size_t end = result.find('\n');
+        rows[task] = result.substr(0, end);
+        outlines[task] = ParseOutline(result.substr(end + 1));
+        const DropRecord record = ParseDropCsvRow(rows[task]);
         char text[96];
         std::snprintf(text, sizeof text,
                       "drop %d (%d of %d done): drape coefficient %.3f, %d folds, ", record.drop,
@@ -300,6 +329,7 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   summary.workers = farm.workers;
   if (!farm.coordinator) return summary;
   for (const std::string& row : rows) summary.drops.push_back(ParseDropCsvRow(row));
+  summary.outlines = outlines;
   summary.statistics = ComputeDropStatistics(summary.drops);
   const fs::path directory(options.directory);
   WriteAtomically(directory / "drops.csv", [&](std::ostream& out) {
@@ -309,6 +339,8 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   WriteAtomically(directory / "summary.json", [&](std::ostream& out) {
     WriteDropsSummary(scene, options, summary.statistics, out);
   });
+  WriteAtomically(directory / "report.html",
+                  [&](std::ostream& out) { WriteDropsReport(scene, summary, out); });
   return summary;
 }
 

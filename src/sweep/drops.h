@@ -16,7 +16,8 @@
 //   patterns the fabric can settle in, as a real drop does).
 // Each drop is solved on the scene's own mesh alone (one level: the spread over drops is what is
 // measured) into OUT/drops/NN/ with the files and certificate of a single solve; OUT/drops.csv
-// has a row per drop, OUT/summary.json the statistics.
+// has a row per drop, OUT/summary.json the statistics, OUT/report.html the pictures
+// (src/sweep/drops_report.h).
 #ifndef DRAPE_SRC_SWEEP_DROPS_H_
 #define DRAPE_SRC_SWEEP_DROPS_H_
 
@@ -51,6 +52,12 @@ struct DropRecord {
   bool counted = false;  // converged to a stable minimum, nothing through the disc
 };
 
+// A drop's shadow outline, for the report: r(θ_k) around `centre`, θ_k = 2π k / radius.size().
+struct DropOutline {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // m
+  std::vector<double> radius;                        // m
+};
+
 // The figures over the counted drops.
 struct DropStatistics {
   int drops = 0;    // all drops
@@ -64,7 +71,8 @@ struct DropStatistics {
 };
 
 struct DropsSummary {
-  std::vector<DropRecord> drops;  // in drop order (coordinator only)
+  std::vector<DropRecord> drops;      // in drop order (coordinator only)
+  std::vector<DropOutline> outlines;  // the same order; empty for a drop that failed
   DropStatistics statistics;
   bool coordinator = true;  // false on the MPI ranks that only worked
   int workers = 1;

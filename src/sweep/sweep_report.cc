@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "src/output/atomic_file.h"
+#include "src/output/html_text.h"
 #include "src/output/json.h"
 #include "src/sweep/sweep.h"
 #include "src/sweep/sweep_plot_scripts.h"
@@ -79,23 +80,6 @@ std::string GnuplotQuoted(const std::string& text) {
   std::string quoted = "'";
   for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
   return quoted + "'";
-}
-
-std::string HtmlText(const std::string& text) {
-  std::string escaped;
-  for (char c : text) {
-    if (c == '<')
-      escaped += "&lt;";
-    else if (c == '>')
-      escaped += "&gt;";
-    else if (c == '&')
-      escaped += "&amp;";
-    else if (c == '"')
-      escaped += "&quot;";
-    else
-      escaped += c;
-  }
-  return escaped;
 }
 
 class Plotter {
