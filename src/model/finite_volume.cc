@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "costs/fv_bending.h"
+#include "costs/fv_bending_friction.h"
 #include "costs/fv_membrane.h"
 #include "costs/spring_stretch.h"
 
@@ -83,6 +84,15 @@ double RestDistance(const Mesh& mesh, int a, int b) {
   return (mesh.nodes[b] - mesh.nodes[a]).norm();
 }
 
+// The friction term of one direction of control volume `nodes[1]` (none without friction).
+void AddBendingFriction(double friction, const FiniteVolumeSpec& spec,
+                        const std::vector<int>& nodes, double size, double area, Model* model) {
+  if (!(friction > 0.0)) return;
+  model->terms.push_back(
+      MakeTerm("fv_bending_friction", nodes,
+               FvBendingFriction::Create(friction, size, area, spec.bending_friction_smoothing)));
+}
+
 // A single row (or column) of nodes: a strip bending in one direction. Each link's membrane
 // spring is its two halves, each of the modulus of its own node's control volume.
 void AddStrip(const NodeSpecs& of_node, const Mesh& mesh, Model* model) {
@@ -117,6 +127,9 @@ void AddStrip(const NodeSpecs& of_node, const Mesh& mesh, Model* model) {
   }
   for (int k = 1; k + 1 < count; ++k) {
     const int a = (k - 1) * step, p = k * step, b = (k + 1) * step;
+    const FiniteVolumeSpec& spec = *of_node[p];
+    AddBendingFriction(row ? spec.bending_friction_warp : spec.bending_friction_weft, spec,
+                       {a, p, b}, size[k], mesh.area[p], model);
     if (!(rigidity(p) > 0.0)) continue;
     model->terms.push_back(MakeTerm("fv_bending", {a, p, b},
                                     FvBendingEdge::Create(rigidity(p), size[k], mesh.area[p])));
@@ -139,6 +152,10 @@ void AddBending(const FiniteVolumeSpec& spec, const Mesh& mesh, int p, const Nei
   const double area = mesh.area[p];
   const double size1 = warp ? 0.5 * (RestDistance(mesh, nb.w, p) + RestDistance(mesh, p, nb.e)) : 0;
   const double size2 = weft ? 0.5 * (RestDistance(mesh, nb.s, p) + RestDistance(mesh, p, nb.n)) : 0;
+  if (warp)
+    AddBendingFriction(spec.bending_friction_warp, spec, {nb.w, p, nb.e}, size1, area, model);
+  if (weft)
+    AddBendingFriction(spec.bending_friction_weft, spec, {nb.s, p, nb.n}, size2, area, model);
   if (warp && weft) {
     if (spec.D_warp > 0.0 || spec.D_weft > 0.0) {
       model->terms.push_back(

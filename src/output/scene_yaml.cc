@@ -219,8 +219,13 @@ void WriteFiniteVolume(const FiniteVolumeSpec& fv, YAML::Emitter& out) {
   Key(out, "finite_volume");
   out << YAML::Value << YAML::BeginMap;
   for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
+    if (!key.reported_when_zero && fv.*key.member == 0.0) continue;
     Key(out, key.key);
     Number(out, fv.*key.member);
+  }
+  if (fv.bending_friction_warp > 0.0 || fv.bending_friction_weft > 0.0) {
+    Key(out, "bending_friction_smoothing");
+    Number(out, fv.bending_friction_smoothing);
   }
   out << YAML::EndMap;
 }

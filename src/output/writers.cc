@@ -608,8 +608,14 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
   const int mass = static_cast<int>(material.mass_kind);
   std::vector<MaterialValue> values = {{mass_keys[mass], material.mass_value, mass_units[mass]}};
   if (material.model == "finite_volume") {
+    const FiniteVolumeSpec& fv = material.finite_volume;
     for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
-      values.push_back({key.key, material.finite_volume.*key.member, key.unit});
+      if (key.reported_when_zero || fv.*key.member != 0.0) {
+        values.push_back({key.key, fv.*key.member, key.unit});
+      }
+    }
+    if (fv.bending_friction_warp > 0.0 || fv.bending_friction_weft > 0.0) {
+      values.push_back({"bending_friction_smoothing", fv.bending_friction_smoothing, "1/m"});
     }
   }
   const std::pair<const char*, const SpringFamilySpec*> families[] = {

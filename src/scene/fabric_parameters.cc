@@ -10,6 +10,10 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kCentimetre = 1e-2;  // m
 }  // namespace
 
+double KesBendingFriction(double two_hb_gf_cm_per_cm) {
+  return 0.5 * two_hb_gf_cm_per_cm * kGramForce;
+}
+
 double KesBendingRigidity(double b_gf_cm) { return b_gf_cm * kGramForce * kCentimetre; }
 
 double KesShearRigidity(double g_gf_per_cm_deg) {

@@ -27,6 +27,10 @@ constexpr double kKesStandardMaximumLoad = 500.0;       // KES-FB1 Fm, gf/cm
 // KES B (gf·cm²/cm = gf·cm) → D (N·m): D = B × 9.80665e-3 N × 1e-2 m = B × 9.80665e-5.
 double KesBendingRigidity(double b_gf_cm);
 
+// KES 2HB (gf·cm/cm, the width of the bending hysteresis) → the friction moment per unit width
+// H = 2HB/2 (N·m/m = N): H = 2HB/2 × 9.80665e-3 N × 1e-2 m / 1e-2 m = 2HB × 4.903325e-3.
+double KesBendingFriction(double two_hb_gf_cm_per_cm);
+
 // KES G (gf/(cm·deg)) → the model's G (N/m, per radian of shear angle):
 // G = G_kes × (9.80665e-3 N / 1e-2 m) × (180/π) = G_kes × 56.188.
 double KesShearRigidity(double g_gf_per_cm_deg);

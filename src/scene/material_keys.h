@@ -1,6 +1,7 @@
 // The finite-volume material's SI values by key (E_warp, E_weft, nu_warp, nu_weft, G, D_warp,
-// D_weft, D_12): one list for the loader (material.finite_volume and regions), the scene.yaml
-// writer and the regions' overrides (src/model/regions.h).
+// D_weft, D_12, bending_friction_warp, bending_friction_weft): one list for the loader
+// (material.finite_volume and regions), the scene.yaml writer and the regions' overrides
+// (src/model/regions.h).
 #ifndef DRAPE_SRC_SCENE_MATERIAL_KEYS_H_
 #define DRAPE_SRC_SCENE_MATERIAL_KEYS_H_
 
@@ -17,6 +18,9 @@ struct FiniteVolumeKey {
   enum class Range { kPositive, kNonNegative, kAny };
   Range range;  // what a region may give (the material's own keys are read as before)
   std::string unit;
+  // Reported (drape check, summary.json, scene.yaml) when 0 too; the friction is reported only
+  // where a fabric has it.
+  bool reported_when_zero = true;
 };
 
 // In the order scene.yaml writes them.

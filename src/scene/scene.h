@@ -109,6 +109,10 @@ struct FiniteVolumeSpec {
   bool present = false;
   double E_warp = 0, E_weft = 0, nu_warp = 0, nu_weft = 0, G = 0;  // N/m
   double D_warp = 0, D_weft = 0, D_12 = 0;                         // N·m
+  // Fibre friction in bending (KES 2HB/2), N·m/m = N: 0 is the elastic fabric
+  // (costs/fv_bending_friction.h), and δ, the curvature (1/m) below which its kink is smoothed.
+  double bending_friction_warp = 0, bending_friction_weft = 0;
+  double bending_friction_smoothing = 0.1;
   Location where;
 };
 

@@ -371,8 +371,9 @@ double ReadParameter(const YamlMap& map, const std::string& key, const std::stri
 
 // finite_volume.kes: KES-FB measurements in their own units (src/scene/fabric_parameters.h).
 const std::vector<std::string>& KesKeys() {
-  static const std::vector<std::string> keys = {"B_warp",   "B_weft",  "G",       "W", "EMT_warp",
-                                                "EMT_weft", "LT_warp", "LT_weft", "Fm"};
+  static const std::vector<std::string> keys = {"B_warp",   "B_weft",   "G",       "W",
+                                                "EMT_warp", "EMT_weft", "LT_warp", "LT_weft",
+                                                "Fm",       "2HB_warp", "2HB_weft"};
   return keys;
 }
 
@@ -397,9 +398,30 @@ struct ArealDensity {
   std::string missing;          // why there is none
 };
 
+// The friction moments: bending_friction_<direction> (N) or kes.2HB_<direction> (gf·cm/cm), at
+// most one of the two; none is the elastic fabric.
+void ReadBendingFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
+                         FiniteVolumeSpec* fv) {
+  for (const std::string direction : {"warp", "weft"}) {
+    const auto si = map.Find("bending_friction_" + direction);
+    const auto measured = kes ? kes->Find("2HB_" + direction) : std::nullopt;
+    if (si && measured) {
+      Fail(*measured, "give bending_friction_" + direction +
+                          " in one way only: 'bending_friction_" + direction + "' is given too");
+    }
+    double& friction = direction == "warp" ? fv->bending_friction_warp : fv->bending_friction_weft;
+    if (si) friction = ReadNonNegative(*si);
+    if (measured) friction = KesBendingFriction(ReadNonNegative(*measured));
+  }
+  if (const auto v = map.Find("bending_friction_smoothing")) {
+    fv->bending_friction_smoothing = ReadPositive(*v);
+  }
+}
+
 FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& density) {
   const YamlMap map(value, {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft",
-                            "D_12", "kes", "bending_length"});
+                            "D_12", "kes", "bending_length", "bending_friction_warp",
+                            "bending_friction_weft", "bending_friction_smoothing"});
   FiniteVolumeSpec fv;
   fv.present = true;
   fv.where = value.where;
@@ -445,6 +467,7 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
     Fail(map.Has("nu_weft") ? *map.Find("nu_weft") : *map.Find("nu_warp"),
          "nu_warp * nu_weft must be less than 1 (else the membrane energy is not positive)");
   }
+  ReadBendingFriction(map, kes, &fv);
   if (const auto v = map.Find("D_12")) {
     fv.D_12 = ReadNumber(*v);
     if (!(fv.D_12 * fv.D_12 < fv.D_warp * fv.D_weft)) {

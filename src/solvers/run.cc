@@ -1,6 +1,7 @@
 #include "src/solvers/run.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -103,12 +104,39 @@ void ReturnToLastFinite(const Scene& scene, const std::string& method, const Las
   result->non_finite = true;
 }
 
-}  // namespace
+// The bending friction's smoothing δ (costs/fv_bending_friction.h) from which a solve starts: a
+// smaller δ is reached by continuation, δ = 1, 0.1, … 1/m, each stage started from the last
+// (Newton from the flat state straight at δ = 0.01 1/m took 1,773 iterations for the heavy
+// cantilever of tests/fv_bending_friction_test.cc, where the stages take tens each).
+constexpr double kFrictionContinuationStart = 1.0;  // 1/m
+constexpr double kFrictionContinuationRatio = 10.0;
 
-RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
-                   const std::function<bool(const IterationRecord&)>& on_iteration) {
-  const SolverInfo* info = FindSolver(method);
-  if (!info) throw InputError(scene.solver.where, "unknown solver '" + method + "'");
+bool HasBendingFriction(const Scene& scene) {
+  if (scene.material.model != "finite_volume") return false;
+  const FiniteVolumeSpec& fv = scene.material.finite_volume;
+  if (fv.bending_friction_warp > 0.0 || fv.bending_friction_weft > 0.0) return true;
+  for (const RegionSpec& region : scene.regions) {
+    for (const char* key : {"bending_friction_warp", "bending_friction_weft"}) {
+      const auto given = region.finite_volume.find(key);
+      if (given != region.finite_volume.end() && given->second > 0.0) return true;
+    }
+  }
+  return false;
+}
+
+// The smoothings of the stages before the scene's own (none without friction, or δ ≥ 1 1/m).
+std::vector<double> ContinuationSmoothings(const Scene& scene) {
+  std::vector<double> stages;
+  if (!HasBendingFriction(scene)) return stages;
+  const double target = scene.material.finite_volume.bending_friction_smoothing;
+  for (double smoothing = kFrictionContinuationStart; smoothing > target * (1.0 + 1e-9);
+       smoothing /= kFrictionContinuationRatio) {
+    stages.push_back(smoothing);
+  }
+  return stages;
+}
+
+SolverOptions OptionsFor(const Scene& scene, const std::string& method) {
   SolverOptions options;
   options.tolerance = scene.solver.tolerance;
   options.max_iterations = EffectiveMaxIterations(scene.solver, method);
@@ -116,6 +144,44 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   if (auto it = scene.solver.method_options.find(method); it != scene.solver.method_options.end()) {
     options.method_options = it->second;
   }
+  return options;
+}
+
+// The continuation's stages: each solved from the previous one's positions, the result left in
+// `model` (the free coordinates). Returns their iterations and time together.
+SolverSummary RunContinuation(const Scene& scene, Model& model, const SolverInfo& info,
+                              const std::string& method,
+                              const std::function<bool(const IterationRecord&)>& on_iteration) {
+  SolverSummary total;
+  for (const double smoothing : ContinuationSmoothings(scene)) {
+    Scene stage = scene;
+    stage.material.finite_volume.bending_friction_smoothing = smoothing;
+    Model stage_model = BuildModel(stage);
+    assert(stage_model.positions.size() == model.positions.size());
+    stage_model.positions = model.positions;
+    SolverOptions options = OptionsFor(stage, method);
+    options.on_iteration = [&](const IterationRecord& record) {
+      return !on_iteration || on_iteration(record);
+    };
+    std::unique_ptr<HessianWorkspace> workspace;
+    if (stage_model.num_free_dofs() > 0 && info.uses_hessian_workspace) {
+      workspace = std::make_unique<HessianWorkspace>(stage_model);
+    }
+    options.workspace = workspace.get();
+    const SolverSummary summary = info.make()->Solve(stage_model, options);
+    total.iterations += summary.iterations;
+    total.wall_time_s += summary.wall_time_s;
+    if (!AllFinite(stage_model.positions)) break;  // the scene's own solve starts from the last
+    model.positions = stage_model.positions;
+  }
+  return total;
+}
+
+RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
+                       const std::string& method,
+                       const std::function<bool(const IterationRecord&)>& on_iteration) {
+  const SolverInfo* const found = &info;
+  SolverOptions options = OptionsFor(scene, method);
   // Keeps the last finite iterate (an O(n) check and copy per iteration) for ReturnToLastFinite.
   LastFinite last;
   options.on_iteration = [&](const IterationRecord& record) {
@@ -131,12 +197,12 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   // the solve for a method that does not use it: it would only add to that method's memory).
   std::unique_ptr<HessianWorkspace> workspace;
   const bool has_free = model.num_free_dofs() > 0;
-  if (has_free && info->uses_hessian_workspace) {
+  if (has_free && found->uses_hessian_workspace) {
     workspace = std::make_unique<HessianWorkspace>(model);
   }
   options.workspace = workspace.get();
   RunResult result;
-  result.summary = info->make()->Solve(model, options);
+  result.summary = found->make()->Solve(model, options);
   result.summary.solver = method;
   const std::vector<double>* constraint =
       result.summary.constraint_forces.empty() ? nullptr : &result.summary.constraint_forces;
@@ -182,6 +248,26 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
     }
   } else if (!certificate.unsound.empty()) {
     termination += "; " + certificate.unsound;
+  }
+  return result;
+}
+
+}  // namespace
+
+RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
+                   const std::function<bool(const IterationRecord&)>& on_iteration) {
+  const SolverInfo* info = FindSolver(method);
+  if (!info) throw InputError(scene.solver.where, "unknown solver '" + method + "'");
+  const SolverSummary continuation = RunContinuation(scene, model, *info, method, on_iteration);
+  RunResult result = RunSolveOnce(scene, model, *info, method, on_iteration);
+  if (continuation.iterations > 0) {
+    result.summary.iterations += continuation.iterations;
+    result.summary.wall_time_s += continuation.wall_time_s;
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "; after %d iterations of continuation in the friction's smoothing from %g 1/m",
+                  continuation.iterations, kFrictionContinuationStart);
+    result.summary.termination += text;
   }
   return result;
 }
