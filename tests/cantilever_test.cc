@@ -25,6 +25,7 @@
 #include "src/model/finite_volume.h"
 #include "src/model/mesh.h"
 #include "src/solvers/run.h"
+#include "tests/rk4.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -65,21 +66,10 @@ class Elastica {
     dy[3] = std::sin(y[0]);
   }
   Shot Shoot(double root_curvature) const {
-    const int steps = 4000;
-    const double h = length_ / steps;
     double y[4] = {0.0, root_curvature, 0.0, 0.0};
-    for (int k = 0; k < steps; ++k) {
-      const double s = k * h;
-      double k1[4], k2[4], k3[4], k4[4], t[4];
-      Derivative(s, y, k1);
-      for (int i = 0; i < 4; ++i) t[i] = y[i] + 0.5 * h * k1[i];
-      Derivative(s + 0.5 * h, t, k2);
-      for (int i = 0; i < 4; ++i) t[i] = y[i] + 0.5 * h * k2[i];
-      Derivative(s + 0.5 * h, t, k3);
-      for (int i = 0; i < 4; ++i) t[i] = y[i] + h * k3[i];
-      Derivative(s + h, t, k4);
-      for (int i = 0; i < 4; ++i) y[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-    }
+    testing::IntegrateRk4<4>(
+        [this](double s, const double* state, double* rate) { Derivative(s, state, rate); },
+        length_, 4000, y);
     return {y[2], y[3], y[1]};
   }
   double length_, q_, p_;

@@ -22,6 +22,7 @@
 #include "src/model/model.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/solvers/run.h"
+#include "tests/rk4.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -124,21 +125,10 @@ class FrictionCantilever {
     dy[3] = std::sin(y[0]);
   }
   Shot Shoot(double root_moment) const {
-    const int steps = 20000;
-    const double ds = length_ / steps;
     double y[4] = {0.0, root_moment, 0.0, 0.0};
-    for (int k = 0; k < steps; ++k) {
-      const double s = k * ds;
-      double k1[4], k2[4], k3[4], k4[4], t[4];
-      Derivative(s, y, k1);
-      for (int i = 0; i < 4; ++i) t[i] = y[i] + 0.5 * ds * k1[i];
-      Derivative(s + 0.5 * ds, t, k2);
-      for (int i = 0; i < 4; ++i) t[i] = y[i] + 0.5 * ds * k2[i];
-      Derivative(s + 0.5 * ds, t, k3);
-      for (int i = 0; i < 4; ++i) t[i] = y[i] + ds * k3[i];
-      Derivative(s + ds, t, k4);
-      for (int i = 0; i < 4; ++i) y[i] += ds / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-    }
+    testing::IntegrateRk4<4>(
+        [this](double s, const double* state, double* rate) { Derivative(s, state, rate); },
+        length_, 20000, y);
     return {y[2], y[3], y[1]};
   }
   double length_, w_, h_;
