@@ -1,6 +1,7 @@
 #include "src/model/contact.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cctype>
 #include <cmath>
@@ -290,7 +291,8 @@ contact: {thickness: 0.001}
 solver: {method: newton, tolerance: 1.0e-8, max_iterations: 3000}
 )";
     const std::filesystem::path path =
-        std::filesystem::temp_directory_path() / "drape_small_limp_tester.yaml";
+        std::filesystem::temp_directory_path() /
+        ("drape_small_limp_tester_" + std::to_string(::getpid()) + ".yaml");
     std::ofstream(path) << text;
     const Scene scene = LoadScene(path.string());
     std::filesystem::remove(path);

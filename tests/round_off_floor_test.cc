@@ -3,6 +3,7 @@
 #include "src/numerics/round_off_floor.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -36,7 +37,10 @@ loads:
   gravity: [0, 0, -9.81]
 solver: {method: newton, tolerance: 1.0e-10, max_iterations: 1000}
 )";
-  const auto path = std::filesystem::temp_directory_path() / "drape_floor_cable.yaml";
+  // One file per process and test: ctest -j2 runs this file's tests side by side.
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("drape_floor_cable_" + std::to_string(::getpid()) + "_" +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".yaml");
   std::ofstream(path) << text;
   Scene scene = LoadScene(path.string());
   std::filesystem::remove(path);
