@@ -84,13 +84,16 @@ double RestDistance(const Mesh& mesh, int a, int b) {
   return (mesh.nodes[b] - mesh.nodes[a]).norm();
 }
 
-// The friction term of one direction of control volume `nodes[1]` (none without friction).
+// The friction term of one direction of control volume `nodes[1]` (none without friction). Its
+// least-squares shift (src/model/term.h), H A / l, the energy at a curvature of 1/l, keeps the
+// ceres-* solvers' residual √(2 (E + shift)) smooth at the flat state, where E = 0.
 void AddBendingFriction(double friction, const FiniteVolumeSpec& spec,
                         const std::vector<int>& nodes, double size, double area, Model* model) {
   if (!(friction > 0.0)) return;
   model->terms.push_back(
       MakeTerm("fv_bending_friction", nodes,
-               FvBendingFriction::Create(friction, size, area, spec.bending_friction_smoothing)));
+               FvBendingFriction::Create(friction, size, area, spec.bending_friction_smoothing),
+               friction * area / size));
 }
 
 // A single row (or column) of nodes: a strip bending in one direction. Each link's membrane
