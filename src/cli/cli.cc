@@ -628,7 +628,9 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
                    "solve N drops of the scene's drape test, seeded perturbations of the "
                    "specimen's placement and waviness (default: drape_test.drops)")
       ->check(CLI::Range(1, 10000));
-  solve->add_option("--threads", arguments.threads, kLocalThreadsHelp)
+  solve
+      ->add_option("--threads", arguments.threads,
+                   std::string("with --drops, the drops' ") + kLocalThreadsHelp)
       ->check(kThreadCount)
       ->capture_default_str();
   solve->footer(kExitStatus);
