@@ -99,12 +99,6 @@ AngularWave DrawWave(const DrapeTestSpec& test, int drop) {
 
 std::string Cell(double value) { return FormatNumber(value); }
 
-std::string DropFolder(const std::string& directory, int drop, int drops) {
-  char name[16];
-  std::snprintf(name, sizeof name, "%0*d", drops < 100 ? 2 : (drops < 1000 ? 3 : 4), drop);
-  return (fs::path(directory) / "drops" / name).string();
-}
-
 // A farm task's result: the drops.csv row, then a line with the outline (centre, radii).
 std::string TaskResult(const DropRecord& record, const DropOutline& outline) {
   std::string text = DropCsvRow(record) + "\n" + FormatNumber(outline.centre.x(), 10) + " " +
@@ -128,7 +122,8 @@ std::string SolveDrop(const Scene& scene, const DropsOptions& options, int drop)
   record.waviness = drop_scene.drape_test->waviness;
   Model model = BuildModel(drop_scene);
   AddDropWaviness(drop_scene, drop, &model);
-  const std::string folder = DropFolder(options.directory, drop, options.drops);
+  const std::string folder =
+      (fs::path(options.directory) / DropFolderName(drop, options.drops)).string();
   ResultFolderLock lock(folder);
   const SolveReport report = SolveAndReport(drop_scene, model, drop_scene.solver.method, {},
                                             /*automatic_levels=*/false);
@@ -207,6 +202,12 @@ void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const Dr
 }
 
 }  // namespace
+
+std::string DropFolderName(int drop, int drops) {
+  char name[16];
+  std::snprintf(name, sizeof name, "%0*d", drops < 100 ? 2 : (drops < 1000 ? 3 : 4), drop);
+  return std::string("drops/") + name;
+}
 
 Scene DropScene(const Scene& scene, int drop, Eigen::Vector2d* offset) {
   Scene drop_scene = scene;
@@ -306,6 +307,7 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   std::vector<int> tasks(options.drops);
   for (int k = 0; k < options.drops; ++k) tasks[k] = k;
   std::vector<std::string> rows(options.drops);
+  std::vector<DropRecord> records(options.drops);
   std::vector<DropOutline> outlines(options.drops);
   int finished = 0;
   TaskFarmOptions farm_options;
@@ -316,7 +318,8 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
         const size_t end = result.find('\n');
         rows[task] = result.substr(0, end);
         outlines[task] = ParseOutline(result.substr(end + 1));
-        const DropRecord record = ParseDropCsvRow(rows[task]);
+        records[task] = ParseDropCsvRow(rows[task]);
+        const DropRecord& record = records[task];
         char text[96];
         std::snprintf(text, sizeof text,
                       "drop %d (%d of %d done): drape coefficient %.3f, %d folds, ", record.drop,
@@ -328,7 +331,7 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   summary.coordinator = farm.coordinator;
   summary.workers = farm.workers;
   if (!farm.coordinator) return summary;
-  for (const std::string& row : rows) summary.drops.push_back(ParseDropCsvRow(row));
+  summary.drops = records;
   summary.outlines = outlines;
   summary.statistics = ComputeDropStatistics(summary.drops);
   const fs::path directory(options.directory);

@@ -82,6 +82,9 @@ struct DropsSummary {
 // solved on one level. `scene.drape_test` must be set.
 Scene DropScene(const Scene& scene, int drop, Eigen::Vector2d* offset = nullptr);
 
+// A drop's folder, relative to OUT: drops/07 (2 digits below 100 drops, then 3, then 4).
+std::string DropFolderName(int drop, int drops);
+
 // Adds drop `drop`'s initial waviness to the model's free nodes beyond the disc's rim.
 void AddDropWaviness(const Scene& drop_scene, int drop, Model* model);
 

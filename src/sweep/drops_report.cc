@@ -271,15 +271,13 @@ void WriteDropsTable(const DropsSummary& summary, std::ostream& html) {
           "<th>folds</th><th>energy (J)</th><th>counted</th><th>state</th><th>files</th></tr>\n";
   for (size_t k = 0; k < summary.drops.size(); ++k) {
     const DropRecord& d = summary.drops[k];
-    char folder[16];
-    std::snprintf(folder, sizeof folder, "%0*d",
-                  summary.drops.size() < 100 ? 2 : (summary.drops.size() < 1000 ? 3 : 4), d.drop);
+    const std::string folder = DropFolderName(d.drop, static_cast<int>(summary.drops.size()));
     html << "<tr><td><span style=\"color:" << Colour(static_cast<int>(k)) << "\">&#9632;</span> "
          << d.drop << "</td><td>(" << Fixed(1e3 * d.offset.x(), 2) << ", "
          << Fixed(1e3 * d.offset.y(), 2) << ")</td><td>" << Fixed(d.drape_coefficient, 3)
          << "</td><td>" << d.folds << "</td><td>" << FormatNumber(d.energy, 6) << "</td><td>"
-         << (d.counted ? "yes" : "no") << "</td><td>" << HtmlText(d.state)
-         << "</td><td><a href=\"drops/" << folder << "/\">drops/" << folder << "</a></td></tr>\n";
+         << (d.counted ? "yes" : "no") << "</td><td>" << HtmlText(d.state) << "</td><td><a href=\""
+         << folder << "/\">" << folder << "</a></td></tr>\n";
   }
   html << "</table>\n";
 }
