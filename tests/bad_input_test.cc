@@ -21,32 +21,20 @@
 #include <string>
 #include <vector>
 
+#include "tests/run_program.h"
 #include "tests/test_paths.h"
 
 namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::DrapeCommand;
+using testing::ProgramOutcome;
+using testing::ReadText;
+using testing::RunProgram;
+using testing::ShellQuoted;
 
 const fs::path kBadFolder = fs::path(drape_tests::kSourceDir) / "tests" / "data" / "bad";
-
-struct Outcome {
-  int exit_status = -1;
-  std::string err;
-};
-
-std::string ShellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 // The fixtures, by file stem.
 std::vector<std::string> BadScenes() {
@@ -108,17 +96,8 @@ class BadInputTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(scratch_); }
 
-  Outcome Drape(const std::vector<std::string>& args) const {
-    std::string command = ShellQuoted(drape_tests::kDrapeBinary);
-    for (const auto& arg : args) command += " " + ShellQuoted(arg);
-    const fs::path err = scratch_ / "stderr.txt";
-    command += " > /dev/null 2> " + ShellQuoted(err.string());
-    const int status = std::system(command.c_str());
-    Outcome outcome;
-    outcome.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    outcome.err = ReadText(err);
-    fs::remove(err);
-    return outcome;
+  ProgramOutcome Drape(const std::vector<std::string>& args) const {
+    return RunProgram(DrapeCommand(args), scratch_);
   }
 
   // `drape check` and `drape solve --out` both reject `scene` with exit 2, a stderr line holding
@@ -131,7 +110,7 @@ class BadInputTest : public ::testing::Test {
     solve.insert(solve.end(), extra.begin(), extra.end());
     for (const auto& args : {check, solve}) {
       SCOPED_TRACE(args[0]);
-      const Outcome outcome = Drape(args);
+      const ProgramOutcome outcome = Drape(args);
       EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
       EXPECT_TRUE(HasLine(outcome.err, expected, later))
           << "expected '" << expected << "'" << (later.empty() ? "" : " ... '" + later + "'")
@@ -159,7 +138,7 @@ TEST_P(BadSceneFileTest, IsRejectedWithALocatedMessageAndNothingWritten) {
     expected = expected.substr(0, gap + 1);
   }
   ExpectRejected(scene.string(), scene.string() + ":" + expected, {}, later);
-  const Outcome outcome = Drape({"check", scene.string()});
+  const ProgramOutcome outcome = Drape({"check", scene.string()});
   EXPECT_TRUE(HasLocatedLine(outcome.err, scene.string())) << outcome.err;
   // Nothing lands next to the scene either (its default output folder).
   EXPECT_FALSE(fs::exists(kBadFolder / "out"));
@@ -233,7 +212,7 @@ TEST_F(BadInputTest, ARunThatStopsBeingFiniteSavesItsLastFiniteIterate) {
                           "fixed:\n  - nodes: {ids: [0, 4]}\n"
                           "loads: {gravity: [0, 0, -9.81]}\n"
                           "solver: {method: explicit-euler, explicit-euler: {dt: 100}}\n";
-  const Outcome outcome = Drape({"solve", scene.string(), "--out", out_.string()});
+  const ProgramOutcome outcome = Drape({"solve", scene.string(), "--out", out_.string()});
   EXPECT_EQ(outcome.exit_status, 1) << outcome.err;
   const std::string summary = ReadText(out_ / "summary.json");
   EXPECT_NE(summary.find("\"termination\": \"non-finite state: explicit-euler produced a "
@@ -296,7 +275,7 @@ TEST_F(BadInputTest, FitWithAMissingSceneIsLocatedInTheFitFile) {
                         "bounds: [1, 1000]}\n"
                         "measurements:\n  - positions: {file: nodes.csv}\n";
   std::ofstream(scratch_ / "nodes.csv") << "id,x,y,z\n0,0,0,0\n";
-  const Outcome outcome = Drape({"fit", fit.string(), "--out", out_.string()});
+  const ProgramOutcome outcome = Drape({"fit", fit.string(), "--out", out_.string()});
   EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
   EXPECT_TRUE(HasLine(outcome.err, fit.string() + ":1:8: scene: cannot read the scene file",
                       "no such file"))
@@ -326,7 +305,7 @@ TEST_F(BadInputTest, CompareRefusesBadScenesAndArguments) {
                                      "--out",   out_.string(), "--no-plots"};
     args.insert(args.end(), extra.begin(), extra.end());
     SCOPED_TRACE(extra.back());
-    const Outcome outcome = Drape(args);
+    const ProgramOutcome outcome = Drape(args);
     EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
     EXPECT_NE(outcome.err.find(expected), std::string::npos) << outcome.err;
     EXPECT_FALSE(fs::exists(out_ / "report.md"));

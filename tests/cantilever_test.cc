@@ -31,8 +31,6 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 struct ElasticaTip {
   double x = 0.0, z = 0.0;  // tip position relative to the clamp, m (z < 0 downwards)
   double root_curvature = 0.0;
@@ -201,14 +199,14 @@ double ExactRatioAtAngle(double theta) {
 // Checked here against the exact elastica over the range of angles used in practice.
 TEST(Cantilever, PeirceFormulaAgreesWithExactElastica) {
   for (double degrees : {10.0, 20.0, 30.0, 41.5, 50.0, 60.0}) {
-    const double theta = degrees * kPi / 180.0;
+    const double theta = degrees * M_PI / 180.0;
     const double peirce = std::cbrt(std::cos(theta / 2) / (8 * std::tan(theta)));  // c/l
     const double exact = 1.0 / ExactRatioAtAngle(theta);
     std::printf("theta %5.1f deg: c/l Peirce %.5f, exact elastica %.5f (%.2f%%)\n", degrees, peirce,
                 exact, 100 * (peirce / exact - 1));
   }
   // At 41.5° the exact elastica gives c = l/2 (to 0.02 %); Peirce's fit is 1.9 % high there.
-  const double theta = 41.5 * kPi / 180.0;
+  const double theta = 41.5 * M_PI / 180.0;
   const double exact = 1.0 / ExactRatioAtAngle(theta);
   EXPECT_NEAR(exact, 0.5, 0.001);
   EXPECT_NEAR(std::cbrt(std::cos(theta / 2) / (8 * std::tan(theta))) / exact, 1.0, 0.02);
@@ -225,7 +223,7 @@ TEST(Cantilever, FlapAngleMatchesExactElastica) {
   const double exact = ExactChordAngle(r.length / c);
   const double model = ChordAngle(r.tip_x, r.tip_z);
   std::printf("l/c = %.4f: flap angle %.3f deg, exact elastica %.3f deg\n", r.length / c,
-              model * 180 / kPi, exact * 180 / kPi);
+              model * 180 / M_PI, exact * 180 / M_PI);
   EXPECT_NEAR(model / exact, 1.0, 0.01);
 }
 

@@ -23,31 +23,17 @@
 #include "src/output/version.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/solvers/solver.h"
+#include "tests/run_program.h"
 #include "tests/test_paths.h"
 
 namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int exit_status = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-std::string ShellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
+using testing::DrapeCommand;
+using testing::ProgramOutcome;
+using testing::ReadText;
+using testing::RunProgram;
 
 // A small 2-D chain that ceres-lbfgs solves in well under a second.
 constexpr char kChainScene[] = R"(name: cli-chain
@@ -104,19 +90,8 @@ class CliTest : public ::testing::Test {
     return path.string();
   }
 
-  Outcome Drape(const std::vector<std::string>& args) const {
-    std::string command = ShellQuoted(drape_tests::kDrapeBinary);
-    for (const auto& arg : args) command += " " + ShellQuoted(arg);
-    const fs::path out = directory_ / "stdout.txt", err = directory_ / "stderr.txt";
-    command += " > " + ShellQuoted(out.string()) + " 2> " + ShellQuoted(err.string());
-    const int status = std::system(command.c_str());
-    Outcome outcome;
-    outcome.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    outcome.out = ReadFile(out);
-    outcome.err = ReadFile(err);
-    fs::remove(out);
-    fs::remove(err);
-    return outcome;
+  ProgramOutcome Drape(const std::vector<std::string>& args) const {
+    return RunProgram(DrapeCommand(args), directory_);
   }
 
   YAML::Node Summary(const fs::path& folder) const {
@@ -128,7 +103,7 @@ class CliTest : public ::testing::Test {
 };
 
 TEST_F(CliTest, SolversListsEveryMethod) {
-  const Outcome outcome = Drape({"solvers"});
+  const ProgramOutcome outcome = Drape({"solvers"});
   EXPECT_EQ(outcome.exit_status, 0);
   EXPECT_NE(outcome.out.find("ceres-lbfgs"), std::string::npos);
   for (const auto& info : AllSolvers()) {
@@ -138,7 +113,7 @@ TEST_F(CliTest, SolversListsEveryMethod) {
 
 TEST_F(CliTest, HelpExitsZero) {
   for (const char* help : {"help", "--help", "-h"}) {
-    const Outcome outcome = Drape({help});
+    const ProgramOutcome outcome = Drape({help});
     EXPECT_EQ(outcome.exit_status, 0) << help;
     EXPECT_NE(outcome.out.find("drape solve"), std::string::npos) << help;
   }
@@ -147,13 +122,13 @@ TEST_F(CliTest, HelpExitsZero) {
 // Every command has --help (its options, with defaults where they have one) on stdout, exit 0.
 TEST_F(CliTest, EveryCommandHasHelpThatExitsZero) {
   for (const char* command : {"solve", "check", "solvers", "compare", "fit", "sweep"}) {
-    const Outcome outcome = Drape({command, "--help"});
+    const ProgramOutcome outcome = Drape({command, "--help"});
     EXPECT_EQ(outcome.exit_status, 0) << command << outcome.err;
     EXPECT_NE(outcome.out.find(std::string("Usage: drape ") + command), std::string::npos)
         << outcome.out;
     EXPECT_EQ(outcome.err, "") << command;
   }
-  const Outcome compare = Drape({"compare", "-h"});
+  const ProgramOutcome compare = Drape({"compare", "-h"});
   EXPECT_NE(compare.out.find("--repeat"), std::string::npos) << compare.out;
   EXPECT_NE(compare.out.find("=60"), std::string::npos) << "the --time-limit default";
   EXPECT_NE(Drape({"fit", "--help"}).out.find("--set"), std::string::npos);
@@ -182,7 +157,7 @@ std::vector<std::string> SectionWords(const std::string& help, const std::string
 // The completion script is generated from the parser: every subcommand `drape --help` lists, and
 // every option its own --help lists, is offered; bash completes with it.
 TEST_F(CliTest, BashCompletionListsEverySubcommandAndOption) {
-  const Outcome script = Drape({"completion", "bash"});
+  const ProgramOutcome script = Drape({"completion", "bash"});
   ASSERT_EQ(script.exit_status, 0) << script.err;
   const std::vector<std::string> commands = SectionWords(Drape({"--help"}).out, "Subcommands:");
   ASSERT_GE(commands.size(), 7u);
@@ -212,7 +187,7 @@ TEST_F(CliTest, BashCompletionListsEverySubcommandAndOption) {
                                 "); COMP_CWORD=" + std::to_string(current) +
                                 "; _drape; echo \"${COMPREPLY[*]}\"' > " + out.string();
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
-    return ReadFile(out);
+    return ReadText(out);
   };
   EXPECT_EQ(complete("drape so", 1), "solve solvers\n");
   EXPECT_EQ(complete("drape compare --no", 2), "--no-plots\n");
@@ -222,7 +197,7 @@ TEST_F(CliTest, BashCompletionListsEverySubcommandAndOption) {
 }
 
 TEST_F(CliTest, VersionExitsZeroWithTheProjectVersion) {
-  const Outcome outcome = Drape({"--version"});
+  const ProgramOutcome outcome = Drape({"--version"});
   EXPECT_EQ(outcome.exit_status, 0) << outcome.err;
   EXPECT_EQ(outcome.out, "drape " + DrapeVersion() + "\n");
   EXPECT_EQ(outcome.out.rfind("drape 0.", 0), 0u) << outcome.out;
@@ -234,8 +209,8 @@ TEST_F(CliTest, DoubleDashBeforeAFileNameStartingWithADash) {
   fs::copy_file(WriteScene(), dashed);
   const fs::path previous = fs::current_path();
   fs::current_path(directory_);
-  const Outcome outcome = Drape({"check", "--set", "mesh.nodes=6", "--", "-scene.yaml"});
-  const Outcome without = Drape({"check", "-scene.yaml"});
+  const ProgramOutcome outcome = Drape({"check", "--set", "mesh.nodes=6", "--", "-scene.yaml"});
+  const ProgramOutcome without = Drape({"check", "-scene.yaml"});
   fs::current_path(previous);
   EXPECT_EQ(outcome.exit_status, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("6 nodes"), std::string::npos) << outcome.out;
@@ -245,8 +220,8 @@ TEST_F(CliTest, DoubleDashBeforeAFileNameStartingWithADash) {
 // compare: the result line on stdout, the progress on stderr.
 TEST_F(CliTest, CompareWritesItsResultLineToStdout) {
   const fs::path report = directory_ / "report";
-  const Outcome outcome = Drape({"compare", WriteScene(), "--solvers", "ceres-lbfgs", "--out",
-                                 report.string(), "--no-plots"});
+  const ProgramOutcome outcome = Drape({"compare", WriteScene(), "--solvers", "ceres-lbfgs",
+                                        "--out", report.string(), "--no-plots"});
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
   EXPECT_EQ(outcome.out, "report: " + (report / "report.md").string() + "\n");
   EXPECT_NE(outcome.err.find("ceres-lbfgs"), std::string::npos) << outcome.err;
@@ -261,11 +236,11 @@ TEST_F(CliTest, FitTakesSceneOverrides) {
       << "scene: scene.yaml\nparameters:\n  - {key: material.springs.structural, initial: 50, "
          "bounds: [1, 1000], log: true}\nmeasurements:\n  - positions: {file: measured.csv}\n";
   const std::string fit = (directory_ / "fit.yaml").string();
-  const Outcome bad = Drape({"fit", fit, "--set", "material.springs.bogus=1"});
+  const ProgramOutcome bad = Drape({"fit", fit, "--set", "material.springs.bogus=1"});
   EXPECT_EQ(bad.exit_status, 2);
   EXPECT_NE(bad.err.find("--set:1:"), std::string::npos) << bad.err;
   EXPECT_NE(bad.err.find("bogus"), std::string::npos) << bad.err;
-  const Outcome check = Drape({"fit", fit, "--set", "mesh.nodes=2", "--out", out_.string()});
+  const ProgramOutcome check = Drape({"fit", fit, "--set", "mesh.nodes=2", "--out", out_.string()});
   EXPECT_EQ(check.exit_status, 2) << "node 2 is not in a 2-node chain: " << check.err;
   EXPECT_FALSE(fs::exists(out_));
 }
@@ -274,7 +249,7 @@ TEST_F(CliTest, FitTakesSceneOverrides) {
 // and the scene as solved.
 TEST_F(CliTest, ResultFolderRecordsItsProvenance) {
   const std::string scene = WriteScene();
-  const Outcome outcome =
+  const ProgramOutcome outcome =
       Drape({"solve", scene, "--set", "mesh.nodes=7", "--set", "material.springs.structural=60"});
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
   const YAML::Node summary = Summary(out_);
@@ -301,17 +276,18 @@ TEST_F(CliTest, ResultFolderRecordsItsProvenance) {
   EXPECT_EQ(solved["material"]["springs"]["structural"]["warp"].as<double>(), 60.0);
   EXPECT_EQ(solved["solver"]["method"].as<std::string>(), "ceres-lbfgs");
   // Solving the written scene again gives the same nodes.
-  const Outcome again =
+  const ProgramOutcome again =
       Drape({"solve", (out_ / "scene.yaml").string(), "--out", (directory_ / "again").string()});
   ASSERT_EQ(again.exit_status, 0) << again.err;
-  EXPECT_EQ(ReadFile(directory_ / "again" / "nodes.csv"), ReadFile(out_ / "nodes.csv"));
+  EXPECT_EQ(ReadText(directory_ / "again" / "nodes.csv"), ReadText(out_ / "nodes.csv"));
 }
 
 // KES inputs: summary.json and `drape check` give the SI values they were converted to.
 TEST_F(CliTest, KesInputsAreReportedInSiUnits) {
   const std::string scene =
       std::string(drape_tests::kSourceDir) + "/configs/fv/drape_tester_cotton_24.yaml";
-  const Outcome check = Drape({"check", scene, "--set", "material.finite_volume.kes.B_warp=0.2"});
+  const ProgramOutcome check =
+      Drape({"check", scene, "--set", "material.finite_volume.kes.B_warp=0.2"});
   ASSERT_EQ(check.exit_status, 0) << check.err;
   EXPECT_NE(check.out.find("D_warp " + FormatNumber(KesBendingRigidity(0.2), 6) + " N*m"),
             std::string::npos)
@@ -319,8 +295,8 @@ TEST_F(CliTest, KesInputsAreReportedInSiUnits) {
   EXPECT_NE(check.out.find("density " + FormatNumber(KesArealDensity(12.0), 6) + " kg/m^2"),
             std::string::npos)
       << check.out;
-  const Outcome solve = Drape({"solve", scene, "--out", out_.string(), "--set",
-                               "solver.max_iterations=1", "--set", "mesh.spacing=0.03"});
+  const ProgramOutcome solve = Drape({"solve", scene, "--out", out_.string(), "--set",
+                                      "solver.max_iterations=1", "--set", "mesh.spacing=0.03"});
   ASSERT_NE(solve.exit_status, 2) << solve.err;
   const YAML::Node material = Summary(out_)["material_si"];
   EXPECT_EQ(material["D_warp"].as<double>(), KesBendingRigidity(0.12));
@@ -345,7 +321,7 @@ TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {
       {"fit", scene, "--solver", "newton"},
   };
   for (const auto& args : mistakes) {
-    const Outcome outcome = Drape(args);
+    const ProgramOutcome outcome = Drape(args);
     std::string joined;
     for (const auto& arg : args) joined += arg + " ";
     EXPECT_EQ(outcome.exit_status, 2) << joined;
@@ -356,7 +332,7 @@ TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {
 
 // `drape fit` itself is tested in tests/fit_*_test.cc; here only its bad-input path.
 TEST_F(CliTest, FitWithAMissingFitFileIsBadInput) {
-  const Outcome outcome = Drape({"fit", "x.yaml"});
+  const ProgramOutcome outcome = Drape({"fit", "x.yaml"});
   EXPECT_EQ(outcome.exit_status, 2);
   EXPECT_NE(outcome.err.find("cannot read the fit file"), std::string::npos);
 }
@@ -365,28 +341,28 @@ TEST_F(CliTest, CompareWithoutScenesOrWithAnUnknownSolverIsBadUsage) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"compare"},
         std::vector<std::string>{"compare", WriteScene(), "--solvers", "no-such-method"}}) {
-    const Outcome outcome = Drape(args);
+    const ProgramOutcome outcome = Drape(args);
     EXPECT_EQ(outcome.exit_status, 2) << outcome.err;
   }
   EXPECT_FALSE(fs::exists(out_));
 }
 
 TEST_F(CliTest, UnknownSolverExitsTwoListingTheMethods) {
-  const Outcome outcome = Drape({"solve", WriteScene(), "--solver", "no-such-method"});
+  const ProgramOutcome outcome = Drape({"solve", WriteScene(), "--solver", "no-such-method"});
   EXPECT_EQ(outcome.exit_status, 2);
   EXPECT_NE(outcome.err.find("ceres-lbfgs"), std::string::npos) << outcome.err;
   EXPECT_FALSE(fs::exists(out_));
 }
 
 TEST_F(CliTest, MissingSceneFileExitsTwo) {
-  const Outcome outcome = Drape({"solve", (directory_ / "absent.yaml").string()});
+  const ProgramOutcome outcome = Drape({"solve", (directory_ / "absent.yaml").string()});
   EXPECT_EQ(outcome.exit_status, 2);
   EXPECT_NE(outcome.err.find("absent.yaml"), std::string::npos) << outcome.err;
 }
 
 TEST_F(CliTest, BadSceneExitsTwoWithALocatedMessageAndWritesNothing) {
   const std::string scene = WriteScene({{"structural: 50", "structural: -50"}});
-  const Outcome outcome = Drape({"solve", scene});
+  const ProgramOutcome outcome = Drape({"solve", scene});
   EXPECT_EQ(outcome.exit_status, 2);
   // One line: "file:line:column: key.path: what is wrong".
   EXPECT_TRUE(std::regex_search(outcome.err, std::regex("scene\\.yaml:[0-9]+:[0-9]+: ")))
@@ -396,7 +372,7 @@ TEST_F(CliTest, BadSceneExitsTwoWithALocatedMessageAndWritesNothing) {
 }
 
 TEST_F(CliTest, SolveConvergesAndWritesEveryRequestedFile) {
-  const Outcome outcome = Drape({"solve", WriteScene()});
+  const ProgramOutcome outcome = Drape({"solve", WriteScene()});
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
   for (const char* name : {"summary.json", "nodes.csv", "history.csv", "mesh.vtk", "mesh.obj"}) {
     EXPECT_TRUE(fs::exists(out_ / name)) << name;
@@ -416,8 +392,8 @@ TEST_F(CliTest, SolveConvergesAndWritesEveryRequestedFile) {
 TEST_F(CliTest, LevelsReportEachLevelAndTheExtrapolation) {
   const std::string scene =
       std::string(drape_tests::kSourceDir) + "/configs/fv/cantilever_tip.yaml";
-  const Outcome outcome = Drape({"solve", scene, "--out", out_.string(), "--set",
-                                 "mesh.nodes=[41, 1]", "--set", "solver.levels=3"});
+  const ProgramOutcome outcome = Drape({"solve", scene, "--out", out_.string(), "--set",
+                                        "mesh.nodes=[41, 1]", "--set", "solver.levels=3"});
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
   const YAML::Node summary = Summary(out_);
   ASSERT_EQ(summary["levels"].size(), 3u);
@@ -458,7 +434,7 @@ TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
                                           "mesh.spacing=0.0125"};
   std::vector<std::string> solve = {"solve", scene, "--out", out_.string()};
   solve.insert(solve.end(), small.begin(), small.end());
-  const Outcome outcome = Drape(solve);
+  const ProgramOutcome outcome = Drape(solve);
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
   const YAML::Node summary = Summary(out_);
   ASSERT_EQ(summary["levels"].size(), 2u);
@@ -484,7 +460,7 @@ TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
   std::vector<std::string> one_level = {"solve",        scene,   "--out",
                                         plain.string(), "--set", "solver.levels=1"};
   one_level.insert(one_level.end(), small.begin(), small.end());
-  const Outcome one = Drape(one_level);
+  const ProgramOutcome one = Drape(one_level);
   ASSERT_EQ(one.exit_status, 0) << one.err;
   EXPECT_EQ(Summary(plain)["drape_coefficient"].as<double>(), fine);
   EXPECT_FALSE(Summary(plain)["levels"]);
@@ -493,7 +469,7 @@ TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
 
 // A mesh that cannot be coarsened: exit 2, the error located at the key, nothing written.
 TEST_F(CliTest, LevelsOnAChainExitTwoAtTheKey) {
-  const Outcome outcome = Drape({"solve", WriteScene(), "--set", "solver.levels=2"});
+  const ProgramOutcome outcome = Drape({"solve", WriteScene(), "--set", "solver.levels=2"});
   EXPECT_EQ(outcome.exit_status, 2);
   EXPECT_TRUE(std::regex_search(
       outcome.err, std::regex("--set:1:[0-9]+: solver\\.levels: 2 needs a grid or circle mesh")))
@@ -502,7 +478,7 @@ TEST_F(CliTest, LevelsOnAChainExitTwoAtTheKey) {
 }
 
 TEST_F(CliTest, IterationLimitExitsOneAndStillWritesTheResult) {
-  const Outcome outcome = Drape({"solve", WriteScene(), "--set", "solver.max_iterations=1"});
+  const ProgramOutcome outcome = Drape({"solve", WriteScene(), "--set", "solver.max_iterations=1"});
   EXPECT_EQ(outcome.exit_status, 1) << outcome.err;
   const YAML::Node summary = Summary(out_);
   EXPECT_FALSE(summary["converged"].as<bool>());
@@ -513,8 +489,8 @@ TEST_F(CliTest, IterationLimitExitsOneAndStillWritesTheResult) {
 
 TEST_F(CliTest, OutAndSetOverrideTheScene) {
   const fs::path elsewhere = directory_ / "elsewhere";
-  const Outcome outcome = Drape({"solve", WriteScene(), "--out", elsewhere.string(), "--set",
-                                 "mesh.nodes=7", "--set", "solver.tolerance=1e-6"});
+  const ProgramOutcome outcome = Drape({"solve", WriteScene(), "--out", elsewhere.string(), "--set",
+                                        "mesh.nodes=7", "--set", "solver.tolerance=1e-6"});
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
   EXPECT_FALSE(fs::exists(out_));
   const YAML::Node summary = Summary(elsewhere);
@@ -523,7 +499,7 @@ TEST_F(CliTest, OutAndSetOverrideTheScene) {
 }
 
 TEST_F(CliTest, SolverFlagOverridesTheMethod) {
-  const Outcome outcome =
+  const ProgramOutcome outcome =
       Drape({"solve", WriteScene(), "--solver", "ceres-lm", "--set", "solver.max_iterations=2"});
   EXPECT_NE(outcome.exit_status, 2) << outcome.err;
   EXPECT_EQ(Summary(out_)["solver"].as<std::string>(), "ceres-lm");
@@ -531,13 +507,14 @@ TEST_F(CliTest, SolverFlagOverridesTheMethod) {
 
 TEST_F(CliTest, UnwritableOutputFolderExitsTwo) {
   const std::string scene = WriteScene();
-  const Outcome outcome = Drape({"solve", scene, "--out", scene + "/results"});  // under a file
+  const ProgramOutcome outcome =
+      Drape({"solve", scene, "--out", scene + "/results"});  // under a file
   EXPECT_EQ(outcome.exit_status, 2);
   EXPECT_NE(outcome.err.find("cannot write"), std::string::npos) << outcome.err;
 }
 
 TEST_F(CliTest, CheckDescribesTheModelAndWritesNothing) {
-  const Outcome outcome = Drape({"check", WriteScene(), "--set", "mesh.nodes=6"});
+  const ProgramOutcome outcome = Drape({"check", WriteScene(), "--set", "mesh.nodes=6"});
   EXPECT_EQ(outcome.exit_status, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("6 nodes"), std::string::npos) << outcome.out;
   EXPECT_NE(outcome.out.find("structural"), std::string::npos) << outcome.out;
@@ -569,7 +546,7 @@ void ExpectInterruptSavesTheLastIterate(const fs::path& directory, const std::st
   int status = 0;
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFEXITED(status)) << "drape ended by a signal";
-  EXPECT_EQ(WEXITSTATUS(status), 1) << ReadFile(directory / "child_output.txt");
+  EXPECT_EQ(WEXITSTATUS(status), 1) << ReadText(directory / "child_output.txt");
   const YAML::Node summary = YAML::LoadFile((out / "summary.json").string());
   EXPECT_FALSE(summary["converged"].as<bool>());
   EXPECT_TRUE(summary["interrupted"].as<bool>());
@@ -592,11 +569,11 @@ TEST_F(CliTest, SigtermWritesTheLastIterateAndExitsOneLikeSigint) {
 // i.e. it was found only after building and solving).
 TEST_F(CliTest, UnwritableOutputFolderIsFoundBeforeTheModelIsBuilt) {
   const std::string scene = WriteScene({{"ids: [4]", "ids: [40]"}});  // out of range: a model error
-  const Outcome unbuildable = Drape({"solve", scene});
+  const ProgramOutcome unbuildable = Drape({"solve", scene});
   ASSERT_EQ(unbuildable.exit_status, 2);
   EXPECT_EQ(unbuildable.err.find("cannot write"), std::string::npos) << unbuildable.err;
   EXPECT_FALSE(fs::exists(out_)) << "a failed run leaves no folder behind";
-  const Outcome outcome = Drape({"solve", scene, "--out", "/proc/nope"});
+  const ProgramOutcome outcome = Drape({"solve", scene, "--out", "/proc/nope"});
   EXPECT_EQ(outcome.exit_status, 2);
   EXPECT_NE(outcome.err.find("cannot write the results"), std::string::npos) << outcome.err;
   EXPECT_EQ(outcome.out, "");
@@ -606,12 +583,12 @@ TEST_F(CliTest, UnwritableOutputFolderIsFoundBeforeTheModelIsBuilt) {
 // "saddle" with the eigenvalue (the flat curtain of Puiseux's paper, solved by his fixed point,
 // which has no curvature information: it used to exit 0).
 TEST_F(CliTest, StabilityIsOnTheResultLineAndASaddleExitsThree) {
-  const Outcome minimum = Drape({"solve", WriteScene()});
+  const ProgramOutcome minimum = Drape({"solve", WriteScene()});
   ASSERT_EQ(minimum.exit_status, 0) << minimum.err;
   EXPECT_NE(minimum.out.find("stable minimum"), std::string::npos) << minimum.out;
   EXPECT_FALSE(Summary(out_)["saddle"].as<bool>());
 
-  const Outcome saddle =
+  const ProgramOutcome saddle =
       Drape({"solve", std::string(drape_tests::kSourceDir) + "/configs/puiseux/curtain_3d.yaml",
              "--out", (directory_ / "curtain").string()});
   EXPECT_EQ(saddle.exit_status, 3) << saddle.out << saddle.err;
@@ -631,7 +608,7 @@ TEST_F(CliTest, ASecondRunIntoAHeldFolderIsRefusedBeforeItSolves) {
   const int other = ::open((out_ / ".drape.lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   ASSERT_GE(other, 0);
   ASSERT_EQ(::flock(other, LOCK_EX | LOCK_NB), 0);  // as the other run holds it
-  const Outcome refused = Drape({"solve", WriteScene()});
+  const ProgramOutcome refused = Drape({"solve", WriteScene()});
   ::close(other);
   EXPECT_EQ(refused.exit_status, 2);
   EXPECT_NE(refused.err.find("another drape run"), std::string::npos) << refused.err;
@@ -639,7 +616,8 @@ TEST_F(CliTest, ASecondRunIntoAHeldFolderIsRefusedBeforeItSolves) {
   EXPECT_EQ(refused.out, "");
   EXPECT_EQ(Summary(out_)["scene"].as<std::string>(), "the other run");
   EXPECT_FALSE(fs::exists(out_ / "nodes.csv"));
-  const Outcome after = Drape({"solve", WriteScene()});  // the lock released: a run goes through
+  const ProgramOutcome after =
+      Drape({"solve", WriteScene()});  // the lock released: a run goes through
   EXPECT_EQ(after.exit_status, 0) << after.err;
 }
 
@@ -662,7 +640,7 @@ TEST_F(CliTest, SweepIsListedByHelp) {
 TEST_F(CliTest, ABadSweepFileExitsTwoAndWritesNothing) {
   const std::string sweep = WriteSweepFile(
       directory_, "  material.finite_volume.kes.W: [8, 12]\n  material.densty: [1]\n");
-  const Outcome outcome = Drape({"sweep", sweep, "-o", out_.string()});
+  const ProgramOutcome outcome = Drape({"sweep", sweep, "-o", out_.string()});
   EXPECT_EQ(outcome.exit_status, 2);
   EXPECT_EQ(outcome.err.rfind(sweep + ":5:21: ", 0), 0u) << outcome.err;
   EXPECT_FALSE(fs::exists(out_));
@@ -671,7 +649,7 @@ TEST_F(CliTest, ABadSweepFileExitsTwoAndWritesNothing) {
 TEST_F(CliTest, SweepTaskIdComesFromTheSlurmArray) {
   const std::string sweep = WriteSweepFile(directory_, "  material.finite_volume.kes.W: [8, 12]\n");
   ::setenv("SLURM_ARRAY_TASK_ID", "1", 1);
-  const Outcome array = Drape({"sweep", sweep, "-o", out_.string(), "--task-id"});
+  const ProgramOutcome array = Drape({"sweep", sweep, "-o", out_.string(), "--task-id"});
   ::unsetenv("SLURM_ARRAY_TASK_ID");
   EXPECT_EQ(array.exit_status, 0) << array.err;
   EXPECT_NE(array.out.find("2 tasks; 1 solved"), std::string::npos) << array.out;
@@ -679,7 +657,7 @@ TEST_F(CliTest, SweepTaskIdComesFromTheSlurmArray) {
   EXPECT_FALSE(fs::exists(out_ / "tasks/0000"));
   EXPECT_NE(array.err.find("sweep: task 1"), std::string::npos) << array.err;
   // The rest of the sweep: task 0 solved, task 1 kept; every task converged, exit 0.
-  const Outcome rest = Drape({"sweep", sweep, "-o", out_.string(), "--no-plots"});
+  const ProgramOutcome rest = Drape({"sweep", sweep, "-o", out_.string(), "--no-plots"});
   EXPECT_EQ(rest.exit_status, 0) << rest.err;
   EXPECT_NE(rest.out.find("1 solved, 1 already done (skipped)"), std::string::npos) << rest.out;
   EXPECT_EQ(Drape({"sweep", sweep, "--task-id", "2"}).exit_status, 2);

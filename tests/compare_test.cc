@@ -11,22 +11,17 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/scene/scene_loader.h"
+#include "tests/run_program.h"
 #include "tests/test_paths.h"
 
 namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::ReadText;
 
 std::string SourcePath(const std::string& relative) {
   return (fs::path(drape_tests::kSourceDir) / relative).string();
-}
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 TEST(MeasurePositionError, IdenticalPositionsGiveZero) {
@@ -104,7 +99,7 @@ TEST(CompareScene, RunStoppedEarlyHasTheDirectlyComputedError) {
 }
 
 TEST(RunCompare, ReportKeepsRefusedAndUnconvergedRuns) {
-  const fs::path out = fs::path(testing::TempDir()) / "drape_compare_test";
+  const fs::path out = fs::path(::testing::TempDir()) / "drape_compare_test";
   fs::remove_all(out);
   CompareOptions options;
   // 20 x 20 nodes: 1,194 free dofs, above nlopt-slsqp's limit of 1,000.

@@ -8,7 +8,7 @@
 #include "tests/contact_checks.h"
 
 namespace drape {
-namespace {
+namespace cylinder_contact_test {
 
 constexpr double kClearance = 0.002, kStiffness = 4.0e6;
 
@@ -41,5 +41,5 @@ TEST(CylinderContact, ForcePushesOutwardWithMagnitudeKGapSquared) {
   testing::ExpectForcePushesOutward(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
-}  // namespace
+}  // namespace cylinder_contact_test
 }  // namespace drape

@@ -8,7 +8,7 @@
 #include "tests/contact_checks.h"
 
 namespace drape {
-namespace {
+namespace disk_contact_test {
 
 constexpr double kClearance = 0.002, kStiffness = 4.0e6;
 
@@ -39,5 +39,5 @@ TEST(DiskContact, ForcePushesOutwardWithMagnitudeKGapSquared) {
   testing::ExpectForcePushesOutward(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
-}  // namespace
+}  // namespace disk_contact_test
 }  // namespace drape

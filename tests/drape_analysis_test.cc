@@ -12,14 +12,12 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // A regular polygon of `sides` around the origin, as a fan of triangles (node 0 = centre).
 void Fan(int sides, double radius, double z, std::vector<double>* positions,
          std::vector<std::array<int, 3>>* triangles) {
   positions->assign({0.0, 0.0, z});
   for (int k = 0; k < sides; ++k) {
-    const double angle = 2.0 * kPi * k / sides;
+    const double angle = 2.0 * M_PI * k / sides;
     positions->insert(positions->end(), {radius * std::cos(angle), radius * std::sin(angle), z});
     triangles->push_back({0, 1 + k, 1 + (k + 1) % sides});
   }
@@ -37,7 +35,7 @@ TEST(ProjectedArea, FlatDiscIsThePolygonsArea) {
   std::vector<std::array<int, 3>> triangles;
   const int sides = 256;
   Fan(sides, 0.15, 0.0, &positions, &triangles);
-  const double exact = 0.5 * sides * 0.15 * 0.15 * std::sin(2.0 * kPi / sides);
+  const double exact = 0.5 * sides * 0.15 * 0.15 * std::sin(2.0 * M_PI / sides);
   const Shadow shadow = ProjectedArea(positions, triangles);
   EXPECT_NEAR(shadow.area, exact, shadow.error_bound);
   // The bound is honest but not loose by orders of magnitude.
@@ -84,7 +82,7 @@ TEST(DrapeCoefficient, RatioAndCusicksFormula) {
   }
   const DrapeCoefficient dc = ComputeDrapeCoefficient(model, 0.09);
   EXPECT_NEAR(dc.ratio, 0.64, 1e-3);
-  const double disc = kPi * 0.09 * 0.09;
+  const double disc = M_PI * 0.09 * 0.09;
   EXPECT_NEAR(dc.cusick, (0.64 * dc.flat_area - disc) / (dc.flat_area - disc), 2e-3);
   EXPECT_TRUE(std::isnan(ComputeDrapeCoefficient(model).cusick));
 }
@@ -105,12 +103,12 @@ TEST(RadialProfile, OfARegularPolygonIsItsClosedForm) {
   }
   const RadialProfile profile = ComputeRadialProfile(positions, triangles, {0.02, -0.01});
   ASSERT_EQ(profile.radius.size(), 360u);
-  const double side = 2.0 * kPi / sides;
+  const double side = 2.0 * M_PI / sides;
   for (int k = 0; k < 360; ++k) {
     const double theta = profile.theta[k];
-    EXPECT_NEAR(theta, k * kPi / 180.0, 1e-15);
+    EXPECT_NEAR(theta, k * M_PI / 180.0, 1e-15);
     const double middle = (std::floor(theta / side) + 0.5) * side;
-    const double exact = radius * std::cos(kPi / sides) / std::cos(theta - middle);
+    const double exact = radius * std::cos(M_PI / sides) / std::cos(theta - middle);
     EXPECT_NEAR(profile.radius[k], exact, 1e-12) << k;
   }
 }
@@ -122,7 +120,7 @@ TEST(RadialProfile, KeepsTheOuterBoundaryOfOverlapsAndHoles) {
   std::vector<double> positions;
   std::vector<std::array<int, 3>> triangles;
   for (int k = 0; k < sides; ++k) {
-    const double a = 2.0 * kPi * k / sides;
+    const double a = 2.0 * M_PI * k / sides;
     positions.insert(positions.end(), {0.1 * std::cos(a), 0.1 * std::sin(a), 0.0});
     positions.insert(positions.end(), {0.2 * std::cos(a), 0.2 * std::sin(a), 0.0});
   }
@@ -136,7 +134,7 @@ TEST(RadialProfile, KeepsTheOuterBoundaryOfOverlapsAndHoles) {
   triangles.push_back({tip, tip + 1, tip + 2});
   const RadialProfile profile = ComputeRadialProfile(positions, triangles, {0.0, 0.0}, 720);
   EXPECT_NEAR(profile.radius[0], 0.3, 1e-12);
-  const double chord = 0.2 * std::cos(kPi / sides);
+  const double chord = 0.2 * std::cos(M_PI / sides);
   for (int k = 20; k < 700; ++k) {
     EXPECT_LE(profile.radius[k], 0.2 + 1e-12) << k;
     EXPECT_GE(profile.radius[k], chord - 1e-12) << k;
@@ -151,7 +149,7 @@ TEST(RadialProfile, EnclosesTheShadowAreaOfAStarShapedDrape) {
   const RadialProfile profile =
       ComputeRadialProfile(skirt.positions, skirt.triangles, {0, 0}, 3600);
   double area = 0.0;
-  for (double r : profile.radius) area += 0.5 * r * r * 2.0 * kPi / 3600;
+  for (double r : profile.radius) area += 0.5 * r * r * 2.0 * M_PI / 3600;
   const Shadow shadow = ProjectedArea(skirt.positions, skirt.triangles);
   // Sampling 0.1°: the polygon through the samples differs from the outline by far less than the
   // rasterisation's bound.
@@ -166,7 +164,7 @@ std::vector<double> Lobes(int n, double mean, double amplitude, double phase, do
   std::normal_distribution<double> gauss(0.0, noise);
   std::vector<double> radius(360);
   for (int k = 0; k < 360; ++k) {
-    radius[k] = mean + amplitude * std::cos(n * k * kPi / 180.0 + phase) + gauss(random);
+    radius[k] = mean + amplitude * std::cos(n * k * M_PI / 180.0 + phase) + gauss(random);
   }
   return radius;
 }
@@ -179,7 +177,7 @@ TEST(CountFolds, ASinusoidalProfileWithNoiseHasItsNumberOfLobes) {
     ASSERT_EQ(folds.count, n) << n;
     // Crests at θ = (2πj − phase)/n, within 1° + 5% of the period (the noise moves the broad
     // crests of few folds more).
-    const double period = 360.0 / n, offset = -phase * 180.0 / kPi / n;
+    const double period = 360.0 / n, offset = -phase * 180.0 / M_PI / n;
     for (double angle : folds.angles_deg) {
       EXPECT_LT(std::abs(std::remainder(angle - offset, period)), 1.0 + 0.05 * period) << n;
     }
@@ -194,7 +192,7 @@ TEST(CountFolds, ACircleHasNone) {
   std::vector<double> polygon(360);
   for (int k = 0; k < 360; ++k) {
     const double side = 360.0 / 64, middle = (std::floor(k / side) + 0.5) * side;
-    polygon[k] = 0.15 * std::cos(kPi / 64) / std::cos((k - middle) * kPi / 180.0);
+    polygon[k] = 0.15 * std::cos(M_PI / 64) / std::cos((k - middle) * M_PI / 180.0);
   }
   EXPECT_EQ(CountFolds(polygon).count, 0);
 }
@@ -205,7 +203,7 @@ TEST(CountFolds, KeepsMinorFoldsOfAnIrregularDrapeAndDropsRipples) {
   for (int k = 0; k < 360; ++k) {
     const double from_zero = std::min(k, 360 - k);
     const double envelope = 1.0 - 2.0 / 3.0 * std::exp(-0.5 * std::pow(from_zero / 25.0, 2));
-    radius[k] = 0.12 + 0.02 * envelope * std::pow(std::cos(3.0 * k * kPi / 180.0), 2);
+    radius[k] = 0.12 + 0.02 * envelope * std::pow(std::cos(3.0 * k * M_PI / 180.0), 2);
   }
   const Folds irregular = CountFolds(radius);
   ASSERT_EQ(irregular.count, 6);
@@ -214,7 +212,7 @@ TEST(CountFolds, KeepsMinorFoldsOfAnIrregularDrapeAndDropsRipples) {
   // middle of a trough: a local maximum, but not a fold.
   std::vector<double> ripple(360);
   for (int k = 0; k < 360; ++k) {
-    const double crest = std::max(0.0, std::cos(5.0 * k * kPi / 180.0));
+    const double crest = std::max(0.0, std::cos(5.0 * k * M_PI / 180.0));
     ripple[k] =
         0.12 + 0.04 * crest * crest * crest + 0.002 * std::exp(-0.5 * std::pow((k - 36) / 4.0, 2));
   }
@@ -322,7 +320,7 @@ TEST(AnalyseDrape, ALatticeSpecimenWithItsFringeIsTheDisc) {
   shape.lobes = 7;
   ShadowOptions fine;
   fine.resolution = 4096;
-  const double disc = kPi * shape.specimen_radius * shape.specimen_radius;
+  const double disc = M_PI * shape.specimen_radius * shape.specimen_radius;
   const DrapeCoefficient flat =
       ComputeDrapeCoefficient(LatticeSkirtWithFringe(shape, false), shape.disc_radius, fine);
   ASSERT_LT(flat.shadow.error_bound, 1e-3 * disc);

@@ -17,6 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::MpiRun;
 using testing::ProgramOutcome;
+using testing::ReadText;
 using testing::RunProgram;
 
 constexpr char kScene[] = R"(name: drops
@@ -28,13 +29,6 @@ material:
   finite_volume: {E_warp: 9000, E_weft: 8000, G: 20, D_warp: 2.6e-6, D_weft: 1.7e-6}
 output: {write: [summary]}
 )";
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(DropsMpi, TheSameDropsCsvAloneAndOnTwoRanks) {
   if (!testing::MpiLauncherAvailable()) {

@@ -9,7 +9,7 @@
 #include "src/model/contact.h"
 
 namespace drape {
-namespace {
+namespace equilibrium_test {
 
 constexpr double kStiffness = 40.0, kRest = 0.1, kMass = 0.05, kGravity = 9.81;
 
@@ -134,5 +134,5 @@ TEST(Certificate, BalanceCountsReactionsAndTheGivenConstraintForces) {
   EXPECT_TRUE(certificate.balanced) << certificate.balance_error;
 }
 
-}  // namespace
+}  // namespace equilibrium_test
 }  // namespace drape

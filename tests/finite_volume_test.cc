@@ -17,8 +17,6 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 FiniteVolumeSpec Cotton() {
   FiniteVolumeSpec spec;
   spec.E_warp = 500;
@@ -376,7 +374,7 @@ TEST(FiniteVolume, UniformlyBentCircleMatchesTheClosedForm) {
       const double chord = std::pow(std::tan(half_turn) / half_turn, 2);
       EXPECT_NEAR(bending / (density * curved_area), chord, 1e-9);
       EXPECT_NEAR(chord, 1.0, 0.17 * std::pow(spacing / radius, 2));
-      const double disc_error = std::abs(bending / (density * kPi * a * a) - 1.0);
+      const double disc_error = std::abs(bending / (density * M_PI * a * a) - 1.0);
       EXPECT_LT(disc_error, 2.0 * spacing / a) << "spacing " << spacing << " axis " << axis;
       disc_errors.push_back(disc_error);
     }

@@ -13,8 +13,6 @@
 namespace drape::testing {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 TEST(FitMeasurementsTest, ClosestPointOnTriangleBeatsEverySample) {
   std::mt19937 generator(3);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -41,7 +39,7 @@ TEST(FitMeasurementsTest, ClosestPointOnTriangleBeatsEverySample) {
 
 TEST(FitMeasurementsTest, PeirceFormulaAtTheStandardAngle) {
   // c = l (cos(θ/2) / (8 tan θ))^⅓; at θ = 41.5° the ratio c/l is 0.509 (ASTM D1388 takes l/2).
-  const double angle = 41.5 * kPi / 180.0;
+  const double angle = 41.5 * M_PI / 180.0;
   const double expected = std::cbrt(std::cos(angle / 2) / (8 * std::tan(angle)));
   EXPECT_NEAR(PeirceBendingLength(1.0, angle), expected, 1e-15);
   EXPECT_NEAR(PeirceBendingLength(0.1, angle), 0.05, 0.001);

@@ -62,16 +62,16 @@ std::string ThreeHammocksFit(const std::string& folder) {
 // history.csv's time column (report.md has the time in its text, and repeats fit.json).
 std::string ComparableOutputs(const fs::path& folder) {
   std::string text;
-  std::istringstream json(ReadWholeFile(folder / "fit.json"));
+  std::istringstream json(ReadText(folder / "fit.json"));
   for (std::string line; std::getline(json, line);) {
     if (line.find("\"wall_time_s\"") == std::string::npos) text += line + "\n";
   }
-  std::istringstream history(ReadWholeFile(folder / "history.csv"));
+  std::istringstream history(ReadText(folder / "history.csv"));
   for (std::string line; std::getline(history, line);) {
     const size_t first = line.find(','), second = line.find(',', first + 1);
     text += line.substr(0, first) + line.substr(second) + "\n";
   }
-  return text + ReadWholeFile(folder / "sensitivity.csv") + ReadWholeFile(folder / "fit.png");
+  return text + ReadText(folder / "sensitivity.csv") + ReadText(folder / "fit.png");
 }
 
 class FitMpi : public ::testing::TestWithParam<std::string> {};

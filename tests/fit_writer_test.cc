@@ -12,16 +12,10 @@
 #include "src/cli/cli.h"
 #include "src/output/json.h"
 #include "tests/fit_test_support.h"
+#include "tests/run_program.h"
 
 namespace drape::testing {
 namespace {
-
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(FitWriterTest, FitCommandWritesEveryOutput) {
   const std::string folder = FitTempDir("writer");

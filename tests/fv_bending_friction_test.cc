@@ -28,8 +28,6 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 double Energy(const FvBendingFriction& friction, const std::vector<double>& x) {
   double energy = 0.0;
   friction(x.data(), x.data() + 3, x.data() + 6, &energy);

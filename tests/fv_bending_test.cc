@@ -14,19 +14,10 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // The five nodes W, P, E, S, N of an internal control volume with arms h1 (warp) and h2 (weft),
 // flat in the xy plane, stored as nodes 0..4 in that order.
 std::vector<double> FlatStencil(double h1, double h2) {
   return {-h1, 0, 0, 0, 0, 0, h1, 0, 0, 0, -h2, 0, 0, h2, 0};
-}
-
-std::vector<double> Perturbed(std::vector<double> positions, double amplitude, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> uniform(-amplitude, amplitude);
-  for (double& p : positions) p += uniform(generator);
-  return positions;
 }
 
 std::unique_ptr<Term> InternalVolume(double d12 = 0.4e-5) {
@@ -41,8 +32,8 @@ std::unique_ptr<Term> EdgeVolume() {
 TEST(FvBending, DerivativesMatchDifferencesAtRandomStates) {
   const auto term = InternalVolume();
   for (unsigned seed = 1; seed <= 20; ++seed) {
-    testing::ExpectDerivativesMatchDifferences(*term,
-                                               Perturbed(FlatStencil(0.02, 0.03), 0.012, seed));
+    testing::ExpectDerivativesMatchDifferences(
+        *term, testing::Perturbed(FlatStencil(0.02, 0.03), 0.012, seed));
   }
 }
 
@@ -71,7 +62,7 @@ TEST(FvBending, ZeroForceAtRestInAnyOrientation) {
 TEST(FvBending, InvariantUnderRigidMotionAndBalanced) {
   for (const auto& term : {InternalVolume(), EdgeVolume()}) {
     for (unsigned seed = 1; seed <= 5; ++seed) {
-      auto positions = Perturbed(FlatStencil(0.02, 0.03), 0.01, seed);
+      auto positions = testing::Perturbed(FlatStencil(0.02, 0.03), 0.01, seed);
       positions.resize(3 * static_cast<size_t>(testing::NodesSpanned(*term)));
       testing::ExpectRigidMotionInvariant(*term, positions);
       testing::ExpectForcesBalance(*term, positions);
@@ -83,7 +74,7 @@ TEST(FvBendingEdge, DerivativesMatchDifferencesAtRandomAndFlatStates) {
   const auto term = EdgeVolume();
   for (unsigned seed = 1; seed <= 20; ++seed) {
     testing::ExpectDerivativesMatchDifferences(
-        *term, Perturbed({-0.02, 0, 0, 0, 0, 0, 0.02, 0, 0}, 0.012, seed));
+        *term, testing::Perturbed({-0.02, 0, 0, 0, 0, 0, 0.02, 0, 0}, 0.012, seed));
   }
   testing::ExpectDerivativesMatchDifferences(*term, {-0.02, 0, 0, 0, 0, 0, 0.02, 0, 0});
   testing::ExpectZeroForce(*term, {-0.02, 0, 0, 0, 0, 0, 0.03, 0, 0}, 1e-15);
@@ -100,9 +91,9 @@ TEST(FvBending, StagedProjectionIsSemidefiniteItsStandInAndExactWhereItCan) {
   for (EigenvalueFilter filter : {EigenvalueFilter::kClamp, EigenvalueFilter::kAbsolute}) {
     for (unsigned seed = 1; seed <= 20; ++seed) {
       changed += testing::ExpectStagedProjectionValid(
-          *internal, Perturbed(FlatStencil(0.02, 0.03), 0.012, seed), filter);
+          *internal, testing::Perturbed(FlatStencil(0.02, 0.03), 0.012, seed), filter);
       changed_edge += testing::ExpectStagedProjectionValid(
-          *edge, Perturbed({-0.02, 0, 0, 0, 0, 0, 0.02, 0, 0}, 0.012, seed), filter);
+          *edge, testing::Perturbed({-0.02, 0, 0, 0, 0, 0, 0.02, 0, 0}, 0.012, seed), filter);
     }
     EXPECT_FALSE(testing::ExpectStagedProjectionValid(*internal, FlatStencil(0.02, 0.03), filter));
     EXPECT_FALSE(

@@ -14,8 +14,6 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Quarter section P, A = E, B = N with arms 0.02 (warp) and 0.03 (weft), flat in xy.
 const std::vector<double> kRest = {0, 0, 0, 0.02, 0, 0, 0, 0.03, 0};
 
@@ -23,17 +21,10 @@ FvMembrane Quarter(double e1 = 600.0, double e2 = 350.0, double e12 = 90.0, doub
   return FvMembrane::Create(e1, e2, e12, g, 0.02, 0.03);
 }
 
-std::vector<double> Perturbed(std::vector<double> positions, double amplitude, unsigned seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> uniform(-amplitude, amplitude);
-  for (double& p : positions) p += uniform(generator);
-  return positions;
-}
-
 TEST(FvMembrane, DerivativesMatchDifferencesAtRandomStates) {
   const auto term = MakeTerm("fv_membrane", {0, 1, 2}, Quarter());
   for (unsigned seed = 1; seed <= 20; ++seed) {
-    testing::ExpectDerivativesMatchDifferences(*term, Perturbed(kRest, 0.008, seed));
+    testing::ExpectDerivativesMatchDifferences(*term, testing::Perturbed(kRest, 0.008, seed));
   }
 }
 
@@ -71,7 +62,8 @@ TEST(FvMembrane, StagedProjectionIsSemidefiniteAboveTheHessianAndExactWhereItCan
   int changed = 0;
   for (EigenvalueFilter filter : {EigenvalueFilter::kClamp, EigenvalueFilter::kAbsolute}) {
     for (unsigned seed = 1; seed <= 20; ++seed) {
-      changed += testing::ExpectStagedProjectionValid(*term, Perturbed(kRest, 0.008, seed), filter);
+      changed += testing::ExpectStagedProjectionValid(*term, testing::Perturbed(kRest, 0.008, seed),
+                                                      filter);
     }
     EXPECT_TRUE(testing::ExpectStagedProjectionValid(*term, compressed, filter));
     EXPECT_FALSE(testing::ExpectStagedProjectionValid(*term, stretched, filter));
@@ -90,7 +82,7 @@ TEST(FvMembrane, ZeroForceAtRestInAnyOrientation) {
 TEST(FvMembrane, InvariantUnderRigidMotionAndBalanced) {
   const auto term = MakeTerm("fv_membrane", {0, 1, 2}, Quarter());
   for (unsigned seed = 1; seed <= 5; ++seed) {
-    const auto positions = Perturbed(kRest, 0.008, seed);
+    const auto positions = testing::Perturbed(kRest, 0.008, seed);
     testing::ExpectRigidMotionInvariant(*term, positions);
     testing::ExpectForcesBalance(*term, positions);
   }
@@ -164,7 +156,7 @@ TEST(FvMembrane, OrthotropicPatchHasOffAxisModulusOfClassicalTheory) {
   const Eigen::Matrix3d stiffness = modes.transpose() * hessian * modes / area;
   const Eigen::Matrix3d compliance = stiffness.inverse();
   for (double degrees = 0; degrees <= 90; degrees += 15) {
-    const double phi = degrees * kPi / 180, c = std::cos(phi), s = std::sin(phi);
+    const double phi = degrees * M_PI / 180, c = std::cos(phi), s = std::sin(phi);
     const Eigen::Vector3d a(c * c, s * s, s * c);
     const double expected =
         std::pow(c, 4) / material.E_warp +

@@ -18,8 +18,6 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 struct CoarseScene {
   std::string file;  // in configs/fv/
   std::vector<std::string> overrides;
@@ -203,11 +201,11 @@ TEST(FvScenes, SpecimenNoLargerThanTheDiscHasDrapeCoefficientOne) {
   const double disc = DiscRadius(solved.scene);
   ASSERT_DOUBLE_EQ(disc, 0.09);
   const DrapeCoefficient smaller = ComputeDrapeCoefficient(solved.model, disc);
-  EXPECT_LT(smaller.flat_area, kPi * disc * disc);
+  EXPECT_LT(smaller.flat_area, M_PI * disc * disc);
   EXPECT_NEAR(smaller.cusick, 1.0, 1e-12);
   EXPECT_NEAR(smaller.ratio, 1.0, 1e-12);
   // A disc of exactly the specimen's (flat) area.
-  const double equal_radius = std::sqrt(smaller.flat_area / kPi);
+  const double equal_radius = std::sqrt(smaller.flat_area / M_PI);
   EXPECT_DOUBLE_EQ(ComputeDrapeCoefficient(solved.model, equal_radius).cusick, 1.0);
 }
 

@@ -12,9 +12,7 @@
 #include "tests/test_paths.h"
 
 namespace drape {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
+namespace mesh_test {
 
 Location SceneLocation() { return Location{"scene.yaml", 3, 5, "mesh"}; }
 
@@ -221,7 +219,7 @@ TEST(Mesh, CircleAreasAddUpToTheDisc) {
       spec.radius = radius;
       spec.spacing = spacing;
       const Mesh mesh = BuildMesh(spec);
-      const double disc = kPi * radius * radius;
+      const double disc = M_PI * radius * radius;
       EXPECT_NEAR(Sum(mesh.area), disc, 1e-3 * disc) << radius << " " << spacing;
       EXPECT_NEAR(Sum(mesh.area), disc, 1e-6 * disc) << radius << " " << spacing;
       double polygon = 0.0;
@@ -284,7 +282,7 @@ TEST(Mesh, CircleFringeCoversTheDiscBeyondTheStaircaseAndMovesWithAffineMaps) {
       const Mesh mesh = BuildMesh(spec);
       ASSERT_FALSE(mesh.fringe.triangles.empty());
       const auto flat = AsPoints(WithFringePoints(mesh.fringe, AsXyz(mesh.nodes)));
-      const double disc = kPi * radius * radius;
+      const double disc = M_PI * radius * radius;
       const double covered =
           TriangleAreas(flat, mesh.triangles) + TriangleAreas(flat, mesh.fringe.triangles);
       EXPECT_NEAR(covered, disc, 1e-3 * disc) << radius << " " << spacing;
@@ -335,7 +333,7 @@ TEST(Mesh, ArcHasRingsOnSpokesAndThePolygonArea) {
   // Skip-one along each spoke (from the centre) and across the centre, and around each ring.
   EXPECT_EQ(mesh.flexion_warp.size(), static_cast<size_t>((rings - 1) * spokes + spokes / 2));
   EXPECT_EQ(mesh.flexion_weft.size(), static_cast<size_t>(rings * spokes));
-  const double polygon = spokes * 0.5 * spec.radius * spec.radius * std::sin(2 * kPi / spokes);
+  const double polygon = spokes * 0.5 * spec.radius * spec.radius * std::sin(2 * M_PI / spokes);
   EXPECT_NEAR(Sum(mesh.area), polygon, 1e-14);
 }
 
@@ -394,5 +392,5 @@ TEST(Mesh, FewerThanTwoNodesAreRejected) {
   EXPECT_NE(message.find("at least 2"), std::string::npos) << message;
 }
 
-}  // namespace
+}  // namespace mesh_test
 }  // namespace drape

@@ -13,7 +13,7 @@
 #include "src/model/equilibrium.h"
 
 namespace drape {
-namespace {
+namespace model_test {
 
 const Eigen::Vector3d kGravity(0.0, 0.0, -9.81);
 
@@ -368,5 +368,5 @@ TEST(Model, SelectionErrorsSurfaceFromTheBuild) {
   EXPECT_NE(message.find("out of range"), std::string::npos) << message;
 }
 
-}  // namespace
+}  // namespace model_test
 }  // namespace drape

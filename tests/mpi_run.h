@@ -5,39 +5,11 @@
 // need OMPI_MCA_rmaps_base_oversubscribe=1: CTest sets them (CMakeLists.txt, drape_mpi_tests).
 #pragma once
 
-#include <sys/wait.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "tests/run_program.h"
+
 namespace drape::testing {
-
-struct ProgramOutcome {
-  int exit_status = -1;  // 124: killed by the time limit
-  std::string out, err;
-};
-
-inline std::string ReadWholeFile(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Runs `command` (a shell command line) with stdout and stderr captured in `folder`.
-inline ProgramOutcome RunProgram(const std::string& command, const std::filesystem::path& folder) {
-  const auto out = folder / "stdout.txt", err = folder / "stderr.txt";
-  const int status =
-      std::system((command + " > '" + out.string() + "' 2> '" + err.string() + "'").c_str());
-  ProgramOutcome outcome;
-  outcome.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  outcome.out = ReadWholeFile(out);
-  outcome.err = ReadWholeFile(err);
-  return outcome;
-}
 
 // Whether tests can run mpirun: built with MPI and the launcher found.
 inline bool MpiLauncherAvailable() { return std::string(DRAPE_MPIEXEC).size() > 0; }

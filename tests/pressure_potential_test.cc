@@ -11,8 +11,6 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // A regular polygon of `count` nodes and circumradius `radius` in the x–z plane, counter-clockwise
 // (x to the right, z up), centred at (cx, cz); one pressure term per side.
 struct Polygon {
@@ -23,7 +21,7 @@ struct Polygon {
 Polygon MakePolygon(int count, double radius, double pressure, double cx = 0.3, double cz = -0.2) {
   Polygon polygon;
   for (int k = 0; k < count; ++k) {
-    const double angle = 2.0 * kPi * k / count;
+    const double angle = 2.0 * M_PI * k / count;
     polygon.positions.insert(polygon.positions.end(), {cx + radius * std::cos(angle), 0.1 * k,
                                                        cz + radius * std::sin(angle)});
   }
@@ -50,7 +48,7 @@ TEST(PressurePotential, LoopEnergyIsMinusPressureTimesEnclosedArea) {
     ASSERT_TRUE(term->Energy(polygon.positions.data(), &energy));
     total += energy;
   }
-  const double area = 0.5 * count * radius * radius * std::sin(2.0 * kPi / count);
+  const double area = 0.5 * count * radius * radius * std::sin(2.0 * M_PI / count);
   EXPECT_NEAR(total, -pressure * area, 1e-12);
 }
 
@@ -69,7 +67,7 @@ TEST(PressurePotential, PositivePressurePushesEveryNodeOutwardsAndTheLoopIsBalan
       for (int c = 0; c < 3; ++c) force[3 * term->nodes()[a] + c] -= gradient[3 * a + c];
     }
   }
-  const double side = 2.0 * radius * std::sin(kPi / count);
+  const double side = 2.0 * radius * std::sin(M_PI / count);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (int k = 0; k < count; ++k) {
     const Eigen::Vector3d f(force[3 * k], force[3 * k + 1], force[3 * k + 2]);
@@ -77,7 +75,7 @@ TEST(PressurePotential, PositivePressurePushesEveryNodeOutwardsAndTheLoopIsBalan
                                   polygon.positions[3 * k + 2] - cz);
     EXPECT_NEAR(f.y(), 0.0, 1e-15);
     EXPECT_NEAR(f.normalized().dot(outward.normalized()), 1.0, 1e-12) << "node " << k;
-    EXPECT_NEAR(f.norm(), pressure * side * std::cos(kPi / count), 1e-12) << "node " << k;
+    EXPECT_NEAR(f.norm(), pressure * side * std::cos(M_PI / count), 1e-12) << "node " << k;
     sum += f;
   }
   EXPECT_LT(sum.norm(), 1e-12);

@@ -20,7 +20,7 @@ using testing::LoadConfig;
 using testing::Position;
 using testing::SolveConfig;
 
-std::string Scene(const std::string& name) { return "configs/puiseux/" + name + ".yaml"; }
+std::string PuiseuxConfig(const std::string& name) { return "configs/puiseux/" + name + ".yaml"; }
 
 // Largest node distance between two solutions, over the model's size.
 double RelativePositionGap(const Model& a, const Model& b) {
@@ -80,8 +80,9 @@ TEST_P(PuiseuxUniqueCase, FixedPointAndNewtonAgreeInPositionsAndReactions) {
   std::vector<std::string> overrides = GetParam().overrides;
   overrides.push_back("solver.tolerance=1e-10");
   overrides.push_back("solver.max_iterations=200000");
-  const auto fixed_point = SolveConfig(Scene(GetParam().name), "puiseux-fixed-point", overrides);
-  const auto newton = SolveConfig(Scene(GetParam().name), "newton", overrides);
+  const auto fixed_point =
+      SolveConfig(PuiseuxConfig(GetParam().name), "puiseux-fixed-point", overrides);
+  const auto newton = SolveConfig(PuiseuxConfig(GetParam().name), "newton", overrides);
   ASSERT_TRUE(fixed_point.result.converged) << fixed_point.result.summary.termination;
   ASSERT_TRUE(newton.result.converged) << newton.result.summary.termination;
   EXPECT_LT(RelativePositionGap(fixed_point.model, newton.model), 1e-6);
@@ -110,9 +111,10 @@ INSTANTIATE_TEST_SUITE_P(
 // not be unique; both methods must reach it with the same energy.
 TEST(PuiseuxCases, TensionOnlyPieceReachesTheSameEnergyWithBothMethods) {
   const std::vector<std::string> overrides = {"solver.tolerance=1e-9"};
-  const auto fixed_point =
-      SolveConfig(Scene("piece_15x15_ramp_tension_only_2d"), "puiseux-fixed-point", overrides);
-  const auto newton = SolveConfig(Scene("piece_15x15_ramp_tension_only_2d"), "newton", overrides);
+  const auto fixed_point = SolveConfig(PuiseuxConfig("piece_15x15_ramp_tension_only_2d"),
+                                       "puiseux-fixed-point", overrides);
+  const auto newton =
+      SolveConfig(PuiseuxConfig("piece_15x15_ramp_tension_only_2d"), "newton", overrides);
   ASSERT_TRUE(fixed_point.result.converged) << fixed_point.result.summary.termination;
   ASSERT_TRUE(newton.result.converged) << newton.result.summary.termination;
   EXPECT_NEAR(fixed_point.result.certificate.energy, newton.result.certificate.energy,
@@ -126,9 +128,9 @@ class PuiseuxNonUniqueCase : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PuiseuxNonUniqueCase, FixedPointApproachesNewtonsEnergy) {
   const std::vector<std::string> overrides = {"mesh.nodes=[7,7]", "solver.max_iterations=20000"};
-  const auto fixed_point = SolveConfig(Scene(GetParam()), "puiseux-fixed-point", overrides);
-  const auto newton =
-      SolveConfig(Scene(GetParam()), "newton", {"mesh.nodes=[7,7]", "solver.tolerance=1e-9"});
+  const auto fixed_point = SolveConfig(PuiseuxConfig(GetParam()), "puiseux-fixed-point", overrides);
+  const auto newton = SolveConfig(PuiseuxConfig(GetParam()), "newton",
+                                  {"mesh.nodes=[7,7]", "solver.tolerance=1e-9"});
   ASSERT_TRUE(newton.result.converged) << newton.result.summary.termination;
   EXPECT_TRUE(newton.result.stability.stable);
   const double start = fixed_point.result.summary.history.front().relative_residual;
@@ -145,8 +147,10 @@ TEST(PuiseuxCases, DynamicSchemeComesToRestAtNewtonsEquilibrium) {
   const std::vector<std::string> overrides = {
       "solver.tolerance=1e-10", "solver.max_iterations=100000",
       "solver.puiseux-dynamic={dt: 0.05, beta: 0.05, t_max: 100000, epsilon: 1e-12}"};
-  const auto dynamic = SolveConfig(Scene("dynamic_pulled_3d"), "puiseux-dynamic", overrides);
-  const auto newton = SolveConfig(Scene("dynamic_pulled_3d"), "newton", {"solver.tolerance=1e-10"});
+  const auto dynamic =
+      SolveConfig(PuiseuxConfig("dynamic_pulled_3d"), "puiseux-dynamic", overrides);
+  const auto newton =
+      SolveConfig(PuiseuxConfig("dynamic_pulled_3d"), "newton", {"solver.tolerance=1e-10"});
   ASSERT_TRUE(dynamic.result.converged) << dynamic.result.summary.termination;
   ASSERT_TRUE(newton.result.converged) << newton.result.summary.termination;
   EXPECT_LT(RelativePositionGap(dynamic.model, newton.model), 1e-6);

@@ -8,7 +8,7 @@
 #include "tests/contact_checks.h"
 
 namespace drape {
-namespace {
+namespace sphere_contact_test {
 
 constexpr double kClearance = 0.002, kStiffness = 4.0e6;
 
@@ -40,5 +40,5 @@ TEST(SphereContact, ForcePushesOutwardWithMagnitudeKGapSquared) {
   testing::ExpectForcePushesOutward(Obstacle(), kProbes, kClearance, kStiffness);
 }
 
-}  // namespace
+}  // namespace sphere_contact_test
 }  // namespace drape

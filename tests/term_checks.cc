@@ -197,4 +197,11 @@ std::vector<double> RandomPositions(int count, double size, unsigned seed) {
   return positions;
 }
 
+std::vector<double> Perturbed(std::vector<double> positions, double amplitude, unsigned seed) {
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> uniform(-amplitude, amplitude);
+  for (double& p : positions) p += uniform(generator);
+  return positions;
+}
+
 }  // namespace drape::testing

@@ -59,6 +59,9 @@ void ExpectZeroForce(const Term& term, const std::vector<double>& positions,
 // Positions of `count` nodes drawn uniformly in a box of side `size`.
 std::vector<double> RandomPositions(int count, double size, unsigned seed);
 
+// `positions` with each coordinate moved by a uniform draw in [-amplitude, amplitude].
+std::vector<double> Perturbed(std::vector<double> positions, double amplitude, unsigned seed);
+
 }  // namespace drape::testing
 
 #endif  // DRAPE_TESTS_TERM_CHECKS_H_

@@ -14,8 +14,6 @@ namespace drape {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 struct Bounds {
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
   double x1 = -x0, y1 = -x0;
@@ -114,7 +112,7 @@ Shadow ProjectedArea(const std::vector<double>& positions,
 }
 
 double CusickCoefficient(double shadow_area, double flat_area, double disc_radius) {
-  const double disc = kPi * disc_radius * disc_radius;
+  const double disc = M_PI * disc_radius * disc_radius;
   return flat_area > disc ? (shadow_area - disc) / (flat_area - disc) : 1.0;
 }
 
@@ -155,13 +153,13 @@ double Cross(double ax, double ay, double bx, double by) { return ax * by - ay *
 // segment p–q, for the rays the segment can meet (those within the angle it subtends).
 void ExtendAlongSegment(double px, double py, double qx, double qy, std::vector<double>* radius) {
   const int angles = static_cast<int>(radius->size());
-  const double step = 2.0 * kPi / angles;
+  const double step = 2.0 * M_PI / angles;
   const bool p_at_centre = px == 0.0 && py == 0.0;
   if (p_at_centre && qx == 0.0 && qy == 0.0) return;
   const double start = p_at_centre ? std::atan2(qy, qx) : std::atan2(py, px);
   const double span = p_at_centre ? 0.0 : std::atan2(Cross(px, py, qx, qy), px * qx + py * qy);
   int first = 0, last = angles - 1;  // a segment through the centre can meet every ray
-  if (std::abs(span) < kPi - 1e-9) {
+  if (std::abs(span) < M_PI - 1e-9) {
     first = static_cast<int>(std::floor((start + std::min(0.0, span)) / step));
     last = static_cast<int>(std::ceil((start + std::max(0.0, span)) / step));
   }
@@ -236,7 +234,7 @@ RadialProfile ComputeRadialProfile(const std::vector<double>& positions,
   RadialProfile profile;
   profile.centre = centre;
   profile.radius.assign(angles, 0.0);
-  for (int k = 0; k < angles; ++k) profile.theta.push_back(2.0 * kPi * k / angles);
+  for (int k = 0; k < angles; ++k) profile.theta.push_back(2.0 * M_PI * k / angles);
   auto x = [&](int v) { return NodeAt(positions, v).x() - centre[0]; };
   auto y = [&](int v) { return NodeAt(positions, v).y() - centre[1]; };
   for (const auto& t : triangles) {

@@ -548,11 +548,6 @@ std::string Base64(const std::string& bytes) {
   return encoded;
 }
 
-std::string ReadFile(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(file), {});
-}
-
 void WriteHtml(const std::vector<Block>& blocks, const fs::path& out_dir, std::ostream& out) {
   out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>drape solver comparison"
          "</title><style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
@@ -572,7 +567,7 @@ void WriteHtml(const std::vector<Block>& blocks, const fs::path& out_dir, std::o
         break;
       case Block::Kind::kImage:
         out << "<figure><img alt=\"" << AttributeText(block.text)
-            << "\" src=\"data:image/png;base64," << Base64(ReadFile(out_dir / block.image))
+            << "\" src=\"data:image/png;base64," << Base64(ReadWholeFile(out_dir / block.image))
             << "\"><figcaption>" << Escaped(block.text, true) << "</figcaption></figure>\n";
         break;
       case Block::Kind::kTable:

@@ -36,8 +36,6 @@ namespace drape {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 Link Ordered(int a, int b) { return a < b ? Link{a, b} : Link{b, a}; }
 
 // Area of triangle abc.
@@ -400,7 +398,7 @@ void AddFringe(const Eigen::Vector3d& centre, double radius, Mesh* mesh) {
   for (const Link& edge : OutlineEdges(*mesh)) {
     const int a = edge[0], b = edge[1];
     const double from = angle_of(a);
-    const double span = std::remainder(angle_of(b) - from, 2.0 * kPi);
+    const double span = std::remainder(angle_of(b) - from, 2.0 * M_PI);
     const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(span) / kFringeArc)));
     int inner_before = a, outer_before = node_outer(a);
     for (int i = 1; i <= pieces; ++i) {
@@ -489,7 +487,7 @@ Mesh BuildArc(const MeshSpec& spec) {
   for (int r = 1; r <= rings; ++r) {
     const double radius = spec.radius * r / rings;
     for (int k = 0; k < spokes; ++k) {
-      const double angle = 2.0 * kPi * k / spokes;
+      const double angle = 2.0 * M_PI * k / spokes;
       mesh.nodes.push_back(spec.origin +
                            radius * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0));
     }

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +44,11 @@ void WriteAtomically(const fs::path& path, const std::function<void(std::ostream
       throw std::runtime_error("cannot write " + temporary.string() + ": " + std::strerror(errno));
     }
   });
+}
+
+std::string ReadWholeFile(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(file), {});
 }
 
 }  // namespace drape

@@ -1,5 +1,9 @@
 #include "src/output/csv_field.h"
 
+#include <cmath>
+
+#include "src/output/json.h"
+
 namespace drape {
 
 std::string CsvField(const std::string& text) {
@@ -9,6 +13,10 @@ std::string CsvField(const std::string& text) {
     quoted += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
   }
   return quoted + "\"";
+}
+
+std::string CsvNumber(double value, int digits) {
+  return std::isfinite(value) ? FormatNumber(value, digits) : "";
 }
 
 }  // namespace drape

@@ -17,8 +17,6 @@ namespace drape {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 using Vec3 = Eigen::Vector3d;
 using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
@@ -108,7 +106,7 @@ struct Camera {
 };
 
 Camera Orient(double azimuth_deg, double elevation_deg) {
-  const double az = azimuth_deg * kPi / 180.0, el = elevation_deg * kPi / 180.0;
+  const double az = azimuth_deg * M_PI / 180.0, el = elevation_deg * M_PI / 180.0;
   const Vec3 to_eye(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
   Camera camera;
   camera.forward = -to_eye;
@@ -168,7 +166,7 @@ void AddCylinder(const Vec3& top_centre, double radius, double height, bool cap,
                  std::vector<Primitive>* out) {
   const int sides = 48, rings = 4;
   for (int k = 0; k < sides; ++k) {
-    const double a0 = 2 * kPi * k / sides, a1 = 2 * kPi * (k + 1) / sides;
+    const double a0 = 2 * M_PI * k / sides, a1 = 2 * M_PI * (k + 1) / sides;
     const Vec3 p0 = top_centre + radius * Vec3(std::cos(a0), std::sin(a0), 0);
     const Vec3 p1 = top_centre + radius * Vec3(std::cos(a1), std::sin(a1), 0);
     const Vec3 down(0, 0, -height);
@@ -186,7 +184,7 @@ void AddCylinder(const Vec3& top_centre, double radius, double height, bool cap,
 void AddSphere(const Vec3& centre, double radius, Rgb colour, std::vector<Primitive>* out) {
   const int slices = 32, stacks = 16;
   auto at = [&](int i, int j) {
-    const double phi = 2 * kPi * i / slices, theta = kPi * j / stacks;
+    const double phi = 2 * M_PI * i / slices, theta = M_PI * j / stacks;
     return Vec3(centre + radius * Vec3(std::sin(theta) * std::cos(phi),
                                        std::sin(theta) * std::sin(phi), std::cos(theta)));
   };
@@ -420,7 +418,7 @@ void PaintFixedNodes(cairo_t* cr, const Camera& camera, const Model& model) {
     const bool fully = held == (model.dimension != 2 ? 3 : 2);
     const Eigen::Vector2d p = camera.Pixel(Node(model, k));
     if (many) {
-      cairo_arc(cr, p.x(), p.y(), 1.5, 0, 2 * kPi);
+      cairo_arc(cr, p.x(), p.y(), 1.5, 0, 2 * M_PI);
       cairo_set_source_rgba(cr, 0, 0, 0, fully ? 0.8 : 0.45);
       cairo_fill(cr);
       continue;
@@ -443,7 +441,7 @@ void PaintChainNodes(cairo_t* cr, const Camera& camera, const Model& model, doub
   cairo_set_source_rgb(cr, kChain.r, kChain.g, kChain.b);
   for (int k = 0; k < model.num_nodes; ++k) {
     const Eigen::Vector2d p = camera.Pixel(Node(model, k));
-    cairo_arc(cr, p.x(), p.y(), 2.5, 0, 2 * kPi);
+    cairo_arc(cr, p.x(), p.y(), 2.5, 0, 2 * M_PI);
     cairo_fill(cr);
   }
 }
@@ -653,7 +651,7 @@ void PaintRings(cairo_t* cr, const TopView& view, double max_radius) {
   cairo_set_line_width(cr, 0.8);
   for (double r = step; r <= max_radius * 1.001; r += step) {
     cairo_set_source_rgb(cr, 0.85, 0.85, 0.85);
-    cairo_arc(cr, view.cx, view.cy, r * view.scale, 0, 2 * kPi);
+    cairo_arc(cr, view.cx, view.cy, r * view.scale, 0, 2 * M_PI);
     cairo_stroke(cr);
     Text(cr, view.cx + r * view.scale + 3, view.cy - 3, LengthLabel(r), 10, false, {0.6, 0.6, 0.6});
   }
@@ -690,7 +688,7 @@ void PaintShadowUnion(cairo_t* cr, const TopView& view, const Model& model) {
 // The disc, or without one the fixed nodes (the pin).
 void PaintSupport(cairo_t* cr, const TopView& view, const Model& model, double disc_radius) {
   if (disc_radius > 0.0) {
-    cairo_arc(cr, view.cx, view.cy, disc_radius * view.scale, 0, 2 * kPi);
+    cairo_arc(cr, view.cx, view.cy, disc_radius * view.scale, 0, 2 * M_PI);
     cairo_set_source_rgba(cr, 0.30, 0.30, 0.30, 0.75);
     cairo_fill(cr);
     return;
@@ -699,7 +697,7 @@ void PaintSupport(cairo_t* cr, const TopView& view, const Model& model, double d
   for (int k = 0; k < model.num_nodes; ++k) {
     if (!(model.fixed[3 * k] || model.fixed[3 * k + 1] || model.fixed[3 * k + 2])) continue;
     cairo_arc(cr, view.X(model.positions[3 * k]), view.Y(model.positions[3 * k + 1]), 4, 0,
-              2 * kPi);
+              2 * M_PI);
     cairo_fill(cr);
   }
 }
@@ -710,9 +708,9 @@ void PaintFolds(cairo_t* cr, const TopView& view, const DrapeAnalysis& analysis)
   const int n = static_cast<int>(radius.size());
   for (double angle : analysis.folds.angles_deg) {
     const int k = static_cast<int>(std::lround(angle * n / 360.0)) % n;
-    const double a = angle * kPi / 180.0, r = radius[k];
+    const double a = angle * M_PI / 180.0, r = radius[k];
     cairo_arc(cr, view.X(view.centre[0] + r * std::cos(a)),
-              view.Y(view.centre[1] + r * std::sin(a)), 4.5, 0, 2 * kPi);
+              view.Y(view.centre[1] + r * std::sin(a)), 4.5, 0, 2 * M_PI);
     cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
     cairo_fill(cr);
   }
@@ -744,12 +742,12 @@ double LegendEntry(cairo_t* cr, double x, double y, const std::string& label, in
       cairo_fill(cr);
       break;
     case 3:  // pin (fixed nodes)
-      cairo_arc(cr, x + 12, y - 4, 4, 0, 2 * kPi);
+      cairo_arc(cr, x + 12, y - 4, 4, 0, 2 * M_PI);
       cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
       cairo_fill(cr);
       break;
     default:  // fold crest
-      cairo_arc(cr, x + 12, y - 4, 4.5, 0, 2 * kPi);
+      cairo_arc(cr, x + 12, y - 4, 4.5, 0, 2 * M_PI);
       cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
       cairo_fill(cr);
   }

@@ -2,11 +2,11 @@
 #include "src/scene/fabric_parameters.h"
 
 #include <cassert>
+#include <cmath>
 
 namespace drape {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kCentimetre = 1e-2;  // m
 }  // namespace
 
@@ -17,7 +17,7 @@ double KesBendingFriction(double two_hb_gf_cm_per_cm) {
 double KesBendingRigidity(double b_gf_cm) { return b_gf_cm * kGramForce * kCentimetre; }
 
 double KesShearRigidity(double g_gf_per_cm_deg) {
-  return g_gf_per_cm_deg * kGramForce / kCentimetre * (180.0 / kPi);
+  return g_gf_per_cm_deg * kGramForce / kCentimetre * (180.0 / M_PI);
 }
 
 double KesArealDensity(double w_mg_per_cm2) {

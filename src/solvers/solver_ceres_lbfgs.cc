@@ -97,10 +97,10 @@ class FreeEnergy : public ceres::FirstOrderFunction {
 };
 
 // Records every iteration in the monitor, numbering them across restarts.
-class MonitorCallback : public ceres::IterationCallback {
+class LbfgsMonitorCallback : public ceres::IterationCallback {
  public:
-  MonitorCallback(Model& model, const DofMap& dofs, FreeEnergy& energy,
-                  const std::vector<double>& free, IterationMonitor* monitor)
+  LbfgsMonitorCallback(Model& model, const DofMap& dofs, FreeEnergy& energy,
+                       const std::vector<double>& free, IterationMonitor* monitor)
       : model_(model), dofs_(dofs), energy_(energy), free_(free), monitor_(monitor) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& iteration) override {
@@ -165,7 +165,7 @@ class CeresLbfgsSolver : public Solver {
     dofs.Gather(model.positions.data(), free.data());
     auto* energy = new FreeEnergy(model, dofs);
     ceres::GradientProblem problem(energy);  // takes ownership
-    MonitorCallback callback(model, dofs, *energy, free, &monitor);
+    LbfgsMonitorCallback callback(model, dofs, *energy, free, &monitor);
     ceres::GradientProblemSolver::Options ceres_options = CeresOptions(options, &callback);
 
     ceres::GradientProblemSolver::Summary ceres_summary;

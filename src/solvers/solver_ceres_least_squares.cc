@@ -83,9 +83,9 @@ bool AddGuard(Model& model, const ObstacleGuard& guard, ceres::Problem* problem)
   return false;
 }
 
-class MonitorCallback : public ceres::IterationCallback {
+class LeastSquaresMonitorCallback : public ceres::IterationCallback {
  public:
-  MonitorCallback(const Model& model, ObstacleGuard* guard, IterationMonitor* monitor)
+  LeastSquaresMonitorCallback(const Model& model, ObstacleGuard* guard, IterationMonitor* monitor)
       : model_(model), guard_(guard), monitor_(monitor) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& iteration) override {
@@ -125,7 +125,7 @@ class CeresLeastSquaresSolver : public Solver {
     ceres::Problem problem(problem_options);
     BuildProblem(model, &problem);
     if (guarded) AddGuard(model, guard, &problem);
-    MonitorCallback callback(model, guarded ? &guard : nullptr, &monitor);
+    LeastSquaresMonitorCallback callback(model, guarded ? &guard : nullptr, &monitor);
 
     ceres::Solver::Options ceres_options;
     ceres_options.trust_region_strategy_type = strategy_;

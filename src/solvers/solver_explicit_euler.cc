@@ -34,7 +34,7 @@ namespace {
 
 // Option `key`: as given, else its default in the catalogue (src/scene/solver_methods.cc), which
 // is none for dt and stretch_limit (derived from the model).
-std::optional<double> Option(const SolverOptions& options, const char* key) {
+std::optional<double> ExplicitEulerOption(const SolverOptions& options, const char* key) {
   return MethodOptionValue("explicit-euler", options.method_options, key);
 }
 
@@ -242,9 +242,10 @@ class ExplicitEulerSolver : public Solver {
     }
     // The scene loader checks the ranges where the options are given (located); the model's
     // stretch limit is checked where the scene gives it.
-    const double dt = Option(options, "dt").value_or(DefaultTimeStep(model));
-    const double friction = *Option(options, "friction");
-    const double limit = Option(options, "stretch_limit").value_or(model.stretch_limit);
+    const double dt = ExplicitEulerOption(options, "dt").value_or(DefaultTimeStep(model));
+    const double friction = *ExplicitEulerOption(options, "friction");
+    const double limit =
+        ExplicitEulerOption(options, "stretch_limit").value_or(model.stretch_limit);
     assert(dt > 0.0 && friction >= 0.0 && friction < 1.0 && (limit == 0.0 || limit > 1.0));
     std::unique_ptr<ProvotConstraint> provot;  // mutable: keeps its tensions between steps
     if (limit > 0.0) provot = std::make_unique<ProvotConstraint>(model, limit);

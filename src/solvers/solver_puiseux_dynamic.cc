@@ -24,7 +24,7 @@ namespace drape {
 namespace {
 
 // Option `key`: as given, else its default in the catalogue (src/scene/solver_methods.cc).
-std::optional<double> Option(const SolverOptions& options, const char* key) {
+std::optional<double> PuiseuxDynamicOption(const SolverOptions& options, const char* key) {
   return MethodOptionValue("puiseux-dynamic", options.method_options, key);
 }
 
@@ -58,9 +58,10 @@ class PuiseuxDynamicSolver : public Solver {
           unsupported + "' terms");
     }
     // The scene loader checks the ranges (dt > 0, beta >= 0) where the options are given.
-    const double dt = *Option(options, "dt"), beta = *Option(options, "beta");
-    const double t_max = *Option(options, "t_max");
-    const double epsilon = Option(options, "epsilon").value_or(options.tolerance);
+    const double dt = *PuiseuxDynamicOption(options, "dt"),
+                 beta = *PuiseuxDynamicOption(options, "beta");
+    const double t_max = *PuiseuxDynamicOption(options, "t_max");
+    const double epsilon = PuiseuxDynamicOption(options, "epsilon").value_or(options.tolerance);
     assert(dt > 0.0 && beta >= 0.0);
 
     SolverSummary summary;

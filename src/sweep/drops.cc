@@ -29,7 +29,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kWavinessModes = 12;     // angular modes 1 … 12 in the initial waviness
 constexpr int kWavinessSamples = 720;  // angles on which max |g| is found
 
@@ -55,7 +54,7 @@ class DropRandom {
   double Uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }  // [0, 1)
   double Normal() {                                                              // Box–Muller
     const double u = 1.0 - Uniform();
-    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * kPi * Uniform());
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * M_PI * Uniform());
   }
 
  private:
@@ -65,7 +64,7 @@ class DropRandom {
 Eigen::Vector2d PlacementShift(const DrapeTestSpec& test, int drop) {
   DropRandom random(test.seed, drop, Stream::kPlacement);
   const double r = test.placement * std::sqrt(random.Uniform());
-  const double angle = 2.0 * kPi * random.Uniform();
+  const double angle = 2.0 * M_PI * random.Uniform();
   return r * Eigen::Vector2d(std::cos(angle), std::sin(angle));
 }
 
@@ -91,13 +90,11 @@ AngularWave DrawWave(const DrapeTestSpec& test, int drop) {
   }
   double largest = 0.0;
   for (int k = 0; k < kWavinessSamples; ++k) {
-    largest = std::max(largest, std::abs(wave(2.0 * kPi * k / kWavinessSamples)));
+    largest = std::max(largest, std::abs(wave(2.0 * M_PI * k / kWavinessSamples)));
   }
   wave.scale = largest > 0.0 ? 1.0 / largest : 0.0;
   return wave;
 }
-
-std::string Cell(double value) { return FormatNumber(value); }
 
 // A farm task's result: the drops.csv row, then a line with the outline (centre, radii).
 std::string TaskResult(const DropRecord& record, const DropOutline& outline) {
@@ -278,9 +275,10 @@ std::string DropsCsvHeader() {
 }
 
 std::string DropCsvRow(const DropRecord& r) {
-  return std::to_string(r.drop) + "," + Cell(r.offset.x()) + "," + Cell(r.offset.y()) + "," +
-         Cell(r.waviness) + "," + Cell(r.drape_coefficient) + "," + std::to_string(r.folds) + "," +
-         Cell(r.energy) + "," + (r.counted ? "true" : "false") + "," + CsvField(r.state);
+  return std::to_string(r.drop) + "," + CsvNumber(r.offset.x()) + "," + CsvNumber(r.offset.y()) +
+         "," + CsvNumber(r.waviness) + "," + CsvNumber(r.drape_coefficient) + "," +
+         std::to_string(r.folds) + "," + CsvNumber(r.energy) + "," +
+         (r.counted ? "true" : "false") + "," + CsvField(r.state);
 }
 
 DropRecord ParseDropCsvRow(const std::string& row) {

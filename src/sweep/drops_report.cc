@@ -15,8 +15,6 @@
 namespace drape {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // The standard's thresholds (BS 5058; ISO 9073-9) and its three specimen diameters (m).
 constexpr double kLimpBelow = 0.30;
 constexpr double kStiffAbove = 0.85;
@@ -130,7 +128,7 @@ std::vector<std::array<double, 2>> OutlinePoints(const DropOutline& outline) {
   std::vector<std::array<double, 2>> points;
   const int n = static_cast<int>(outline.radius.size());
   for (int k = 0; k < n; ++k) {
-    const double angle = 2.0 * kPi * k / n;
+    const double angle = 2.0 * M_PI * k / n;
     points.push_back({outline.centre.x() + outline.radius[k] * std::cos(angle),
                       outline.centre.y() + outline.radius[k] * std::sin(angle)});
   }

@@ -48,19 +48,6 @@ std::string CsvLine(const std::vector<std::string>& cells) {
   return line;
 }
 
-// A number for a CSV cell: empty when it is not finite (no NaN in any output).
-std::string Cell(double value, int digits = 17) {
-  return std::isfinite(value) ? FormatNumber(value, digits) : "";
-}
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // FNV-1a, 64 bits: a fingerprint of the base scene's text for the task identities.
 std::string Fingerprint(const std::string& bytes) {
   std::uint64_t hash = 14695981039346656037ull;
@@ -84,15 +71,16 @@ std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveR
   std::vector<std::string> cells = TaskCells(spec, task);
   const Stability& stability = result.stability;
   const bool stable_known = stability.computed && result.certificate.unsound.empty();
-  cells.insert(cells.end(),
-               {result.converged ? "yes" : "no", result.summary.termination,
-                std::to_string(result.summary.iterations), Cell(result.summary.wall_time_s, 4),
-                Cell(result.certificate.energy), Cell(result.certificate.relative_residual),
-                Cell(result.certificate.max_node_force),
-                stable_known ? (stability.stable ? "yes" : "no") : "",
-                report.drape ? Cell(ReportedDrapeCoefficient(report)) : "",
-                report.drape ? std::to_string(report.drape->folds.count) : "", StateText(result),
-                warm_from >= 0 ? std::to_string(warm_from) : ""});
+  cells.insert(
+      cells.end(),
+      {result.converged ? "yes" : "no", result.summary.termination,
+       std::to_string(result.summary.iterations), CsvNumber(result.summary.wall_time_s, 4),
+       CsvNumber(result.certificate.energy), CsvNumber(result.certificate.relative_residual),
+       CsvNumber(result.certificate.max_node_force),
+       stable_known ? (stability.stable ? "yes" : "no") : "",
+       report.drape ? CsvNumber(ReportedDrapeCoefficient(report)) : "",
+       report.drape ? std::to_string(report.drape->folds.count) : "", StateText(result),
+       warm_from >= 0 ? std::to_string(warm_from) : ""});
   return cells;
 }
 
@@ -115,8 +103,8 @@ struct Context {
 // The row of a finished task (its folder holds a row for the same variant), else nothing.
 std::optional<std::string> FinishedRow(const Context& context, int task) {
   const fs::path folder = TaskFolder(context.directory, context.spec, task);
-  if (ReadFile(folder / kVariantFile) != context.identities[task]) return std::nullopt;
-  std::istringstream row(ReadFile(folder / kRowFile));
+  if (ReadWholeFile(folder / kVariantFile) != context.identities[task]) return std::nullopt;
+  std::istringstream row(ReadWholeFile(folder / kRowFile));
   std::string header, line;
   if (!std::getline(row, header) || header != context.header || !std::getline(row, line)) {
     return std::nullopt;
@@ -357,7 +345,8 @@ std::vector<std::string> TaskIdentities(const SweepSpec& spec) {
   // The base scene by its name and its text (not its full path: a sweep folder moved with its
   // scene, e.g. onto a cluster, keeps its finished tasks).
   const std::string scene = "scene: " + fs::path(spec.scene_file).filename().string() +
-                            "\nscene_fingerprint: " + Fingerprint(ReadFile(spec.scene_file)) + "\n";
+                            "\nscene_fingerprint: " + Fingerprint(ReadWholeFile(spec.scene_file)) +
+                            "\n";
   std::vector<std::string> identities(spec.tasks.size());
   for (const auto& chain : spec.chains) {  // in chain order: a task's source comes before it
     for (const int task : chain) {
@@ -417,7 +406,7 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   if (!farm.coordinator) return summary;
   table.Write();
   WriteAtomically(fs::path(summary.directory) / "sweep.yaml",
-                  [&](std::ostream& out) { out << ReadFile(spec.file); });
+                  [&](std::ostream& out) { out << ReadWholeFile(spec.file); });
   CountRows(table, &summary);
   if (options.plots && !options.only) WriteSweepReport(spec, summary.directory, log);
   return summary;
