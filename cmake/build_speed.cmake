@@ -42,9 +42,9 @@ endfunction()
 # batch's text, and so its ccache hash, differ from one clone's folder to another's; these include
 # them relative to the clone (`#include "src/scene/mesh.cc"`, found through the target's include
 # path), so a second clone reuses the first one's objects. A unit with a compile definition or an
-# include path of its own (version.cc, test_paths.cc) is compiled by itself; units that share a
-# COMPILE_OPTIONS (the fuzzer's coverage instrumentation of fuzz/CMakeLists.txt) are batched
-# together and their batch gets it. Call it once a target's sources and their properties are final.
+# include path of its own (version.cc, test_paths.cc), or generated in the build folder, is compiled
+# by itself; units that share a COMPILE_OPTIONS (the fuzzer's coverage instrumentation of
+# fuzz/CMakeLists.txt) are batched together and their batch gets it. Call it once a target's sources and their properties are final.
 option(DRAPE_UNITY_BUILD "Compile each folder's units in batches (unity build)" ON)
 set(DRAPE_UNITY_BATCH_SIZE 8 CACHE STRING "Units per batch of the unity build")
 function(drape_unity_build target)
@@ -58,7 +58,8 @@ function(drape_unity_build target)
     get_source_file_property(definitions ${source} COMPILE_DEFINITIONS)
     get_source_file_property(includes ${source} INCLUDE_DIRECTORIES)
     cmake_path(IS_PREFIX PROJECT_SOURCE_DIR ${source} NORMALIZE in_clone)
-    if(definitions OR includes OR NOT in_clone OR NOT source MATCHES "\\.cc$")
+    cmake_path(IS_PREFIX PROJECT_BINARY_DIR ${source} NORMALIZE generated)
+    if(definitions OR includes OR NOT in_clone OR generated OR NOT source MATCHES "\\.cc$")
       list(APPEND kept_alone ${source})
       continue()
     endif()

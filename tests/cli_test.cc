@@ -330,6 +330,79 @@ TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {
   EXPECT_FALSE(fs::exists(out_));
 }
 
+// A misspelt command, option or solver gets the nearest known one, and the usage of the failing
+// command only; `drape help COMMAND` is that command's help.
+TEST_F(CliTest, UnknownWordsGetTheNearestKnownOneAndTheirCommandsUsage) {
+  const std::string scene = WriteScene();
+  const std::vector<std::pair<std::vector<std::string>, std::string>> mistakes = {
+      {{"solv", scene}, "unknown command 'solv'; did you mean 'solve'?"},
+      {{"solve", scene, "--solvr", "newton"},
+       "unknown option '--solvr' of `drape solve`; did you mean '--solver'?"},
+      {{"sweep", "s.yaml", "--thread=2"},
+       "unknown option '--thread' of `drape sweep`; did you mean '--threads'?"},
+      {{"solve", scene, "--solver", "newtn"}, "did you mean 'newton'?"},
+      {{"help", "sovle"}, "help: unknown command 'sovle'; did you mean 'solve'?"},
+  };
+  for (const auto& [args, expected] : mistakes) {
+    const ProgramOutcome outcome = Drape(args);
+    EXPECT_EQ(outcome.exit_status, 2) << expected;
+    EXPECT_NE(outcome.err.find(expected), std::string::npos) << outcome.err;
+  }
+  const ProgramOutcome option = Drape({"solve", scene, "--solvr", "newton"});
+  EXPECT_NE(option.err.find("usage: drape solve "), std::string::npos) << option.err;
+  EXPECT_EQ(option.err.find("drape check"), std::string::npos) << "only the failing command's";
+  const ProgramOutcome help = Drape({"help", "solve"});
+  EXPECT_EQ(help.exit_status, 0) << help.err;
+  EXPECT_NE(help.out.find("--solver"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("drape sweep"), std::string::npos) << help.out;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+// -o is --out on every command that writes a folder.
+TEST_F(CliTest, DashOIsOutOnEveryCommandThatWritesAFolder) {
+  const fs::path other = directory_ / "other";
+  const ProgramOutcome outcome = Drape({"solve", WriteScene(), "-o", other.string()});
+  EXPECT_EQ(outcome.exit_status, 0) << outcome.err;
+  EXPECT_TRUE(fs::exists(other / "summary.json"));
+  for (const char* command : {"compare", "fit", "sweep"}) {
+    EXPECT_NE(Drape({command, "--help"}).out.find("-o,--out"), std::string::npos) << command;
+  }
+}
+
+// A fit or a sweep file given to solve or check names the command that reads it.
+TEST_F(CliTest, AFitOrSweepFileGivenToSolveSaysWhichCommandReadsIt) {
+  const fs::path configs = fs::path(drape_tests::kSourceDir) / "configs";
+  const ProgramOutcome fit = Drape({"solve", (configs / "fit" / "fit_scan.yaml").string()});
+  EXPECT_EQ(fit.exit_status, 2);
+  EXPECT_NE(fit.err.find("this is a fit file, not a scene: run `drape fit "), std::string::npos)
+      << fit.err;
+  const ProgramOutcome sweep =
+      Drape({"check", (configs / "sweep" / "sweep_cotton_map.yaml").string()});
+  EXPECT_EQ(sweep.exit_status, 2);
+  EXPECT_NE(sweep.err.find("run `drape sweep "), std::string::npos) << sweep.err;
+}
+
+// README's synopsis is the parser's: its "The command line" block is, line for line, the usage
+// that `drape help` prints (both come from the parser; an option changed there and not in the
+// README fails here).
+TEST_F(CliTest, TheReadmeSynopsisIsTheParsers) {
+  const std::string readme = ReadText(fs::path(drape_tests::kSourceDir) / "README.md");
+  const std::string start = "## The command line\n\n```\n";
+  const size_t begin = readme.find(start);
+  ASSERT_NE(begin, std::string::npos);
+  const size_t end = readme.find("```", begin + start.size());
+  const std::string block = readme.substr(begin + start.size(), end - begin - start.size());
+  const ProgramOutcome help = Drape({"help"});
+  std::istringstream lines(help.out);
+  std::string usage;
+  bool inside = false;
+  for (std::string line; std::getline(lines, line);) {
+    inside = inside ? line.rfind("       drape ", 0) == 0 : line.rfind("usage: drape ", 0) == 0;
+    if (inside) usage += line.substr(7) + "\n";
+  }
+  EXPECT_EQ(block, usage) << "README.md's block should be:\n" << usage;
+}
+
 // `drape fit` itself is tested in tests/fit_*_test.cc; here only its bad-input path.
 TEST_F(CliTest, FitWithAMissingFitFileIsBadInput) {
   const ProgramOutcome outcome = Drape({"fit", "x.yaml"});

@@ -26,6 +26,7 @@
 #include "costs/fv_bending.h"
 #include "costs/fv_bending_friction.h"
 #include "costs/fv_membrane.h"
+#include "costs/fv_shear_friction.h"
 #include "costs/plane_contact.h"
 #include "costs/pressure_potential.h"
 #include "costs/sphere_contact.h"
@@ -231,6 +232,18 @@ struct Sample<FvBendingFriction> {
   }
 };
 
+template <>
+struct Sample<FvShearFriction> {
+  static constexpr const char* kName = "FvShearFriction";
+  // δ = 0.01 rad: the generic state's γ ≈ 0.1 rad is beyond it, the rest state at its kink.
+  // HG = 4e5 N/m (not a fabric's): energies of a few J, as FvBendingFriction's sample.
+  static FvShearFriction Make() { return FvShearFriction::Create(4e5, 0.01, 0.012, 0.01); }
+  static std::vector<std::vector<double>> States() {  // nodes P, A, B; P off the origin
+    return {{0.0003, 0.0002, 0.0004, 0.0101, 0.0005, -0.0003, 0.0012, 0.0118, 0.0009},
+            {0.0003, 0.0002, 0, 0.0103, 0.0002, 0, 0.0003, 0.0122, 0}};
+  }
+};
+
 template <typename Functor>
 std::unique_ptr<Term> SampleTerm() {
   std::vector<int> nodes(Functor::kNumNodes);
@@ -245,7 +258,7 @@ using Functors =
     ::testing::Types<SpringStretch, TensionOnlySpring, ZeroLengthSpring, StretchLimitBarrier,
                      ConstantForcePotential, PressurePotential, SphereContact, PlaneContact,
                      DiskContact, EdgeContact<DiskContact>, CylinderContact, BoxContact, FvMembrane,
-                     FvBendingEdge, FvBending, FvBendingFriction>;
+                     FvBendingEdge, FvBending, FvBendingFriction, FvShearFriction>;
 
 class FunctorNames {
  public:
@@ -293,10 +306,11 @@ void ExpectResidualJacobianMatchesDifferences(const ceres::CostFunction& cost,
 TYPED_TEST(CostsTest, CeresGradientCheckerAcceptsTheResidualPath) {
   const auto term = SampleTerm<TypeParam>();
   const std::unique_ptr<ceres::CostFunction> cost(term->NewCostFunction());
-  if constexpr (std::is_same_v<TypeParam, FvBendingFriction>) {
-    // Ceres' GradientChecker (Ridders' differences) reports P's coordinates 1e-4 to 0.8 off for
-    // this functor, scaling with H, where plain central differences of the same cost function
-    // agree with its Jets to 1e-9: checked that way instead.
+  if constexpr (std::is_same_v<TypeParam, FvBendingFriction> ||
+                std::is_same_v<TypeParam, FvShearFriction>) {
+    // Ceres' GradientChecker (Ridders' differences) reports some coordinates 1e-4 to 0.8 off for
+    // the two frictions, whose residual is √(2 (E + shift)), scaling with H, where plain central
+    // differences of the same cost function agree with its Jets to 1e-9: checked that way.
     for (const std::vector<double>& state : Sample<TypeParam>::States()) {
       ExpectResidualJacobianMatchesDifferences(*cost, state, TypeParam::kNumNodes);
     }

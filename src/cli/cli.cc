@@ -18,6 +18,7 @@
 #include "src/analysis/levels.h"
 #include "src/analysis/mesh_rule.h"
 #include "src/cli/progress.h"
+#include "src/cli/usage.h"
 #include "src/compare/compare.h"
 #include "src/fit/fit_file.h"
 #include "src/fit/fit_methods.h"
@@ -36,6 +37,7 @@
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
+#include "src/scene/yaml_reader.h"
 #include "src/solvers/run.h"
 #include "src/solvers/solver.h"
 #include "src/solvers/state_text.h"
@@ -47,20 +49,6 @@
 namespace drape {
 
 namespace {
-
-constexpr char kUsage[] =
-    "usage: drape solve [OPTIONS] [--] SCENE.yaml   (--solver NAME, --out DIR, --set "
-    "key.path=value,\n"
-    "                   --drops N, --threads N)\n"
-    "       drape check [OPTIONS] [--] SCENE.yaml   (--set key.path=value)\n"
-    "       drape solvers\n"
-    "       drape compare [OPTIONS] [--] SCENE.yaml...   (--solvers all|a,b,..., --out DIR,\n"
-    "                     --repeat N, --time-limit S, --set key.path=value, --no-plots)\n"
-    "       drape fit [OPTIONS] [--] FIT.yaml   (--out DIR, --method NAME, --set key.path=value)\n"
-    "       drape sweep [OPTIONS] [--] SWEEP.yaml   (-o/--out DIR, --only I, --task-id [I],\n"
-    "                   --threads N, --no-plots)\n"
-    "       drape completion bash   (the bash completion script)\n"
-    "       drape help | --help | --version;  drape COMMAND --help for a command's options\n";
 
 constexpr char kDescription[] =
     "drape finds the equilibrium shape of fabric by minimising its total potential energy.";
@@ -77,7 +65,7 @@ constexpr char kExitStatus[] =
 constexpr char kSetHelp[] =
     "override a scene key (repeatable; the value is YAML, e.g. mesh.nodes=[30,30])";
 
-// Bad usage of the command itself (not of the scene): the message and the usage lines.
+// Bad usage of the command itself (not of the scene): the message; Dispatch adds the usage.
 class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -95,17 +83,21 @@ struct Arguments {
   std::vector<std::string> overrides;
 };
 
-std::string SolverNames() {
-  std::string names;
-  for (const auto& info : AllSolvers()) names += (names.empty() ? "" : ", ") + info.name;
-  return names;
+// "unknown solver 'newtn' (known: newton, ...); did you mean 'newton'?"
+std::string UnknownSolverText(const std::string& name) {
+  std::vector<std::string> names;
+  std::string list;
+  for (const auto& info : AllSolvers()) {
+    names.push_back(info.name);
+    list += (list.empty() ? "" : ", ") + info.name;
+  }
+  return "unknown solver '" + name + "' (known: " + list + ")" + SuggestionText(name, names);
 }
 
 // The scene's method must exist before anything is built (a typo should not cost a model build).
 void RequireKnownSolver(const Scene& scene) {
   if (!FindSolver(scene.solver.method)) {
-    throw InputError(scene.solver.where,
-                     "unknown solver '" + scene.solver.method + "' (known: " + SolverNames() + ")");
+    throw InputError(scene.solver.where, UnknownSolverText(scene.solver.method));
   }
 }
 
@@ -243,8 +235,7 @@ int SolveDrops(const Arguments& arguments, const Scene& scene, const std::string
 int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
           const CommandOptions& options) {
   if (arguments.solver && !FindSolver(*arguments.solver)) {
-    err << "drape: unknown solver '" << *arguments.solver << "' (known: " << SolverNames() << ")\n";
-    return kExitBadInput;
+    throw UsageError("--solver: " + UnknownSolverText(*arguments.solver));
   }
   Scene scene = LoadScene(arguments.file, arguments.overrides);
   if (arguments.solver) scene.solver.method = *arguments.solver;
@@ -466,11 +457,19 @@ int ListSolvers(std::ostream& out) {
   return kExitConverged;
 }
 
+void AddSetOption(CLI::App* command, std::vector<std::string>* overrides) {
+  command->add_option("--set", *overrides, kSetHelp)
+      ->allow_extra_args(false)
+      ->type_name("key.path=value ...");
+}
+
 // The options shared by the commands that load a scene: the file (after `--` if it starts with a
 // dash) and the repeatable --set.
-void AddSceneArguments(CLI::App* command, Arguments* arguments, const std::string& what) {
-  command->add_option("file", arguments->file, what)->required();
-  command->add_option("--set", arguments->overrides, kSetHelp)->allow_extra_args(false);
+// `file_name` names the file in the synopsis ("SCENE.yaml").
+void AddSceneArguments(CLI::App* command, Arguments* arguments, const std::string& what,
+                       const std::string& file_name = "SCENE.yaml") {
+  command->add_option("file", arguments->file, what)->required()->type_name(file_name);
+  AddSetOption(command, &arguments->overrides);
 }
 
 // A finite number > 0 ("inf", "nan", "5s" and "0" are refused).
@@ -525,84 +524,34 @@ std::string CommandLine(const std::vector<std::string>& args) {
   return line;
 }
 
-// Every subcommand of `app`, parsed or not, in the order they were added.
-std::vector<const CLI::App*> AllSubcommands(const CLI::App& app) {
-  return app.get_subcommands([](const CLI::App*) { return true; });
-}
-
-// The option names of `command` (--long and -s), without its positionals.
-std::string OptionWords(const CLI::App& command) {
-  std::string words;
-  for (const CLI::Option* option : command.get_options()) {
-    for (const std::string& name : option->get_lnames())
-      words += (words.empty() ? "--" : " --") + name;
-    for (const std::string& name : option->get_snames())
-      words += (words.empty() ? "-" : " -") + name;
+// The usage lines after a usage error: the failing command's synopsis only, where `args` name
+// one; else every command's.
+std::string UsageText(const CLI::App& app, const std::vector<std::string>& args) {
+  if (const CLI::App* command = NamedCommand(app, args)) {
+    return "usage: " + CommandSynopsis(*command) + "\n(`drape help " + command->get_name() +
+           "` for its options)\n";
   }
-  return words;
-}
-
-std::string Joined(const std::vector<std::string>& words) {
-  std::string text;
-  for (const std::string& word : words) text += (text.empty() ? "" : " ") + word;
-  return text;
-}
-
-// The values an option takes, where drape has their list: methods, fit methods, shells.
-std::string OptionValueCases() {
-  std::vector<std::string> solvers;
-  for (const SolverInfo& solver : AllSolvers()) solvers.push_back(solver.name);
-  return "      --solver) COMPREPLY=($(compgen -W \"" + Joined(solvers) +
-         "\" -- \"$cur\")); return ;;\n"
-         "      --solvers) COMPREPLY=($(compgen -W \"all " +
-         Joined(solvers) +
-         "\" -- \"$cur\")); return ;;\n"
-         "      --method) COMPREPLY=($(compgen -W \"" +
-         Joined(FitMethods()) + "\" -- \"$cur\")); return ;;\n";
-}
-
-// The bash completion script, generated from the parser itself (so it lists exactly the
-// subcommands and options that `drape` accepts): subcommands first, then per subcommand its
-// options, the values of --solver, --solvers and --method, and file names for the rest.
-std::string BashCompletion(const CLI::App& app) {
-  std::string commands, cases;
-  for (const CLI::App* command : AllSubcommands(app)) {
-    const std::string& name = command->get_name();
-    commands += (commands.empty() ? "" : " ") + name;
-    std::string words = OptionWords(*command);
-    if (name == "completion") words += " bash";
-    cases += "    " + name + ") words=\"" + words + "\" ;;\n";
+  std::string text = Synopsis(app);
+  for (size_t at = text.find('\n'); at + 1 < text.size(); at = text.find('\n', at + 1)) {
+    text.insert(at + 1, "       ");
   }
-  return "# bash completion for drape, generated by `drape completion bash`\n"
-         "_drape() {\n"
-         "  local cur=\"${COMP_WORDS[COMP_CWORD]}\" prev=\"${COMP_WORDS[COMP_CWORD-1]}\"\n"
-         "  local command=\"\" i words\n"
-         "  for ((i = 1; i < COMP_CWORD; i++)); do\n"
-         "    case \" " +
-         commands +
-         " \" in\n"
-         "      *\" ${COMP_WORDS[i]} \"*) command=\"${COMP_WORDS[i]}\"; break ;;\n"
-         "    esac\n"
-         "  done\n"
-         "  if [[ -z \"$command\" ]]; then\n"
-         "    COMPREPLY=($(compgen -W \"" +
-         commands + " " + OptionWords(app) +
-         "\" -- \"$cur\"))\n"
-         "    return\n"
-         "  fi\n"
-         "  case \"$prev\" in\n" +
-         OptionValueCases() +
-         "  esac\n"
-         "  case \"$command\" in\n" +
-         cases +
-         "  esac\n"
-         "  if [[ \"$cur\" == -* || \"$command\" == completion ]]; then\n"
-         "    COMPREPLY=($(compgen -W \"$words\" -- \"$cur\"))\n"
-         "  else\n"
-         "    COMPREPLY=($(compgen -f -- \"$cur\"))\n"
-         "  fi\n"
-         "}\n"
-         "complete -o filenames -o bashdefault -F _drape drape\n";
+  return "usage: " + text;
+}
+
+// `drape help [COMMAND]`: the command's help, or drape's.
+int PrintHelp(const CLI::App& app, const std::string& name, std::ostream& out) {
+  if (name.empty()) {  // app.help() would describe the selected subcommand, `help` itself
+    out << app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+    return kExitConverged;
+  }
+  const CLI::App* command = NamedCommand(app, {name});
+  if (!command) {
+    std::vector<std::string> names;
+    for (const CLI::App* known : AllSubcommands(app)) names.push_back(known->get_name());
+    throw UsageError("help: unknown command '" + name + "'" + SuggestionText(name, names));
+  }
+  out << command->help();
+  return kExitConverged;
 }
 
 int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
@@ -610,7 +559,6 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   CLI::App app(kDescription, "drape");
   app.set_version_flag("--version", DrapeVersion(), "print drape's version and exit");
   app.require_subcommand(1);
-  app.footer(std::string("\n") + kUsage + kExitStatus);
   app.get_formatter()->column_width(34);
 
   Arguments arguments;
@@ -618,21 +566,27 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   CLI::App* solve = app.add_subcommand(
       "solve", "load the scene, solve it, write the results into output.directory");
   AddSceneArguments(solve, &arguments, "scene file (YAML)");
-  solve->add_option("--solver", arguments.solver,
-                    "use this method instead of the scene's solver.method (see `drape solvers`)");
-  solve->add_option("--out", arguments.out,
-                    "write into this folder instead of output.directory (default: "
-                    "output.directory, else out/<scene name>)");
+  solve
+      ->add_option("--solver", arguments.solver,
+                   "use this method instead of the scene's solver.method (see `drape solvers`)")
+      ->type_name("NAME");
+  solve
+      ->add_option("-o,--out", arguments.out,
+                   "write into this folder instead of output.directory (default: "
+                   "output.directory, else out/<scene name>)")
+      ->type_name("DIR");
   solve
       ->add_option("--drops", arguments.drops,
                    "solve N drops of the scene's drape test, seeded perturbations of the "
                    "specimen's placement and waviness (default: drape_test.drops)")
-      ->check(CLI::Range(1, 10000));
+      ->check(CLI::Range(1, 10000))
+      ->type_name("N");
   solve
       ->add_option("--threads", arguments.threads,
                    std::string("with --drops, the drops' ") + kLocalThreadsHelp)
       ->check(kThreadCount)
-      ->capture_default_str();
+      ->capture_default_str()
+      ->type_name("N");
   solve->footer(kExitStatus);
 
   CLI::App* check = app.add_subcommand(
@@ -647,20 +601,27 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   CompareOptions compare_options;
   CLI::App* compare = app.add_subcommand(
       "compare", "solver comparison report (speed against error) for one or more scenes");
-  compare->add_option("scenes", compare_options.scenes, "scene files (YAML)")->required();
+  compare->add_option("scenes", compare_options.scenes, "scene files (YAML)")
+      ->required()
+      ->type_name("SCENE.yaml...");
   compare
       ->add_option("--solvers", compare_options.solvers,
                    "all, or a comma-separated list of methods (default: all)")
       ->delimiter(',')
-      ->allow_extra_args(false);
-  compare->add_option("--out", compare_options.out_dir, "report folder")->capture_default_str();
+      ->allow_extra_args(false)
+      ->type_name("all|a,b,...");
+  compare->add_option("-o,--out", compare_options.out_dir, "report folder")
+      ->capture_default_str()
+      ->type_name("DIR");
   compare->add_option("--repeat", compare_options.repeat, "timed repeats of each run (median)")
       ->check(kWholeNumber)
-      ->capture_default_str();
+      ->capture_default_str()
+      ->type_name("N");
   compare->add_option("--time-limit", compare_options.time_limit, "seconds per run")
       ->check(kFinitePositive)
-      ->capture_default_str();
-  compare->add_option("--set", compare_options.overrides, kSetHelp)->allow_extra_args(false);
+      ->capture_default_str()
+      ->type_name("S");
+  AddSetOption(compare, &compare_options.overrides);
   bool no_plots = false;
   compare->add_flag("--no-plots", no_plots, "write the report without running gnuplot");
 
@@ -668,15 +629,18 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       "fit",
       "fit scene parameters (stiffnesses) to measurements; writes fit.json, history.csv, "
       "sensitivity.csv, fit.png, report.md");
-  AddSceneArguments(fit, &arguments, "fit file (YAML)");
-  fit->add_option("--out", arguments.out,
+  AddSceneArguments(fit, &arguments, "fit file (YAML)", "FIT.yaml");
+  fit->add_option("-o,--out", arguments.out,
                   "write into this folder (default: the fit file's output.directory, else "
-                  "out/<fit file name>)");
+                  "out/<fit file name>)")
+      ->type_name("DIR");
   fit->add_option("--method", arguments.method,
-                  "outer method instead of the fit file's (" + FitMethodList() + ")");
+                  "outer method instead of the fit file's (" + FitMethodList() + ")")
+      ->type_name("NAME");
   fit->add_option("--threads", arguments.threads, kLocalThreadsHelp)
       ->check(kThreadCount)
-      ->capture_default_str();
+      ->capture_default_str()
+      ->type_name("N");
   fit->get_option("--set")->description(
       "override a key of every scene the fit solves (repeatable; value is YAML; the fitted "
       "parameters win)");
@@ -686,22 +650,30 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       "sweep",
       "solve a base scene over a grid, zip or sample of its keys (one task per variant, each in "
       "OUT/tasks/NNNN); writes sweep.csv, sweep.html; reruns skip the finished tasks");
-  sweep->add_option("file", sweep_arguments.file, "sweep file (YAML)")->required();
-  sweep->add_option("-o,--out", sweep_arguments.out,
-                    "write into this folder (default: the sweep file's output.directory, else "
-                    "out/<sweep file name>)");
-  sweep->add_option("--only", sweep_arguments.only, "run only this task (0-based)");
+  sweep->add_option("file", sweep_arguments.file, "sweep file (YAML)")
+      ->required()
+      ->type_name("SWEEP.yaml");
+  sweep
+      ->add_option("-o,--out", sweep_arguments.out,
+                   "write into this folder (default: the sweep file's output.directory, else "
+                   "out/<sweep file name>)")
+      ->type_name("DIR");
+  sweep->add_option("--only", sweep_arguments.only, "run only this task (0-based)")->type_name("I");
   sweep
       ->add_option("--task-id", sweep_arguments.task_id,
                    "run only this task; without a value, $SLURM_ARRAY_TASK_ID (a Slurm job array)")
-      ->expected(0, 1);
+      ->expected(0, 1)
+      ->type_name("I");
   sweep->add_option("--threads", sweep_arguments.threads, kLocalThreadsHelp)
       ->check(kThreadCount)
-      ->capture_default_str();
+      ->capture_default_str()
+      ->type_name("N");
   sweep->add_flag("--no-plots", sweep_arguments.no_plots,
                   "write sweep.csv without running gnuplot");
 
-  CLI::App* help = app.add_subcommand("help", "print this help");
+  std::string help_topic;
+  CLI::App* help = app.add_subcommand("help", "print this help, or a command's");
+  help->add_option("command", help_topic, "the command")->type_name("COMMAND");
 
   std::string shell;
   CLI::App* completion =
@@ -710,41 +682,45 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
                          "share/bash-completion/completions/drape)");
   completion->add_option("shell", shell, "the shell (bash)")
       ->required()
-      ->check(CLI::IsMember({"bash"}));
+      ->check(CLI::IsMember({"bash"}))
+      ->type_name("bash");
+  app.footer("\n" + UsageText(app, {}) + kExitStatus);
 
-  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
   try {
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    out << app.help();
-    return kExitConverged;
-  } catch (const CLI::CallForAllHelp&) {
-    out << app.help("", CLI::AppFormatMode::All);
-    return kExitConverged;
-  } catch (const CLI::CallForVersion&) {
-    out << "drape " << DrapeVersion() << "\n";
-    return kExitConverged;
-  } catch (const CLI::ParseError& error) {
-    throw UsageError(error.what());
-  }
+    if (const auto unknown = UnknownWord(app, args)) throw UsageError(*unknown);
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
+    try {
+      app.parse(reversed);
+    } catch (const CLI::CallForHelp&) {
+      out << app.help();
+      return kExitConverged;
+    } catch (const CLI::CallForAllHelp&) {
+      out << app.help("", CLI::AppFormatMode::All);
+      return kExitConverged;
+    } catch (const CLI::CallForVersion&) {
+      out << "drape " << DrapeVersion() << "\n";
+      return kExitConverged;
+    } catch (const CLI::ParseError& error) {
+      throw UsageError(error.what());
+    }
 
-  if (help->parsed()) {
-    out << app.help();
-    return kExitConverged;
+    if (help->parsed()) return PrintHelp(app, help_topic, out);
+    if (completion->parsed()) {
+      out << BashCompletion(app);
+      return kExitConverged;
+    }
+    if (app.got_subcommand("solvers")) return ListSolvers(out);
+    if (compare->parsed()) {
+      compare_options.plots = !no_plots;
+      return RunCompare(compare_options, err, &out);
+    }
+    if (fit->parsed()) return Fit(arguments, out, err);
+    if (sweep->parsed()) return Sweep(sweep_arguments, arguments.command_line, out, err);
+    if (check->parsed()) return Check(arguments, out);
+    return Solve(arguments, out, err, options);
+  } catch (const UsageError& error) {
+    throw UsageError(std::string(error.what()) + "\n" + UsageText(app, args));
   }
-  if (completion->parsed()) {
-    out << BashCompletion(app);
-    return kExitConverged;
-  }
-  if (app.got_subcommand("solvers")) return ListSolvers(out);
-  if (compare->parsed()) {
-    compare_options.plots = !no_plots;
-    return RunCompare(compare_options, err, &out);
-  }
-  if (fit->parsed()) return Fit(arguments, out, err);
-  if (sweep->parsed()) return Sweep(sweep_arguments, arguments.command_line, out, err);
-  if (check->parsed()) return Check(arguments, out);
-  return Solve(arguments, out, err, options);
 }
 
 }  // namespace
@@ -755,7 +731,7 @@ int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   try {
     return Dispatch(args, out, err, options);
   } catch (const UsageError& error) {
-    err << "drape: " << error.what() << "\n" << kUsage;
+    err << "drape: " << error.what();
   } catch (const InputError& error) {
     err << error.what() << "\n";
   } catch (const std::bad_alloc&) {

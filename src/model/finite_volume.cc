@@ -9,6 +9,7 @@
 #include "costs/fv_bending.h"
 #include "costs/fv_bending_friction.h"
 #include "costs/fv_membrane.h"
+#include "costs/fv_shear_friction.h"
 #include "costs/spring_stretch.h"
 
 namespace drape {
@@ -174,15 +175,22 @@ void AddBending(const FiniteVolumeSpec& spec, const Mesh& mesh, int p, const Nei
   }
 }
 
-void AddMembrane(const MembraneRigidities& e, const Mesh& mesh, int p, const Neighbours& nb,
-                 Model* model) {
+// The four quarters of control volume p: membrane, and the shear friction where the fabric has it.
+// The friction's least-squares shift, HG A_q, its energy at a shear angle of 1 rad, keeps the
+// ceres-* residual √(2 (E + shift)) smooth at rest, where E = 0 (as AddBendingFriction's).
+void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, const Mesh& mesh, int p,
+                 const Neighbours& nb, Model* model) {
   for (int a : {nb.e, nb.w}) {
     for (int b : {nb.n, nb.s}) {
       if (a < 0 || b < 0) continue;
-      model->terms.push_back(
-          MakeTerm("fv_membrane", {p, a, b},
-                   FvMembrane::Create(e.e1, e.e2, e.e12, e.g, RestDistance(mesh, p, a),
-                                      RestDistance(mesh, p, b))));
+      const double rest_a = RestDistance(mesh, p, a), rest_b = RestDistance(mesh, p, b);
+      model->terms.push_back(MakeTerm("fv_membrane", {p, a, b},
+                                      FvMembrane::Create(e.e1, e.e2, e.e12, e.g, rest_a, rest_b)));
+      if (!(spec.shear_friction > 0.0)) continue;
+      model->terms.push_back(MakeTerm("fv_shear_friction", {p, a, b},
+                                      FvShearFriction::Create(spec.shear_friction, rest_a, rest_b,
+                                                              spec.shear_friction_smoothing),
+                                      spec.shear_friction * rest_a * rest_b / 4.0));
     }
   }
 }
@@ -211,7 +219,7 @@ void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, c
   for (int p = 0; p < n; ++p) {  // a full grid's ids run row by row: p = j*nu + i
     const Neighbours nb = NeighboursOf(lattice, mesh.grid_index[p][0], mesh.grid_index[p][1]);
     AddBending(*of_node[p], mesh, p, nb, model);
-    AddMembrane(rigidities.at(of_node[p]), mesh, p, nb, model);
+    AddMembrane(rigidities.at(of_node[p]), *of_node[p], mesh, p, nb, model);
   }
 }
 

@@ -227,6 +227,10 @@ void WriteFiniteVolume(const FiniteVolumeSpec& fv, YAML::Emitter& out) {
     Key(out, "bending_friction_smoothing");
     Number(out, fv.bending_friction_smoothing);
   }
+  if (fv.shear_friction > 0.0) {
+    Key(out, "shear_friction_smoothing");
+    Number(out, fv.shear_friction_smoothing);
+  }
   out << YAML::EndMap;
 }
 

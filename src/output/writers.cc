@@ -617,6 +617,9 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
     if (fv.bending_friction_warp > 0.0 || fv.bending_friction_weft > 0.0) {
       values.push_back({"bending_friction_smoothing", fv.bending_friction_smoothing, "1/m"});
     }
+    if (fv.shear_friction > 0.0) {
+      values.push_back({"shear_friction_smoothing", fv.shear_friction_smoothing, "rad"});
+    }
   }
   const std::pair<const char*, const SpringFamilySpec*> families[] = {
       {"structural", &material.springs.structural},

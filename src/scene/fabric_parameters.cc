@@ -14,6 +14,10 @@ double KesBendingFriction(double two_hb_gf_cm_per_cm) {
   return 0.5 * two_hb_gf_cm_per_cm * kGramForce;
 }
 
+double KesShearFriction(double two_hg_gf_per_cm) {
+  return 0.5 * two_hg_gf_per_cm * kGramForce / kCentimetre;
+}
+
 double KesBendingRigidity(double b_gf_cm) { return b_gf_cm * kGramForce * kCentimetre; }
 
 double KesShearRigidity(double g_gf_per_cm_deg) {

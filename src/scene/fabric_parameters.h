@@ -31,6 +31,10 @@ double KesBendingRigidity(double b_gf_cm);
 // H = 2HB/2 (N·m/m = N): H = 2HB/2 × 9.80665e-3 N × 1e-2 m / 1e-2 m = 2HB × 4.903325e-3.
 double KesBendingFriction(double two_hb_gf_cm_per_cm);
 
+// KES 2HG (gf/cm, the width of the shear hysteresis at a shear angle of 0.5°) → the friction force
+// per unit width HG = 2HG/2 (N/m): HG = 2HG/2 × 9.80665e-3 N / 1e-2 m = 2HG × 0.4903325.
+double KesShearFriction(double two_hg_gf_per_cm);
+
 // KES G (gf/(cm·deg)) → the model's G (N/m, per radian of shear angle):
 // G = G_kes × (9.80665e-3 N / 1e-2 m) × (180/π) = G_kes × 56.188.
 double KesShearRigidity(double g_gf_per_cm_deg);

@@ -16,7 +16,8 @@ const std::vector<FiniteVolumeKey>& FiniteVolumeKeys() {
       {"bending_friction_warp", &FiniteVolumeSpec::bending_friction_warp, Range::kNonNegative, "N",
        false},
       {"bending_friction_weft", &FiniteVolumeSpec::bending_friction_weft, Range::kNonNegative, "N",
-       false}};
+       false},
+      {"shear_friction", &FiniteVolumeSpec::shear_friction, Range::kNonNegative, "N/m", false}};
   return keys;
 }
 

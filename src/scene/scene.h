@@ -113,6 +113,10 @@ struct FiniteVolumeSpec {
   // (costs/fv_bending_friction.h), and δ, the curvature (1/m) below which its kink is smoothed.
   double bending_friction_warp = 0, bending_friction_weft = 0;
   double bending_friction_smoothing = 0.1;
+  // Yarn friction in shear (KES 2HG/2), N/m: 0 is the elastic fabric
+  // (costs/fv_shear_friction.h), and δ, the shear angle (rad) below which its kink is smoothed.
+  double shear_friction = 0;
+  double shear_friction_smoothing = 0.001;
   Location where;
 };
 

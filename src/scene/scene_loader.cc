@@ -371,9 +371,9 @@ double ReadParameter(const YamlMap& map, const std::string& key, const std::stri
 
 // finite_volume.kes: KES-FB measurements in their own units (src/scene/fabric_parameters.h).
 const std::vector<std::string>& KesKeys() {
-  static const std::vector<std::string> keys = {"B_warp",   "B_weft",   "G",       "W",
-                                                "EMT_warp", "EMT_weft", "LT_warp", "LT_weft",
-                                                "Fm",       "2HB_warp", "2HB_weft"};
+  static const std::vector<std::string> keys = {"B_warp",   "B_weft",   "G",        "W",
+                                                "EMT_warp", "EMT_weft", "LT_warp",  "LT_weft",
+                                                "Fm",       "2HB_warp", "2HB_weft", "2HG"};
   return keys;
 }
 
@@ -418,10 +418,27 @@ void ReadBendingFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
   }
 }
 
+// The friction force in shear: shear_friction (N/m) or kes.2HG (gf/cm), at most one of the two;
+// none is the elastic fabric.
+void ReadShearFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
+                       FiniteVolumeSpec* fv) {
+  const auto si = map.Find("shear_friction");
+  const auto measured = kes ? kes->Find("2HG") : std::nullopt;
+  if (si && measured) {
+    Fail(*measured, "give shear_friction in one way only: 'shear_friction' is given too");
+  }
+  if (si) fv->shear_friction = ReadNonNegative(*si);
+  if (measured) fv->shear_friction = KesShearFriction(ReadNonNegative(*measured));
+  if (const auto v = map.Find("shear_friction_smoothing")) {
+    fv->shear_friction_smoothing = ReadPositive(*v);
+  }
+}
+
 FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& density) {
-  const YamlMap map(value, {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft",
-                            "D_12", "kes", "bending_length", "bending_friction_warp",
-                            "bending_friction_weft", "bending_friction_smoothing"});
+  const YamlMap map(
+      value, {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft", "D_12", "kes",
+              "bending_length", "bending_friction_warp", "bending_friction_weft",
+              "bending_friction_smoothing", "shear_friction", "shear_friction_smoothing"});
   FiniteVolumeSpec fv;
   fv.present = true;
   fv.where = value.where;
@@ -468,6 +485,7 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
          "nu_warp * nu_weft must be less than 1 (else the membrane energy is not positive)");
   }
   ReadBendingFriction(map, kes, &fv);
+  ReadShearFriction(map, kes, &fv);
   if (const auto v = map.Find("D_12")) {
     fv.D_12 = ReadNumber(*v);
     if (!(fv.D_12 * fv.D_12 < fv.D_warp * fv.D_weft)) {
@@ -1095,7 +1113,27 @@ void RefuseWhatTheDrapeTestSets(const YamlMap& top) {
   }
 }
 
+// A fit or sweep file given where a scene is expected: both name their base scene under `scene`,
+// which a scene never has. Says which command reads it, instead of "unknown key 'scene'".
+void RefuseFitAndSweepFiles(const YamlValue& root) {
+  const YAML::Node& node = root.get();
+  if (!node.IsMap() || !node["scene"]) return;
+  const bool fit = node["parameters"] || node["measurements"];
+  const bool sweep = node["grid"] || node["zip"] || node["sample"];
+  Location where = root.where;
+  where.key = "scene";
+  if (!fit && !sweep) {
+    throw InputError(where,
+                     "a scene has no 'scene' key (a fit or a sweep file names its base scene "
+                     "there: run it with `drape fit` or `drape sweep`)");
+  }
+  const std::string kind = fit ? "fit" : "sweep";
+  throw InputError(where, "this is a " + kind + " file, not a scene: run `drape " + kind + " " +
+                              where.file + "`");
+}
+
 void ReadScene(const YamlValue& root, Scene* scene) {
+  RefuseFitAndSweepFiles(root);
   const YamlMap top(root, {"name", "dimension", "mesh", "material", "regions", "fixed", "loads",
                            "obstacles", "contact", "solver", "output", "drape_test"});
   if (const auto name = top.Find("name")) scene->name = ReadName(*name);

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -104,19 +105,23 @@ void ReturnToLastFinite(const Scene& scene, const std::string& method, const Las
   result->non_finite = true;
 }
 
-// The bending friction's smoothing δ (costs/fv_bending_friction.h) from which a solve starts: a
-// smaller δ is reached by continuation, δ = 1, 0.1, … 1/m, each stage started from the last
-// (Newton from the flat state straight at δ = 0.01 1/m took 1,773 iterations for the heavy
-// cantilever of tests/fv_bending_friction_test.cc, where the stages take tens each).
-constexpr double kFrictionContinuationStart = 1.0;  // 1/m
+// The frictions' smoothings δ (costs/fv_bending_friction.h, costs/fv_shear_friction.h) from which a
+// solve starts: smaller ones are reached by continuation, each stage a tenth of the last, started
+// from its positions (Newton from the flat state straight at δ = 0.01 1/m took 1,773 iterations
+// for the heavy cantilever of tests/fv_bending_friction_test.cc, where the stages take tens each).
+constexpr double kBendingContinuationStart = 1.0;  // 1/m
+constexpr double kShearContinuationStart = 0.1;    // rad
 constexpr double kFrictionContinuationRatio = 10.0;
 
-bool HasBendingFriction(const Scene& scene) {
+// Whether the scene's fabric, or one of its regions, has a friction of the given keys.
+bool HasFriction(const Scene& scene, std::initializer_list<double FiniteVolumeSpec::*> members,
+                 std::initializer_list<const char*> keys) {
   if (scene.material.model != "finite_volume") return false;
-  const FiniteVolumeSpec& fv = scene.material.finite_volume;
-  if (fv.bending_friction_warp > 0.0 || fv.bending_friction_weft > 0.0) return true;
+  for (const auto member : members) {
+    if (scene.material.finite_volume.*member > 0.0) return true;
+  }
   for (const RegionSpec& region : scene.regions) {
-    for (const char* key : {"bending_friction_warp", "bending_friction_weft"}) {
+    for (const char* key : keys) {
       const auto given = region.finite_volume.find(key);
       if (given != region.finite_volume.end() && given->second > 0.0) return true;
     }
@@ -124,16 +129,31 @@ bool HasBendingFriction(const Scene& scene) {
   return false;
 }
 
-// The smoothings of the stages before the scene's own (none without friction, or δ ≥ 1 1/m).
-std::vector<double> ContinuationSmoothings(const Scene& scene) {
-  std::vector<double> stages;
-  if (!HasBendingFriction(scene)) return stages;
-  const double target = scene.material.finite_volume.bending_friction_smoothing;
-  for (double smoothing = kFrictionContinuationStart; smoothing > target * (1.0 + 1e-9);
-       smoothing /= kFrictionContinuationRatio) {
-    stages.push_back(smoothing);
+struct Smoothings {
+  double bending = 0.0;  // 1/m
+  double shear = 0.0;    // rad
+};
+
+// The smoothings of the stages before the scene's own (none without friction, or with δ at or
+// above the start): each friction's δ falls tenfold a stage from its start until it is the
+// scene's.
+std::vector<Smoothings> ContinuationStages(const Scene& scene) {
+  const FiniteVolumeSpec& fv = scene.material.finite_volume;
+  const bool bending = HasFriction(
+      scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft},
+      {"bending_friction_warp", "bending_friction_weft"});
+  const bool shear = HasFriction(scene, {&FiniteVolumeSpec::shear_friction}, {"shear_friction"});
+  std::vector<Smoothings> stages;
+  for (double scale = 1.0;; scale /= kFrictionContinuationRatio) {
+    Smoothings stage{fv.bending_friction_smoothing, fv.shear_friction_smoothing};
+    if (bending) stage.bending = std::max(stage.bending, kBendingContinuationStart * scale);
+    if (shear) stage.shear = std::max(stage.shear, kShearContinuationStart * scale);
+    if (stage.bending <= fv.bending_friction_smoothing * (1.0 + 1e-9) &&
+        stage.shear <= fv.shear_friction_smoothing * (1.0 + 1e-9)) {
+      return stages;
+    }
+    stages.push_back(stage);
   }
-  return stages;
 }
 
 SolverOptions OptionsFor(const Scene& scene, const std::string& method) {
@@ -153,9 +173,10 @@ SolverSummary RunContinuation(const Scene& scene, Model& model, const SolverInfo
                               const std::string& method,
                               const std::function<bool(const IterationRecord&)>& on_iteration) {
   SolverSummary total;
-  for (const double smoothing : ContinuationSmoothings(scene)) {
+  for (const Smoothings& smoothings : ContinuationStages(scene)) {
     Scene stage = scene;
-    stage.material.finite_volume.bending_friction_smoothing = smoothing;
+    stage.material.finite_volume.bending_friction_smoothing = smoothings.bending;
+    stage.material.finite_volume.shear_friction_smoothing = smoothings.shear;
     Model stage_model = BuildModel(stage);
     assert(stage_model.positions.size() == model.positions.size());
     stage_model.positions = model.positions;
@@ -263,11 +284,8 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   if (continuation.iterations > 0) {
     result.summary.iterations += continuation.iterations;
     result.summary.wall_time_s += continuation.wall_time_s;
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "; after %d iterations of continuation in the friction's smoothing from %g 1/m",
-                  continuation.iterations, kFrictionContinuationStart);
-    result.summary.termination += text;
+    result.summary.termination += "; after " + std::to_string(continuation.iterations) +
+                                  " iterations of continuation in the friction's smoothing";
   }
   return result;
 }
