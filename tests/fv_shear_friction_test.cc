@@ -5,8 +5,9 @@
 // Reference (derived here, computed in the test). A square sheet of side L, its bottom edge held,
 // every node held in the sheet's plane (as a shear frame holds it: free, the thin sheet would
 // wrinkle out of its plane rather than shear), its top edge pulled along x by a traction that
-// gives each column a force in proportion to its width: τ per unit width in all. With inextensible columns every quarter
-// shears by the same angle γ, the top edge moving by L sin γ, and the energy per unit width is
+// gives each column a force in proportion to its width: τ per unit width in all. With
+// inextensible columns every quarter shears by the same angle γ, the top edge moving by L sin γ,
+// and the energy per unit width is
 //   L (½ G γ² + HG (√(γ² + δ²) − δ)) − τ L sin γ,
 // stationary where G γ + HG γ/√(γ² + δ²) = τ cos γ (bisection). The model adds what the reference
 // leaves out, the columns' stretch and the sheet's bending in its plane as a beam, ≈ 4 τ/E rad
