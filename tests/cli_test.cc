@@ -382,11 +382,11 @@ TEST_F(CliTest, AFitOrSweepFileGivenToSolveSaysWhichCommandReadsIt) {
   EXPECT_NE(sweep.err.find("run `drape sweep "), std::string::npos) << sweep.err;
 }
 
-// README's synopsis is the parser's: its "The command line" block is, line for line, the usage
-// that `drape help` prints (both come from the parser; an option changed there and not in the
-// README fails here).
-TEST_F(CliTest, TheReadmeSynopsisIsTheParsers) {
-  const std::string readme = ReadText(fs::path(drape_tests::kSourceDir) / "README.md");
+// The reference's synopsis is the parser's: docs/reference.md's "The command line" block is, line
+// for line, the usage that `drape help` prints (both come from the parser; an option changed there
+// and not in the reference fails here).
+TEST_F(CliTest, TheReferenceSynopsisIsTheParsers) {
+  const std::string readme = ReadText(fs::path(drape_tests::kSourceDir) / "docs" / "reference.md");
   const std::string start = "## The command line\n\n```\n";
   const size_t begin = readme.find(start);
   ASSERT_NE(begin, std::string::npos);
@@ -400,7 +400,7 @@ TEST_F(CliTest, TheReadmeSynopsisIsTheParsers) {
     inside = inside ? line.rfind("       drape ", 0) == 0 : line.rfind("usage: drape ", 0) == 0;
     if (inside) usage += line.substr(7) + "\n";
   }
-  EXPECT_EQ(block, usage) << "README.md's block should be:\n" << usage;
+  EXPECT_EQ(block, usage) << "docs/reference.md's block should be:\n" << usage;
 }
 
 // `drape fit` itself is tested in tests/fit_*_test.cc; here only its bad-input path.

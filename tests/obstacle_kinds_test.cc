@@ -1,4 +1,4 @@
-// The obstacle-kind registry (src/model/obstacle_kinds.h): the README's table is its rows, each
+// The obstacle-kind registry (src/model/obstacle_kinds.h): the reference's table (docs/reference.md) is its rows, each
 // row's functor sees the scene's geometry, and a kind's keys are checked, located, when the
 // model is built.
 #include "src/model/obstacle_kinds.h"
@@ -20,9 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The rows of README.md's obstacle table: "| `name` | doc |".
+// The rows of docs/reference.md's obstacle table: "| `name` | doc |".
 std::vector<std::pair<std::string, std::string>> ReadmeObstacleRows() {
-  std::ifstream readme(testing::SourcePath("README.md"));
+  std::ifstream readme(testing::SourcePath("docs/reference.md"));
   std::string line;
   bool in_section = false;
   std::vector<std::pair<std::string, std::string>> rows;
@@ -37,7 +37,7 @@ std::vector<std::pair<std::string, std::string>> ReadmeObstacleRows() {
   return rows;
 }
 
-TEST(ObstacleKinds, TheReadmeTableIsTheRegistry) {
+TEST(ObstacleKinds, TheReferenceTableIsTheRegistry) {
   std::vector<std::pair<std::string, std::string>> rows;
   for (const ObstacleKind& kind : ObstacleKinds()) rows.emplace_back(kind.name, kind.doc);
   EXPECT_EQ(ReadmeObstacleRows(), rows);

@@ -1,4 +1,4 @@
-// Scene loading: every key of README.md's scene reference, the defaults, `--set` overrides, and
+// Scene loading: every key of docs/reference.md's scene reference, the defaults, `--set` overrides, and
 // every bad input rejected with "file:line:column: key.path: what is wrong".
 #include "src/scene/scene_loader.h"
 

@@ -1,5 +1,5 @@
 // The catalogue of solver methods (src/scene/solver_methods.h): option ranges, defaults, and
-// README.md's tables of per-method limits and options, which must be exactly the catalogue's.
+// docs/reference.md's tables of per-method limits and options, which must be exactly the catalogue's.
 #include "src/scene/solver_methods.h"
 
 #include <gtest/gtest.h>
@@ -66,7 +66,7 @@ TEST(SolverMethods, AGivenOptionWinsAndAMissingOneTakesItsDefault) {
   EXPECT_EQ(EffectiveMaxIterations(spec, "explicit-euler"), 7);
 }
 
-// The README's two tables, as the catalogue writes them.
+// The reference's two tables, as the catalogue writes them.
 std::string LimitsTable() {
   std::ostringstream table;
   table << "| method | `max_iterations` | `time_limit` (s) |\n|---|---|---|\n";
@@ -89,8 +89,8 @@ std::string OptionsTable() {
   return table.str();
 }
 
-std::string ReadmeSection(const std::string& begin, const std::string& end) {
-  std::ifstream file(std::string(drape_tests::kSourceDir) + "/README.md");
+std::string ReferenceSection(const std::string& begin, const std::string& end) {
+  std::ifstream file(std::string(drape_tests::kSourceDir) + "/docs/reference.md");
   std::stringstream text;
   text << file.rdbuf();
   const std::string readme = text.str();
@@ -100,12 +100,12 @@ std::string ReadmeSection(const std::string& begin, const std::string& end) {
   return readme.substr(start, to - start);
 }
 
-TEST(SolverMethods, TheReadmeTablesAreTheCatalogue) {
-  EXPECT_EQ(ReadmeSection("<!-- solver-limits:begin", "<!-- solver-limits:end"), LimitsTable())
-      << "README.md's table between the solver-limits markers should read:\n"
+TEST(SolverMethods, TheReferenceTablesAreTheCatalogue) {
+  EXPECT_EQ(ReferenceSection("<!-- solver-limits:begin", "<!-- solver-limits:end"), LimitsTable())
+      << "docs/reference.md's table between the solver-limits markers should read:\n"
       << LimitsTable();
-  EXPECT_EQ(ReadmeSection("<!-- solver-options:begin", "<!-- solver-options:end"), OptionsTable())
-      << "README.md's table between the solver-options markers should read:\n"
+  EXPECT_EQ(ReferenceSection("<!-- solver-options:begin", "<!-- solver-options:end"), OptionsTable())
+      << "docs/reference.md's table between the solver-options markers should read:\n"
       << OptionsTable();
 }
 

@@ -202,8 +202,8 @@ int DropsOf(const Arguments& arguments, const Scene& scene) {
   if (drops > 1 && !scene.drape_test) {
     throw InputError(scene.root,
                      "--drops " + std::to_string(drops) +
-                         " needs a drape test: give the scene a drape_test block (README, "
-                         "\"The drape test\")");
+                         " needs a drape test: give the scene a drape_test block (docs/reference.md, "
+                         "\"`drape_test`\")");
   }
   return drops;
 }

@@ -1,5 +1,5 @@
-// The `drape` command: its arguments, subcommands and exit status (README.md, "The command
-// line"). Kept apart from main() so tests can drive it without a process.
+// The `drape` command: its arguments, subcommands and exit status (docs/reference.md,
+// "The command line"). Kept apart from main() so tests can drive it without a process.
 #ifndef DRAPE_SRC_CLI_CLI_H_
 #define DRAPE_SRC_CLI_CLI_H_
 

@@ -1,7 +1,7 @@
 // Mesh generation for every `mesh.kind`: node positions, the spring topology by family, surface
 // triangles and the lumped area (or length) of each node.
 //
-// Conventions (also in README's scene reference):
+// Conventions (also in docs/reference.md's scene reference):
 // - grid: node (i, j) has id j*nu + i. A single row (nodes [n, 1]) or column is a strip whose
 //   width is the other entry of `size`; its nodes carry length × width as area.
 // - chain: a single row of nodes (nu = n, nv = 1, grid_index (k, 0)), so that edge/corner/ij

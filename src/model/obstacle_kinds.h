@@ -5,7 +5,7 @@
 //
 // Adding a kind: costs/<kind>_contact.h (the functor, with its signed Distance), one row in
 // ObstacleKinds() (src/model/obstacle_kinds.cc), its tests (tests/<kind>_contact_test.cc), and its
-// line in README.md's obstacle table (tests/obstacle_kinds_test.cc checks the table against the
+// line in docs/reference.md's obstacle table (tests/obstacle_kinds_test.cc checks the table against the
 // rows). A key no kind had before also needs its reading in src/scene/scene_loader.cc
 // (ReadObstacleKey).
 #ifndef DRAPE_SRC_MODEL_OBSTACLE_KINDS_H_
@@ -45,7 +45,7 @@ struct DrawingFrame {
 struct ObstacleKind {
   std::string name;               // the key in the scene file: "sphere"
   std::vector<std::string> keys;  // all required; `friction` is accepted by every kind
-  std::string doc;                // README's obstacle table: the keys' meaning
+  std::string doc;                // docs/reference.md's obstacle table: the keys' meaning
   // A drape tester's support (disk, pin): the drape profile is centred on it, and its radius is
   // the Cusick coefficient's disc radius.
   bool support = false;
@@ -71,7 +71,7 @@ struct ObstacleKind {
   std::function<void(const ObstacleSpec&)> check;
 };
 
-// Every kind, in the order of the README's table.
+// Every kind, in the order of the reference's table.
 const std::vector<ObstacleKind>& ObstacleKinds();
 
 // The row of `obstacle.kind`; throws InputError at the obstacle for an unknown kind, a missing

@@ -1,6 +1,6 @@
 // The scene: every setting of a YAML scene file, typed, in SI units, each with the place in the
 // file it came from so that errors found later (while building the model) are still located.
-// The contract is README.md's scene reference (docs/architecture.md, "The scene format is a
+// The contract is docs/reference.md's scene reference (docs/architecture.md, "The scene format is a
 // contract").
 #ifndef DRAPE_SRC_SCENE_SCENE_H_
 #define DRAPE_SRC_SCENE_SCENE_H_

@@ -1,6 +1,6 @@
 // The scene schema: which keys exist, their types, units, ranges and defaults. Every key of
 // The scene format (docs/architecture.md, "The scene format is a contract") is read here; every key
-// is documented in README.md (Scene reference).
+// is documented in docs/reference.md (Scene reference).
 #include "src/scene/scene_loader.h"
 
 #include <yaml-cpp/yaml.h>

@@ -1,5 +1,5 @@
 // The catalogue of solver methods (see solver_methods.h). Adding a method: one entry here, one
-// factory under the same name in src/solvers/solver_registry.cc, one row per option in README.md.
+// factory under the same name in src/solvers/solver_registry.cc, one row per option in docs/reference.md.
 #include "src/scene/solver_methods.h"
 
 #include <cassert>

@@ -1,7 +1,7 @@
 // The solver methods a scene may name, and their options: the one list of names, descriptions,
 // option keys, defaults, ranges and documentation. The scene loader checks `solver.method` and
 // `solver.<method>.<key>` against it; the solvers read their defaults from it; `drape solvers`
-// prints it; README.md's option table is checked against it (tests/solver_methods_test.cc).
+// prints it; docs/reference.md's option table is checked against it (tests/solver_methods_test.cc).
 // The code of each method is registered under the same name in src/solvers/solver_registry.cc.
 #ifndef DRAPE_SRC_SCENE_SOLVER_METHODS_H_
 #define DRAPE_SRC_SCENE_SOLVER_METHODS_H_
