@@ -21,8 +21,9 @@ namespace drape {
 // so beside ½ D κ² A_P the moment is D κ + H wherever |κ| ≫ δ, and the fabric stays straight
 // where the load's moment is below H. |κ| has a kink at the flat state, where every drape starts:
 // δ (1/m) smooths it over curvatures below δ (radii of curvature above 1/δ); the answer converges
-// as δ → 0 (tests/fv_bending_friction_test.cc; docs/reference.md). Units: H in N·m/m = N, A in m², l and 1/δ
-// in m, U in J. Invariant under rigid motions; zero force when straight (dU/dκ = 0 at κ = 0).
+// as δ → 0 (tests/fv_bending_friction_test.cc; docs/reference.md). Units: H in N·m/m = N, A in m²,
+// l and 1/δ in m, U in J. Invariant under rigid motions; zero force when straight (dU/dκ = 0 at
+// κ = 0).
 struct FvBendingFriction {
   static constexpr int kNumNodes = 3;
   static constexpr int kNumOutputs = 1;

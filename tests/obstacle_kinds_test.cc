@@ -1,6 +1,6 @@
-// The obstacle-kind registry (src/model/obstacle_kinds.h): the reference's table (docs/reference.md) is its rows, each
-// row's functor sees the scene's geometry, and a kind's keys are checked, located, when the
-// model is built.
+// The obstacle-kind registry (src/model/obstacle_kinds.h): the reference's table
+// (docs/reference.md) is its rows, each row's functor sees the scene's geometry, and a kind's keys
+// are checked, located, when the model is built.
 #include "src/model/obstacle_kinds.h"
 
 #include <gtest/gtest.h>

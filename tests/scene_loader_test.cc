@@ -1,5 +1,5 @@
-// Scene loading: every key of docs/reference.md's scene reference, the defaults, `--set` overrides, and
-// every bad input rejected with "file:line:column: key.path: what is wrong".
+// Scene loading: every key of docs/reference.md's scene reference, the defaults, `--set` overrides,
+// and every bad input rejected with "file:line:column: key.path: what is wrong".
 #include "src/scene/scene_loader.h"
 
 #include <gtest/gtest.h>

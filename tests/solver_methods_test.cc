@@ -1,5 +1,6 @@
 // The catalogue of solver methods (src/scene/solver_methods.h): option ranges, defaults, and
-// docs/reference.md's tables of per-method limits and options, which must be exactly the catalogue's.
+// docs/reference.md's tables of per-method limits and options, which must be exactly the
+// catalogue's.
 #include "src/scene/solver_methods.h"
 
 #include <gtest/gtest.h>
@@ -104,7 +105,8 @@ TEST(SolverMethods, TheReferenceTablesAreTheCatalogue) {
   EXPECT_EQ(ReferenceSection("<!-- solver-limits:begin", "<!-- solver-limits:end"), LimitsTable())
       << "docs/reference.md's table between the solver-limits markers should read:\n"
       << LimitsTable();
-  EXPECT_EQ(ReferenceSection("<!-- solver-options:begin", "<!-- solver-options:end"), OptionsTable())
+  EXPECT_EQ(ReferenceSection("<!-- solver-options:begin", "<!-- solver-options:end"),
+            OptionsTable())
       << "docs/reference.md's table between the solver-options markers should read:\n"
       << OptionsTable();
 }

@@ -200,10 +200,11 @@ int DropsOf(const Arguments& arguments, const Scene& scene) {
   const int drops =
       arguments.drops ? *arguments.drops : (scene.drape_test ? scene.drape_test->drops : 1);
   if (drops > 1 && !scene.drape_test) {
-    throw InputError(scene.root,
-                     "--drops " + std::to_string(drops) +
-                         " needs a drape test: give the scene a drape_test block (docs/reference.md, "
-                         "\"`drape_test`\")");
+    throw InputError(
+        scene.root,
+        "--drops " + std::to_string(drops) +
+            " needs a drape test: give the scene a drape_test block (docs/reference.md, "
+            "\"`drape_test`\")");
   }
   return drops;
 }

@@ -1,7 +1,7 @@
 // The command line described from its parser (the CLI11 app that cli.cc builds), so that the
 // parser is the one owner of its grammar: the synopsis lines (`drape help`, the usage printed
-// after a usage error, docs/reference.md's "The command line", which a test holds against them), the bash
-// completion script, and the "did you mean" for an unknown command or option.
+// after a usage error, docs/reference.md's "The command line", which a test holds against them),
+// the bash completion script, and the "did you mean" for an unknown command or option.
 #ifndef DRAPE_SRC_CLI_USAGE_H_
 #define DRAPE_SRC_CLI_USAGE_H_
 

@@ -1,5 +1,5 @@
-// The fit-file schema (issue 8; docs/reference.md, "Fitting"): keys, types, ranges and defaults, and the
-// measurement data files. Every error is located in the file that holds it.
+// The fit-file schema (issue 8; docs/reference.md, "Fitting"): keys, types, ranges and defaults,
+// and the measurement data files. Every error is located in the file that holds it.
 #include "src/fit/fit_file.h"
 
 #include <yaml-cpp/yaml.h>

@@ -5,8 +5,8 @@
 //
 // Adding a kind: costs/<kind>_contact.h (the functor, with its signed Distance), one row in
 // ObstacleKinds() (src/model/obstacle_kinds.cc), its tests (tests/<kind>_contact_test.cc), and its
-// line in docs/reference.md's obstacle table (tests/obstacle_kinds_test.cc checks the table against the
-// rows). A key no kind had before also needs its reading in src/scene/scene_loader.cc
+// line in docs/reference.md's obstacle table (tests/obstacle_kinds_test.cc checks the table against
+// the rows). A key no kind had before also needs its reading in src/scene/scene_loader.cc
 // (ReadObstacleKey).
 #ifndef DRAPE_SRC_MODEL_OBSTACLE_KINDS_H_
 #define DRAPE_SRC_MODEL_OBSTACLE_KINDS_H_

@@ -1,5 +1,6 @@
 // The catalogue of solver methods (see solver_methods.h). Adding a method: one entry here, one
-// factory under the same name in src/solvers/solver_registry.cc, one row per option in docs/reference.md.
+// factory under the same name in src/solvers/solver_registry.cc, one row per option in
+// docs/reference.md.
 #include "src/scene/solver_methods.h"
 
 #include <cassert>

@@ -1,5 +1,5 @@
-// The sweep file of `drape sweep` (docs/reference.md, "Sweeps"): a base scene and the variations of its
-// keys — a full grid, zipped lists, or a Latin-hypercube / Sobol sample of ranges — repeated
+// The sweep file of `drape sweep` (docs/reference.md, "Sweeps"): a base scene and the variations of
+// its keys — a full grid, zipped lists, or a Latin-hypercube / Sobol sample of ranges — repeated
 // `repeat` times, optionally warm-started along one axis, with the outputs each task keeps. Every
 // error is located (file:line:column: key.path: what), and every task's scene is loaded and
 // validated before anything is solved.
