@@ -60,18 +60,27 @@ struct FvMembrane {
   // The residuals from the Gram entries: |u| = √(u·u), |v| = √(v·v), sin γ = u·v/(|u||v|).
   template <typename T>
   bool Residuals(const T* gram, T* residual) const {
-    using std::asin;
     using std::sqrt;
     if (!(gram[0] > 0.0) || !(gram[1] > 0.0)) return false;  // an arm of zero length
     const T da = sqrt(gram[0]), db = sqrt(gram[1]);
     const T strain_a = (da - rest_a) / rest_a;
     const T strain_b = (db - rest_b) / rest_b;
-    const T cosine = gram[2] / (da * db);
-    if (!(cosine < 1.0) || !(cosine > -1.0)) return false;  // arms parallel: no quarter left
-    const T shear = asin(cosine);
+    T shear;
+    if (!ShearAngle(gram, da, db, &shear)) return false;
     residual[0] = stretch.l11 * strain_a + stretch.l12 * strain_b;
     residual[1] = stretch.l22 * strain_b;
     residual[2] = shear_factor * shear;
+    return true;
+  }
+
+  // The shear angle γ = asin(u·v/(|u||v|)) from the Gram entries and the arms' lengths |u|, |v|;
+  // false where the arms are parallel (no quarter left). FvShearFriction's angle too.
+  template <typename T>
+  static bool ShearAngle(const T* gram, const T& da, const T& db, T* shear) {
+    using std::asin;
+    const T cosine = gram[2] / (da * db);
+    if (!(cosine < 1.0) || !(cosine > -1.0)) return false;
+    *shear = asin(cosine);
     return true;
   }
 

@@ -37,14 +37,12 @@ struct FvShearFriction {
   // Nodes P, A (warp neighbour), B (weft neighbour), as FvMembrane.
   template <typename T>
   bool operator()(const T* const p, const T* const a, const T* const b, T* energy) const {
-    using std::asin;
     using std::sqrt;
     T gram[3];
     FvMembrane::ArmGram(p, a, b, gram);
     if (!(gram[0] > 0.0) || !(gram[1] > 0.0)) return false;  // an arm of zero length
-    const T cosine = gram[2] / sqrt(gram[0] * gram[1]);
-    if (!(cosine < 1.0) || !(cosine > -1.0)) return false;  // arms parallel: no quarter left
-    const T shear = asin(cosine);
+    T shear;
+    if (!FvMembrane::ShearAngle(gram, sqrt(gram[0]), sqrt(gram[1]), &shear)) return false;
     energy[0] = weight * (sqrt(shear * shear + smoothing * smoothing) - smoothing);
     return true;
   }

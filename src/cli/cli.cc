@@ -546,11 +546,7 @@ int PrintHelp(const CLI::App& app, const std::string& name, std::ostream& out) {
     return kExitConverged;
   }
   const CLI::App* command = NamedCommand(app, {name});
-  if (!command) {
-    std::vector<std::string> names;
-    for (const CLI::App* known : AllSubcommands(app)) names.push_back(known->get_name());
-    throw UsageError("help: unknown command '" + name + "'" + SuggestionText(name, names));
-  }
+  if (!command) throw UsageError("help: " + UnknownCommandText(app, name));
   out << command->help();
   return kExitConverged;
 }

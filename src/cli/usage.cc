@@ -116,6 +116,12 @@ std::string Synopsis(const CLI::App& app) {
   return text + "drape help [COMMAND] | --help | --version\n";
 }
 
+std::string UnknownCommandText(const CLI::App& app, const std::string& name) {
+  std::vector<std::string> names;
+  for (const CLI::App* known : AllSubcommands(app)) names.push_back(known->get_name());
+  return "unknown command '" + name + "'" + SuggestionText(name, names);
+}
+
 const CLI::App* NamedCommand(const CLI::App& app, const std::vector<std::string>& args) {
   if (args.empty()) return nullptr;
   for (const CLI::App* command : AllSubcommands(app)) {
@@ -127,11 +133,7 @@ const CLI::App* NamedCommand(const CLI::App& app, const std::vector<std::string>
 std::optional<std::string> UnknownWord(const CLI::App& app, const std::vector<std::string>& args) {
   if (args.empty() || args[0].empty() || args[0][0] == '-') return std::nullopt;
   const CLI::App* command = NamedCommand(app, args);
-  if (!command) {
-    std::vector<std::string> names;
-    for (const CLI::App* known : AllSubcommands(app)) names.push_back(known->get_name());
-    return "unknown command '" + args[0] + "'" + SuggestionText(args[0], names);
-  }
+  if (!command) return UnknownCommandText(app, args[0]);
   return UnknownOption(*command, std::vector<std::string>(args.begin() + 1, args.end()));
 }
 

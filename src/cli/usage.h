@@ -22,6 +22,9 @@ std::string CommandSynopsis(const CLI::App& command);
 // Every command's synopsis, one a line, then "drape help [COMMAND] | --help | --version".
 std::string Synopsis(const CLI::App& app);
 
+// "unknown command 'sovle'; did you mean 'solve'?": `name` among `app`'s subcommands.
+std::string UnknownCommandText(const CLI::App& app, const std::string& name);
+
 // The subcommand that `args` name (their first word when it is one), or null.
 const CLI::App* NamedCommand(const CLI::App& app, const std::vector<std::string>& args);
 

@@ -398,37 +398,31 @@ struct ArealDensity {
   std::string missing;          // why there is none
 };
 
-// The friction moments: bending_friction_<direction> (N) or kes.2HB_<direction> (gf·cm/cm), at
-// most one of the two; none is the elastic fabric.
-void ReadBendingFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
-                         FiniteVolumeSpec* fv) {
-  for (const std::string direction : {"warp", "weft"}) {
-    const auto si = map.Find("bending_friction_" + direction);
-    const auto measured = kes ? kes->Find("2HB_" + direction) : std::nullopt;
-    if (si && measured) {
-      Fail(*measured, "give bending_friction_" + direction +
-                          " in one way only: 'bending_friction_" + direction + "' is given too");
-    }
-    double& friction = direction == "warp" ? fv->bending_friction_warp : fv->bending_friction_weft;
-    if (si) friction = ReadNonNegative(*si);
-    if (measured) friction = KesBendingFriction(ReadNonNegative(*measured));
+// One friction, given in SI (`si_key`) or as KES measures it (`kes_key`, converted by `convert`),
+// at most one of the two; 0, the elastic fabric, when neither is given.
+double ReadFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
+                    const std::string& si_key, const std::string& kes_key,
+                    double (*convert)(double)) {
+  const auto si = map.Find(si_key);
+  const auto measured = kes ? kes->Find(kes_key) : std::nullopt;
+  if (si && measured) {
+    Fail(*measured, "give " + si_key + " in one way only: '" + si_key + "' is given too");
   }
+  if (si) return ReadNonNegative(*si);
+  return measured ? convert(ReadNonNegative(*measured)) : 0.0;
+}
+
+// The frictions: bending_friction_<direction> (N) or kes.2HB_<direction> (gf·cm/cm), and
+// shear_friction (N/m) or kes.2HG (gf/cm), with their smoothings.
+void ReadFrictions(const YamlMap& map, const std::optional<YamlMap>& kes, FiniteVolumeSpec* fv) {
+  fv->bending_friction_warp =
+      ReadFriction(map, kes, "bending_friction_warp", "2HB_warp", KesBendingFriction);
+  fv->bending_friction_weft =
+      ReadFriction(map, kes, "bending_friction_weft", "2HB_weft", KesBendingFriction);
+  fv->shear_friction = ReadFriction(map, kes, "shear_friction", "2HG", KesShearFriction);
   if (const auto v = map.Find("bending_friction_smoothing")) {
     fv->bending_friction_smoothing = ReadPositive(*v);
   }
-}
-
-// The friction force in shear: shear_friction (N/m) or kes.2HG (gf/cm), at most one of the two;
-// none is the elastic fabric.
-void ReadShearFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
-                       FiniteVolumeSpec* fv) {
-  const auto si = map.Find("shear_friction");
-  const auto measured = kes ? kes->Find("2HG") : std::nullopt;
-  if (si && measured) {
-    Fail(*measured, "give shear_friction in one way only: 'shear_friction' is given too");
-  }
-  if (si) fv->shear_friction = ReadNonNegative(*si);
-  if (measured) fv->shear_friction = KesShearFriction(ReadNonNegative(*measured));
   if (const auto v = map.Find("shear_friction_smoothing")) {
     fv->shear_friction_smoothing = ReadPositive(*v);
   }
@@ -484,8 +478,7 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
     Fail(map.Has("nu_weft") ? *map.Find("nu_weft") : *map.Find("nu_warp"),
          "nu_warp * nu_weft must be less than 1 (else the membrane energy is not positive)");
   }
-  ReadBendingFriction(map, kes, &fv);
-  ReadShearFriction(map, kes, &fv);
+  ReadFrictions(map, kes, &fv);
   if (const auto v = map.Find("D_12")) {
     fv.D_12 = ReadNumber(*v);
     if (!(fv.D_12 * fv.D_12 < fv.D_warp * fv.D_weft)) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "src/scene/material_keys.h"
 #include "src/scene/solver_methods.h"
 
 namespace drape {
@@ -113,16 +114,17 @@ constexpr double kBendingContinuationStart = 1.0;  // 1/m
 constexpr double kShearContinuationStart = 0.1;    // rad
 constexpr double kFrictionContinuationRatio = 10.0;
 
-// Whether the scene's fabric, or one of its regions, has a friction of the given keys.
-bool HasFriction(const Scene& scene, std::initializer_list<double FiniteVolumeSpec::*> members,
-                 std::initializer_list<const char*> keys) {
+// Whether the scene's fabric, or one of its regions, has one of the given frictions (a region
+// gives them under their FiniteVolumeKeys() names).
+bool HasFriction(const Scene& scene, std::initializer_list<double FiniteVolumeSpec::*> members) {
   if (scene.material.model != "finite_volume") return false;
   for (const auto member : members) {
     if (scene.material.finite_volume.*member > 0.0) return true;
   }
-  for (const RegionSpec& region : scene.regions) {
-    for (const char* key : keys) {
-      const auto given = region.finite_volume.find(key);
+  for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
+    if (std::find(members.begin(), members.end(), key.member) == members.end()) continue;
+    for (const RegionSpec& region : scene.regions) {
+      const auto given = region.finite_volume.find(key.key);
       if (given != region.finite_volume.end() && given->second > 0.0) return true;
     }
   }
@@ -140,9 +142,8 @@ struct Smoothings {
 std::vector<Smoothings> ContinuationStages(const Scene& scene) {
   const FiniteVolumeSpec& fv = scene.material.finite_volume;
   const bool bending = HasFriction(
-      scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft},
-      {"bending_friction_warp", "bending_friction_weft"});
-  const bool shear = HasFriction(scene, {&FiniteVolumeSpec::shear_friction}, {"shear_friction"});
+      scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft});
+  const bool shear = HasFriction(scene, {&FiniteVolumeSpec::shear_friction});
   std::vector<Smoothings> stages;
   for (double scale = 1.0;; scale /= kFrictionContinuationRatio) {
     Smoothings stage{fv.bending_friction_smoothing, fv.shear_friction_smoothing};
