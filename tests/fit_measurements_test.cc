@@ -74,6 +74,33 @@ TEST(FitMeasurementsTest, VirtualPeirceStripGivesTheBendingLength) {
   }
 }
 
+// The strip bends with the measured direction's friction moment, and reads a longer bending length
+// than the elastic strip (tests/fv_bending_friction_test.cc checks the friction cantilever itself).
+TEST(FitMeasurementsTest, VirtualPeirceStripCarriesTheDirectionsFriction) {
+  Scene specimen = LoadConfig("configs/fit/drape_fv.yaml");
+  FitMeasurement measurement;
+  measurement.kind = FitMeasurement::Kind::kBendingLength;
+  measurement.sigma = 0.001;
+  measurement.value = std::cbrt(5.0e-5 / (0.15 * 9.81));  // the weft's c0
+  measurement.direction = "weft";
+  const MeasuredValue elastic = [&] {
+    Scene strip = PeirceStripScene(specimen, measurement);
+    Model model = BuildModel(strip);
+    EXPECT_TRUE(RunSolve(strip, model, "newton").converged);
+    return EvaluateMeasurement(measurement, model, model.positions.data(), {});
+  }();
+  specimen.material.finite_volume.bending_friction_warp = 1.0e-4;  // N
+  specimen.material.finite_volume.bending_friction_weft = 2.0e-4;
+  Scene strip = PeirceStripScene(specimen, measurement);
+  EXPECT_EQ(strip.material.finite_volume.bending_friction_warp, 2.0e-4);
+  EXPECT_EQ(strip.material.finite_volume.bending_friction_weft, 2.0e-4);
+  Model model = BuildModel(strip);
+  ASSERT_TRUE(RunSolve(strip, model, "newton").converged);
+  const MeasuredValue frictional =
+      EvaluateMeasurement(measurement, model, model.positions.data(), {});
+  EXPECT_GT(frictional.model_value, elastic.model_value * 1.01);
+}
+
 TEST(FitMeasurementsTest, PositionsByIdAndAsACloud) {
   const TrueSolve solved = SolveTruth("configs/fit/drape_fv.yaml", {});
   const Model& model = solved.model;

@@ -5,6 +5,7 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/model/equilibrium.h"
+#include "src/scene/fabric_parameters.h"
 
 namespace drape {
 namespace {
@@ -175,9 +176,11 @@ Scene PeirceStripScene(const Scene& specimen, const FitMeasurement& measurement)
   if (measurement.direction == "weft") {
     fv.D_warp = fv.D_weft;
     fv.E_warp = fv.E_weft;
+    fv.bending_friction_warp = fv.bending_friction_weft;
   }
   fv.D_weft = fv.D_warp;
   fv.E_weft = fv.E_warp;
+  fv.bending_friction_weft = fv.bending_friction_warp;
   fv.nu_warp = fv.nu_weft = 0.0;
   fv.D_12 = 0.0;
   FixedSpec clamp;
@@ -186,7 +189,7 @@ Scene PeirceStripScene(const Scene& specimen, const FitMeasurement& measurement)
   clamp.nodes.where = measurement.where;
   clamp.where = measurement.where;
   strip.fixed = {clamp};
-  const double g = specimen.loads.gravity ? specimen.loads.gravity->norm() : 9.81;
+  const double g = specimen.loads.gravity ? specimen.loads.gravity->norm() : kStandardGravity;
   strip.loads = LoadsSpec{};
   strip.loads.gravity = Eigen::Vector3d(0.0, 0.0, -g);
   strip.loads.where = measurement.where;
