@@ -269,6 +269,37 @@ TEST(FitSolverTest, RecoversBendingRigidityFromABendingLength) {
   EXPECT_LT(RelativeError(result.parameters[0], truth), 1e-4);
 }
 
+// The bending friction (KES 2HB) and the rigidity of the warp: the shipped example's drape
+// coefficient and bending length (made at D_warp = 1e-4 N·m, H = 1e-3 N) determine both; the
+// drape coefficient alone leaves a curve of (D, H) pairs, and the fit says so. The fits start from
+// the flat state, through the friction's kink (src/solvers/run.h, RunFrictionContinuation).
+TEST(FitSolverTest, SeparatesFrictionFromRigidityWithADrapeCoefficientAndABendingLength) {
+  FitSpec spec = LoadFitFile(SourcePath("configs/fit/fit_friction.yaml"));
+  ASSERT_EQ(spec.parameters.size(), 2u);
+  {
+    FitProblem problem(spec);
+    const FitResult both = RunFit(problem);
+    EXPECT_TRUE(both.converged) << both.termination;
+    EXPECT_LT(RelativeError(both.parameters[0], 1.0e-4), 1e-3);
+    EXPECT_LT(RelativeError(both.parameters[1], 1.0e-3), 1e-3);
+    EXPECT_TRUE(both.identifiability.identifiable[0]);
+    EXPECT_TRUE(both.identifiability.identifiable[1]);
+  }
+  std::vector<FitMeasurement>& measurements = spec.specimens[0].measurements;
+  ASSERT_EQ(measurements.size(), 2u);
+  ASSERT_EQ(measurements[1].kind, FitMeasurement::Kind::kBendingLength);
+  measurements.pop_back();
+  FitProblem problem(spec);
+  const FitResult one = RunFit(problem);
+  EXPECT_FALSE(one.identifiability.identifiable[0]);
+  EXPECT_FALSE(one.identifiability.identifiable[1]);
+  bool flat = false;
+  for (const auto& statement : one.identifiability.statements) {
+    flat |= statement.find("flat direction") != std::string::npos;
+  }
+  EXPECT_TRUE(flat);
+}
+
 // E_warp cannot be identified from a bending-dominated drape (the membrane barely stretches):
 // the fit says so, and D_warp stays identifiable.
 TEST(FitSolverTest, ReportsAnUnidentifiableMembraneStiffness) {

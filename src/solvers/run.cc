@@ -168,37 +168,6 @@ SolverOptions OptionsFor(const Scene& scene, const std::string& method) {
   return options;
 }
 
-// The continuation's stages: each solved from the previous one's positions, the result left in
-// `model` (the free coordinates). Returns their iterations and time together.
-SolverSummary RunContinuation(const Scene& scene, Model& model, const SolverInfo& info,
-                              const std::string& method,
-                              const std::function<bool(const IterationRecord&)>& on_iteration) {
-  SolverSummary total;
-  for (const Smoothings& smoothings : ContinuationStages(scene)) {
-    Scene stage = scene;
-    stage.material.finite_volume.bending_friction_smoothing = smoothings.bending;
-    stage.material.finite_volume.shear_friction_smoothing = smoothings.shear;
-    Model stage_model = BuildModel(stage);
-    assert(stage_model.positions.size() == model.positions.size());
-    stage_model.positions = model.positions;
-    SolverOptions options = OptionsFor(stage, method);
-    options.on_iteration = [&](const IterationRecord& record) {
-      return !on_iteration || on_iteration(record);
-    };
-    std::unique_ptr<HessianWorkspace> workspace;
-    if (stage_model.num_free_dofs() > 0 && info.uses_hessian_workspace) {
-      workspace = std::make_unique<HessianWorkspace>(stage_model);
-    }
-    options.workspace = workspace.get();
-    const SolverSummary summary = info.make()->Solve(stage_model, options);
-    total.iterations += summary.iterations;
-    total.wall_time_s += summary.wall_time_s;
-    if (!AllFinite(stage_model.positions)) break;  // the scene's own solve starts from the last
-    model.positions = stage_model.positions;
-  }
-  return total;
-}
-
 RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
                        const std::string& method,
                        const std::function<bool(const IterationRecord&)>& on_iteration) {
@@ -280,7 +249,7 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
                    const std::function<bool(const IterationRecord&)>& on_iteration) {
   const SolverInfo* info = FindSolver(method);
   if (!info) throw InputError(scene.solver.where, "unknown solver '" + method + "'");
-  const SolverSummary continuation = RunContinuation(scene, model, *info, method, on_iteration);
+  const SolverSummary continuation = RunFrictionContinuation(scene, model, method, on_iteration);
   RunResult result = RunSolveOnce(scene, model, *info, method, on_iteration);
   if (continuation.iterations > 0) {
     result.summary.iterations += continuation.iterations;
@@ -289,6 +258,37 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
                                   " iterations of continuation in the friction's smoothing";
   }
   return result;
+}
+
+SolverSummary RunFrictionContinuation(
+    const Scene& scene, Model& model, const std::string& method,
+    const std::function<bool(const IterationRecord&)>& on_iteration) {
+  const SolverInfo* info = FindSolver(method);
+  if (!info) throw InputError(scene.solver.where, "unknown solver '" + method + "'");
+  SolverSummary total;
+  for (const Smoothings& smoothings : ContinuationStages(scene)) {
+    Scene stage = scene;
+    stage.material.finite_volume.bending_friction_smoothing = smoothings.bending;
+    stage.material.finite_volume.shear_friction_smoothing = smoothings.shear;
+    Model stage_model = BuildModel(stage);
+    assert(stage_model.positions.size() == model.positions.size());
+    stage_model.positions = model.positions;
+    SolverOptions options = OptionsFor(stage, method);
+    options.on_iteration = [&](const IterationRecord& record) {
+      return !on_iteration || on_iteration(record);
+    };
+    std::unique_ptr<HessianWorkspace> workspace;
+    if (stage_model.num_free_dofs() > 0 && info->uses_hessian_workspace) {
+      workspace = std::make_unique<HessianWorkspace>(stage_model);
+    }
+    options.workspace = workspace.get();
+    const SolverSummary summary = info->make()->Solve(stage_model, options);
+    total.iterations += summary.iterations;
+    total.wall_time_s += summary.wall_time_s;
+    if (!AllFinite(stage_model.positions)) break;  // the scene's own solve starts from the last
+    model.positions = stage_model.positions;
+  }
+  return total;
 }
 
 }  // namespace drape

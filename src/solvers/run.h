@@ -39,6 +39,15 @@ struct RunResult {
 RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
                    const std::function<bool(const IterationRecord&)>& on_iteration = {});
 
+// The frictions' continuation, which RunSolve runs first: from model.positions, the stages of
+// larger smoothing δ that a friction's kink at the flat state needs before the scene's own δ
+// (costs/fv_bending_friction.h, costs/fv_shear_friction.h), each solved with `method` from the
+// last; the result is left in `model`. Nothing is done (no stage) without friction. Returns the
+// stages' iterations and time together.
+SolverSummary RunFrictionContinuation(
+    const Scene& scene, Model& model, const std::string& method,
+    const std::function<bool(const IterationRecord&)>& on_iteration = {});
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_SOLVERS_RUN_H_
