@@ -22,15 +22,19 @@ namespace drape {
 // drape starts; the answer converges as δ → 0 (tests/fv_shear_friction_test.cc). Units: HG in
 // N/m, A_q in m², γ and δ in rad, U in J. Invariant under rigid motions; zero force at rest
 // (dU/dγ = 0 at γ = 0).
+// In a load step of the incremental form (FvBendingFrictionStep, for 2HB, says what it is) the
+// kink sits at γ0, the shear angle at the end of the previous step: U = HG A_q (√((γ − γ0)² + δ²)
+// − δ). γ0 = 0 is the form above, bit for bit.
 struct FvShearFriction {
   static constexpr int kNumNodes = 3;
   static constexpr int kNumOutputs = 1;
   static constexpr EnergyForm kForm = EnergyForm::kPotential;
   static constexpr bool kTranslationInvariant = true;  // E depends on differences only
 
-  // friction: HG (N/m); rest arm lengths l_PA, l_PB (m); smoothing: δ (rad).
-  FvShearFriction(double friction, double rest_a, double rest_b, double smoothing_in)
-      : weight(friction * rest_a * rest_b / 4.0), smoothing(smoothing_in) {
+  // friction: HG (N/m); rest arm lengths l_PA, l_PB (m); smoothing: δ (rad); previous: γ0 (rad).
+  FvShearFriction(double friction, double rest_a, double rest_b, double smoothing_in,
+                  double previous_in = 0.0)
+      : weight(friction * rest_a * rest_b / 4.0), smoothing(smoothing_in), previous(previous_in) {
     assert(friction >= 0.0 && rest_a > 0.0 && rest_b > 0.0 && smoothing_in > 0.0);
   }
 
@@ -43,16 +47,19 @@ struct FvShearFriction {
     if (!(gram[0] > 0.0) || !(gram[1] > 0.0)) return false;  // an arm of zero length
     T shear;
     if (!FvMembrane::ShearAngle(gram, sqrt(gram[0]), sqrt(gram[1]), &shear)) return false;
-    energy[0] = weight * (sqrt(shear * shear + smoothing * smoothing) - smoothing);
+    const T slip = shear - previous;
+    energy[0] = weight * (sqrt(slip * slip + smoothing * smoothing) - smoothing);
     return true;
   }
 
-  static FvShearFriction Create(double friction, double rest_a, double rest_b, double smoothing) {
-    return FvShearFriction(friction, rest_a, rest_b, smoothing);
+  static FvShearFriction Create(double friction, double rest_a, double rest_b, double smoothing,
+                                double previous = 0.0) {
+    return FvShearFriction(friction, rest_a, rest_b, smoothing, previous);
   }
 
   const double weight;     // HG A_q, N·m
   const double smoothing;  // δ, rad
+  const double previous;   // γ0, rad
 };
 
 }  // namespace drape

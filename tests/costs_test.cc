@@ -25,6 +25,7 @@
 #include "costs/edge_contact.h"
 #include "costs/fv_bending.h"
 #include "costs/fv_bending_friction.h"
+#include "costs/fv_bending_friction_step.h"
 #include "costs/fv_membrane.h"
 #include "costs/fv_shear_friction.h"
 #include "costs/plane_contact.h"
@@ -233,6 +234,21 @@ struct Sample<FvBendingFriction> {
 };
 
 template <>
+struct Sample<FvBendingFrictionStep> {
+  static constexpr const char* kName = "FvBendingFrictionStep";
+  // As FvBendingFriction's, with the kink at κ0 = 20 1/m: the generic state's κ ≈ 50 1/m is 30
+  // from it, the flat state 20 (both beyond δ = 5 1/m); d across along y.
+  static FvBendingFrictionStep Make() {
+    return FvBendingFrictionStep::Create(600.0, 0.01, 1e-4, 5.0, 20.0, 1.0);
+  }
+  static std::vector<std::vector<double>> States() {  // nodes a, P, b, d
+    return {{-0.01, 0.0003, 0.0008, 0.0004, 0.0003, 0.0005, 0.0099, -0.0003, 0.001, 0.0006, 0.0102,
+             0.0007},
+            {-0.01, 0, 0, 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0}};
+  }
+};
+
+template <>
 struct Sample<FvShearFriction> {
   static constexpr const char* kName = "FvShearFriction";
   // δ = 0.01 rad: the generic state's γ ≈ 0.1 rad is beyond it, the rest state at its kink.
@@ -258,7 +274,8 @@ using Functors =
     ::testing::Types<SpringStretch, TensionOnlySpring, ZeroLengthSpring, StretchLimitBarrier,
                      ConstantForcePotential, PressurePotential, SphereContact, PlaneContact,
                      DiskContact, EdgeContact<DiskContact>, CylinderContact, BoxContact, FvMembrane,
-                     FvBendingEdge, FvBending, FvBendingFriction, FvShearFriction>;
+                     FvBendingEdge, FvBending, FvBendingFriction, FvBendingFrictionStep,
+                     FvShearFriction>;
 
 class FunctorNames {
  public:
@@ -307,9 +324,10 @@ TYPED_TEST(CostsTest, CeresGradientCheckerAcceptsTheResidualPath) {
   const auto term = SampleTerm<TypeParam>();
   const std::unique_ptr<ceres::CostFunction> cost(term->NewCostFunction());
   if constexpr (std::is_same_v<TypeParam, FvBendingFriction> ||
+                std::is_same_v<TypeParam, FvBendingFrictionStep> ||
                 std::is_same_v<TypeParam, FvShearFriction>) {
     // Ceres' GradientChecker (Ridders' differences) reports some coordinates 1e-4 to 0.8 off for
-    // the two frictions, whose residual is √(2 (E + shift)), scaling with H, where plain central
+    // the frictions, whose residual is √(2 (E + shift)), scaling with H, where plain central
     // differences of the same cost function agree with its Jets to 1e-9: checked that way.
     for (const std::vector<double>& state : Sample<TypeParam>::States()) {
       ExpectResidualJacobianMatchesDifferences(*cost, state, TypeParam::kNumNodes);

@@ -222,6 +222,20 @@ TEST(FitFileTest, LoadsEveryExampleFitFile) {
   EXPECT_GE(count, 5);
 }
 
+// A fit solves each equilibrium with its loads at once: a scene that asks for the incremental
+// friction's load path is refused, located at its finite_volume map.
+TEST(FitFileTest, RefusesTheIncrementalFriction) {
+  try {
+    LoadFitFile(SourcePath("configs/fit/fit_friction.yaml"),
+                {"material.finite_volume.friction_load_steps=3"});
+    ADD_FAILURE() << "a fit took friction_load_steps";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("drape_fv_friction.yaml:"), std::string::npos) << message;
+    EXPECT_NE(message.find("friction_load_steps"), std::string::npos) << message;
+  }
+}
+
 TEST(FitFileTest, CommandRejectsABadFitFileAndWritesNothing) {
   const std::string path = WriteFitFolder("cli", R"(scene: base.yaml
 parameters:

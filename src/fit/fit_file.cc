@@ -19,6 +19,7 @@
 #include "src/scene/file_paths.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
+#include "src/solvers/load_steps.h"
 
 namespace drape {
 namespace {
@@ -318,6 +319,13 @@ Scene LoadSpecimenScene(const FitSpec& spec, const FitSpecimen& specimen) {
 // against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
 void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
   const Scene scene = LoadSpecimenScene(spec, specimen);
+  if (FrictionLoadSteps(scene) > 0) {
+    throw InputError(scene.material.finite_volume.where,
+                     "friction_load_steps: a fit solves each equilibrium with its loads at once, "
+                     "not along the incremental friction's load path; leave the key out (the "
+                     "monotone form is the same wherever the fabric's curvatures grow along the "
+                     "path: docs/reference.md, \"Fibre friction in bending\")");
+  }
   const Model model = BuildModel(scene);
   for (const auto& measurement : specimen.measurements) {
     using Kind = FitMeasurement::Kind;

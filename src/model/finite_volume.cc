@@ -8,6 +8,7 @@
 
 #include "costs/fv_bending.h"
 #include "costs/fv_bending_friction.h"
+#include "costs/fv_bending_friction_step.h"
 #include "costs/fv_membrane.h"
 #include "costs/fv_shear_friction.h"
 #include "costs/spring_stretch.h"
@@ -85,16 +86,50 @@ double RestDistance(const Mesh& mesh, int a, int b) {
   return (mesh.nodes[b] - mesh.nodes[a]).norm();
 }
 
-// The friction term of one direction of control volume `nodes[1]` (none without friction). Its
-// least-squares shift (src/model/term.h), H A / l, the energy at a curvature of 1/l, keeps the
-// ceres-* solvers' residual √(2 (E + shift)) smooth at the flat state, where E = 0.
+// The coordinates of node k in the friction's reference state (3 per node; null: the flat state).
+const double* At(const double* reference, int k) { return reference + 3 * k; }
+
+// A neighbour across a control volume, which signs its curvature in a load step
+// (FvBendingFrictionStep's d and σ); node -1 where there is none (a strip).
+struct Across {
+  int node = -1;
+  double sign = 1.0;
+};
+
+// The friction term of one direction of control volume `along[1]`, nodes `along` = {a, P, b} (none
+// without friction): the monotone form's, or, with spec.friction_load_steps, a load step's, whose
+// curvature takes its sign from `across` = {d, σ}, a neighbour across the volume, and whose kink
+// is at the reference's curvature. The least-squares shift (src/model/term.h), H A / l, the energy
+// at a curvature of 1/l from the kink, keeps the ceres-* solvers' residual √(2 (E + shift)) smooth
+// at the kink, where E = 0.
 void AddBendingFriction(double friction, const FiniteVolumeSpec& spec,
-                        const std::vector<int>& nodes, double size, double area, Model* model) {
+                        const std::vector<int>& along, const Across& across, double size,
+                        double area, const double* reference, Model* model) {
   if (!(friction > 0.0)) return;
+  const double shift = friction * area / size;
+  if (spec.friction_load_steps == 0) {
+    model->terms.push_back(MakeTerm(
+        "fv_bending_friction", along,
+        FvBendingFriction::Create(friction, size, area, spec.bending_friction_smoothing), shift));
+    return;
+  }
+  if (across.node < 0) {
+    throw InputError(spec.where,
+                     "finite_volume.friction_load_steps: the incremental friction signs a "
+                     "curvature by the direction across the fabric, which a strip (a single row "
+                     "or column of nodes) has not; use a grid with at least two rows");
+  }
+  double previous = 0.0;
+  if (reference) {
+    previous = FvBendingFrictionStep::SignedCurvature(
+        At(reference, along[0]), At(reference, along[1]), At(reference, along[2]),
+        At(reference, across.node), size, across.sign);
+  }
   model->terms.push_back(
-      MakeTerm("fv_bending_friction", nodes,
-               FvBendingFriction::Create(friction, size, area, spec.bending_friction_smoothing),
-               friction * area / size));
+      MakeTerm("fv_bending_friction_step", {along[0], along[1], along[2], across.node},
+               FvBendingFrictionStep::Create(friction, size, area, spec.bending_friction_smoothing,
+                                             previous, across.sign),
+               shift));
 }
 
 // A single row (or column) of nodes: a strip bending in one direction. Each link's membrane
@@ -133,7 +168,7 @@ void AddStrip(const NodeSpecs& of_node, const Mesh& mesh, Model* model) {
     const int a = (k - 1) * step, p = k * step, b = (k + 1) * step;
     const FiniteVolumeSpec& spec = *of_node[p];
     AddBendingFriction(row ? spec.bending_friction_warp : spec.bending_friction_weft, spec,
-                       {a, p, b}, size[k], mesh.area[p], model);
+                       {a, p, b}, Across{}, size[k], mesh.area[p], nullptr, model);
     if (!(rigidity(p) > 0.0)) continue;
     model->terms.push_back(MakeTerm("fv_bending", {a, p, b},
                                     FvBendingEdge::Create(rigidity(p), size[k], mesh.area[p])));
@@ -150,16 +185,27 @@ Neighbours NeighboursOf(const Lattice& lattice, int i, int j) {
   return {lattice.At(i - 1, j), lattice.At(i + 1, j), lattice.At(i, j - 1), lattice.At(i, j + 1)};
 }
 
+// The neighbour across a control volume whose `low` and `high` neighbours are given (-1: none).
+Across AcrossOf(int low, int high) {
+  if (high >= 0) return {high, 1.0};
+  if (low >= 0) return {low, -1.0};
+  return {};
+}
+
 void AddBending(const FiniteVolumeSpec& spec, const Mesh& mesh, int p, const Neighbours& nb,
-                Model* model) {
+                const double* reference, Model* model) {
   const bool warp = nb.w >= 0 && nb.e >= 0, weft = nb.s >= 0 && nb.n >= 0;
   const double area = mesh.area[p];
   const double size1 = warp ? 0.5 * (RestDistance(mesh, nb.w, p) + RestDistance(mesh, p, nb.e)) : 0;
   const double size2 = weft ? 0.5 * (RestDistance(mesh, nb.s, p) + RestDistance(mesh, p, nb.n)) : 0;
-  if (warp)
-    AddBendingFriction(spec.bending_friction_warp, spec, {nb.w, p, nb.e}, size1, area, model);
-  if (weft)
-    AddBendingFriction(spec.bending_friction_weft, spec, {nb.s, p, nb.n}, size2, area, model);
+  if (warp) {
+    AddBendingFriction(spec.bending_friction_warp, spec, {nb.w, p, nb.e}, AcrossOf(nb.s, nb.n),
+                       size1, area, reference, model);
+  }
+  if (weft) {
+    AddBendingFriction(spec.bending_friction_weft, spec, {nb.s, p, nb.n}, AcrossOf(nb.w, nb.e),
+                       size2, area, reference, model);
+  }
   if (warp && weft) {
     if (spec.D_warp > 0.0 || spec.D_weft > 0.0) {
       model->terms.push_back(
@@ -175,11 +221,23 @@ void AddBending(const FiniteVolumeSpec& spec, const Mesh& mesh, int p, const Nei
   }
 }
 
+// The shear angle γ (rad) of quarter P, A, B (FvMembrane's), 0 where an arm has no length.
+double ShearAngleAt(const double* p, const double* a, const double* b) {
+  double gram[3];
+  FvMembrane::ArmGram(p, a, b, gram);
+  double shear = 0.0;
+  if (!(gram[0] > 0.0) || !(gram[1] > 0.0) ||
+      !FvMembrane::ShearAngle(gram, std::sqrt(gram[0]), std::sqrt(gram[1]), &shear)) {
+    return 0.0;
+  }
+  return shear;
+}
+
 // The four quarters of control volume p: membrane, and the shear friction where the fabric has it.
 // The friction's least-squares shift, HG A_q, its energy at a shear angle of 1 rad, keeps the
 // ceres-* residual √(2 (E + shift)) smooth at rest, where E = 0 (as AddBendingFriction's).
 void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, const Mesh& mesh, int p,
-                 const Neighbours& nb, Model* model) {
+                 const Neighbours& nb, const double* reference, Model* model) {
   for (int a : {nb.e, nb.w}) {
     for (int b : {nb.n, nb.s}) {
       if (a < 0 || b < 0) continue;
@@ -187,22 +245,28 @@ void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, cons
       model->terms.push_back(MakeTerm("fv_membrane", {p, a, b},
                                       FvMembrane::Create(e.e1, e.e2, e.e12, e.g, rest_a, rest_b)));
       if (!(spec.shear_friction > 0.0)) continue;
-      model->terms.push_back(MakeTerm("fv_shear_friction", {p, a, b},
-                                      FvShearFriction::Create(spec.shear_friction, rest_a, rest_b,
-                                                              spec.shear_friction_smoothing),
-                                      spec.shear_friction * rest_a * rest_b / 4.0));
+      const double previous =
+          reference && spec.friction_load_steps > 0
+              ? ShearAngleAt(At(reference, p), At(reference, a), At(reference, b))
+              : 0.0;
+      model->terms.push_back(
+          MakeTerm("fv_shear_friction", {p, a, b},
+                   FvShearFriction::Create(spec.shear_friction, rest_a, rest_b,
+                                           spec.shear_friction_smoothing, previous),
+                   spec.shear_friction * rest_a * rest_b / 4.0));
     }
   }
 }
 
 }  // namespace
 
-void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model) {
-  AddFiniteVolumeTerms(NodeSpecs(mesh.nodes.size(), &spec), mesh, model);
+void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model,
+                          const double* friction_reference) {
+  AddFiniteVolumeTerms(NodeSpecs(mesh.nodes.size(), &spec), mesh, model, friction_reference);
 }
 
 void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, const Mesh& mesh,
-                          Model* model) {
+                          Model* model, const double* friction_reference) {
   assert(of_node.size() == mesh.nodes.size() && !of_node.empty());
   std::map<const FiniteVolumeSpec*, MembraneRigidities> rigidities;
   for (const FiniteVolumeSpec* spec : of_node) {
@@ -218,8 +282,8 @@ void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, c
   }
   for (int p = 0; p < n; ++p) {  // a full grid's ids run row by row: p = j*nu + i
     const Neighbours nb = NeighboursOf(lattice, mesh.grid_index[p][0], mesh.grid_index[p][1]);
-    AddBending(*of_node[p], mesh, p, nb, model);
-    AddMembrane(rigidities.at(of_node[p]), *of_node[p], mesh, p, nb, model);
+    AddBending(*of_node[p], mesh, p, nb, friction_reference, model);
+    AddMembrane(rigidities.at(of_node[p]), *of_node[p], mesh, p, nb, friction_reference, model);
   }
 }
 

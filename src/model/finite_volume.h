@@ -38,13 +38,18 @@ MembraneRigidities PlaneStressRigidities(const FiniteVolumeSpec& spec);
 // Throws InputError at spec.where for a mesh that is not a grid or circle with area, or
 // rigidities whose energy is not positive semidefinite (ν_warp ν_weft ≥ 1, E1 E2 < E12²,
 // D12² > D_warp D_weft).
-void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model);
+// With spec.friction_load_steps > 0 the frictions are a load step's
+// (costs/fv_bending_friction_step.h, costs/fv_shear_friction.h): their kinks sit at
+// `friction_reference` (3 coordinates per node), or at the flat state where it is null; such a
+// bending friction needs a direction across its control volume, which a strip has not (InputError).
+void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model,
+                          const double* friction_reference = nullptr);
 // The same with a material per node (regions, src/model/regions.h): each control volume takes the
 // material of its own node — its bending term and its quarter sections' membrane terms; a strip
 // link's membrane spring is two halves, each of its own node's modulus. Every distinct material is
 // checked as above (at its own `where`).
 void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, const Mesh& mesh,
-                          Model* model);
+                          Model* model, const double* friction_reference = nullptr);
 
 }  // namespace drape
 

@@ -34,6 +34,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -515,7 +516,7 @@ void CheckPressureHeld(const Scene& scene, const Model& model) {
 
 }  // namespace
 
-Model BuildModel(const Scene& scene) {
+Model BuildModel(const Scene& scene, const std::vector<double>* friction_reference) {
   const BuildClock clock(scene);
   RejectUnsupported(scene);
   const Mesh mesh = BuildMesh(scene.mesh);
@@ -553,7 +554,9 @@ Model BuildModel(const Scene& scene) {
     for (size_t k = 0; k < of_node.size(); ++k) {
       of_node[k] = &materials.at(static_cast<int>(k)).finite_volume;
     }
-    AddFiniteVolumeTerms(of_node, mesh, &model);
+    assert(!friction_reference || friction_reference->size() == model.positions.size());
+    AddFiniteVolumeTerms(of_node, mesh, &model,
+                         friction_reference ? friction_reference->data() : nullptr);
   }
   if (scene.material.model == "springs" || scene.material.springs.present) {
     AddSprings(materials, mesh, &model);

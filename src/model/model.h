@@ -89,7 +89,10 @@ struct Model {
 // Builds the model of a loaded scene. Throws InputError (located at the offending key) for what
 // only shows at this stage: empty selections, ids out of range, coincident nodes, a mesh with fewer
 // than 2 nodes, an unreadable mesh file, an energy with no minimum.
-Model BuildModel(const Scene& scene);
+// `friction_reference`, when given (the positions of every node, 3 per node), puts the frictions'
+// kinks there instead of at the flat state: a later load step of the incremental form
+// (FiniteVolumeSpec::friction_load_steps).
+Model BuildModel(const Scene& scene, const std::vector<double>* friction_reference = nullptr);
 
 // Checks the invariants that ceres::Problem would otherwise abort on (node ids in range, no node
 // twice in one term, storage sized). Programmer errors: asserts.

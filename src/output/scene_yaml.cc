@@ -223,13 +223,9 @@ void WriteFiniteVolume(const FiniteVolumeSpec& fv, YAML::Emitter& out) {
     Key(out, key.key);
     Number(out, fv.*key.member);
   }
-  if (fv.bending_friction_warp > 0.0 || fv.bending_friction_weft > 0.0) {
-    Key(out, "bending_friction_smoothing");
-    Number(out, fv.bending_friction_smoothing);
-  }
-  if (fv.shear_friction > 0.0) {
-    Key(out, "shear_friction_smoothing");
-    Number(out, fv.shear_friction_smoothing);
+  for (const FrictionSetting& setting : FrictionSettings(fv)) {
+    Key(out, setting.key);
+    Number(out, setting.value);
   }
   out << YAML::EndMap;
 }

@@ -614,11 +614,8 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
         values.push_back({key.key, fv.*key.member, key.unit});
       }
     }
-    if (fv.bending_friction_warp > 0.0 || fv.bending_friction_weft > 0.0) {
-      values.push_back({"bending_friction_smoothing", fv.bending_friction_smoothing, "1/m"});
-    }
-    if (fv.shear_friction > 0.0) {
-      values.push_back({"shear_friction_smoothing", fv.shear_friction_smoothing, "rad"});
+    for (const FrictionSetting& setting : FrictionSettings(fv)) {
+      values.push_back({setting.key, setting.value, setting.unit});
     }
   }
   const std::pair<const char*, const SpringFamilySpec*> families[] = {

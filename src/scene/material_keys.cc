@@ -21,4 +21,18 @@ const std::vector<FiniteVolumeKey>& FiniteVolumeKeys() {
   return keys;
 }
 
+std::vector<FrictionSetting> FrictionSettings(const FiniteVolumeSpec& fv) {
+  std::vector<FrictionSetting> settings;
+  const bool bending = fv.bending_friction_warp > 0.0 || fv.bending_friction_weft > 0.0;
+  if (bending)
+    settings.push_back({"bending_friction_smoothing", fv.bending_friction_smoothing, "1/m"});
+  if (fv.shear_friction > 0.0) {
+    settings.push_back({"shear_friction_smoothing", fv.shear_friction_smoothing, "rad"});
+  }
+  if (fv.friction_load_steps > 0) {
+    settings.push_back({"friction_load_steps", static_cast<double>(fv.friction_load_steps), "1"});
+  }
+  return settings;
+}
+
 }  // namespace drape

@@ -26,6 +26,16 @@ struct FiniteVolumeKey {
 // In the order scene.yaml writes them.
 const std::vector<FiniteVolumeKey>& FiniteVolumeKeys();
 
+// The frictions' settings, material-wide (no region gives them), that drape check, summary.json
+// and scene.yaml report: each friction's smoothing where the fabric has that friction, and
+// friction_load_steps where the incremental form is chosen.
+struct FrictionSetting {
+  std::string key;
+  double value;
+  std::string unit;
+};
+std::vector<FrictionSetting> FrictionSettings(const FiniteVolumeSpec& fv);
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_SCENE_MATERIAL_KEYS_H_

@@ -117,6 +117,10 @@ struct FiniteVolumeSpec {
   // (costs/fv_shear_friction.h), and δ, the shear angle (rad) below which its kink is smoothed.
   double shear_friction = 0;
   double shear_friction_smoothing = 0.001;
+  // How the frictions follow the load: 0, the monotone (deformation-theory) form, loads applied at
+  // once; N ≥ 1, the incremental form, loads ramped in N equal steps, each a minimisation with the
+  // frictions' kinks at the previous step's state (costs/fv_bending_friction_step.h).
+  int friction_load_steps = 0;
   Location where;
 };
 

@@ -413,7 +413,7 @@ double ReadFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
 }
 
 // The frictions: bending_friction_<direction> (N) or kes.2HB_<direction> (gf·cm/cm), and
-// shear_friction (N/m) or kes.2HG (gf/cm), with their smoothings.
+// shear_friction (N/m) or kes.2HG (gf/cm), with their smoothings and load steps.
 void ReadFrictions(const YamlMap& map, const std::optional<YamlMap>& kes, FiniteVolumeSpec* fv) {
   fv->bending_friction_warp =
       ReadFriction(map, kes, "bending_friction_warp", "2HB_warp", KesBendingFriction);
@@ -426,13 +426,16 @@ void ReadFrictions(const YamlMap& map, const std::optional<YamlMap>& kes, Finite
   if (const auto v = map.Find("shear_friction_smoothing")) {
     fv->shear_friction_smoothing = ReadPositive(*v);
   }
+  if (const auto v = map.Find("friction_load_steps")) {
+    fv->friction_load_steps = ReadIntAtLeast(*v, 0);
+  }
 }
 
 FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& density) {
-  const YamlMap map(
-      value, {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft", "D_12", "kes",
-              "bending_length", "bending_friction_warp", "bending_friction_weft",
-              "bending_friction_smoothing", "shear_friction", "shear_friction_smoothing"});
+  const YamlMap map(value, {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft",
+                            "D_12", "kes", "bending_length", "bending_friction_warp",
+                            "bending_friction_weft", "bending_friction_smoothing", "shear_friction",
+                            "shear_friction_smoothing", "friction_load_steps"});
   FiniteVolumeSpec fv;
   fv.present = true;
   fv.where = value.where;

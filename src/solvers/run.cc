@@ -11,6 +11,7 @@
 
 #include "src/scene/material_keys.h"
 #include "src/scene/solver_methods.h"
+#include "src/solvers/load_steps.h"
 
 namespace drape {
 namespace {
@@ -243,13 +244,30 @@ RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
   return result;
 }
 
+// The load path's steps in the result: their iterations and time, and a step that did not
+// converge, which leaves the path's end not the equilibrium the incremental form defines.
+void NoteLoadPath(const LoadPathSummary& path, RunResult* result) {
+  result->summary.iterations += path.iterations;
+  result->summary.wall_time_s += path.wall_time_s;
+  result->summary.termination += "; the last of " + std::to_string(path.steps + 1) +
+                                 " load steps of the incremental friction, after " +
+                                 std::to_string(path.iterations) + " iterations in the others";
+  if (path.unconverged_step > 0 && result->converged) {
+    result->converged = false;
+    result->summary.termination +=
+        "; but load step " + std::to_string(path.unconverged_step) + " did not converge";
+  }
+}
+
 }  // namespace
 
 RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
                    const std::function<bool(const IterationRecord&)>& on_iteration) {
   const SolverInfo* info = FindSolver(method);
   if (!info) throw InputError(scene.solver.where, "unknown solver '" + method + "'");
-  const SolverSummary continuation = RunFrictionContinuation(scene, model, method, on_iteration);
+  const LoadPathSummary path = RunLoadPath(scene, model, method, on_iteration);
+  const SolverSummary continuation = RunFrictionContinuation(
+      scene, model, method, on_iteration, path.steps > 0 ? &path.reference : nullptr);
   RunResult result = RunSolveOnce(scene, model, *info, method, on_iteration);
   if (continuation.iterations > 0) {
     result.summary.iterations += continuation.iterations;
@@ -257,32 +275,46 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
     result.summary.termination += "; after " + std::to_string(continuation.iterations) +
                                   " iterations of continuation in the friction's smoothing";
   }
+  if (path.steps > 0) NoteLoadPath(path, &result);
   return result;
 }
 
-SolverSummary RunFrictionContinuation(
+SolverSummary SolveWithSceneOptions(
     const Scene& scene, Model& model, const std::string& method,
     const std::function<bool(const IterationRecord&)>& on_iteration) {
   const SolverInfo* info = FindSolver(method);
   if (!info) throw InputError(scene.solver.where, "unknown solver '" + method + "'");
+  SolverOptions options = OptionsFor(scene, method);
+  options.on_iteration = [&](const IterationRecord& record) {
+    return !on_iteration || on_iteration(record);
+  };
+  std::unique_ptr<HessianWorkspace> workspace;
+  if (model.num_free_dofs() > 0 && info->uses_hessian_workspace) {
+    workspace = std::make_unique<HessianWorkspace>(model);
+  }
+  options.workspace = workspace.get();
+  return info->make()->Solve(model, options);
+}
+
+bool HasFriction(const Scene& scene) {
+  return HasFriction(
+      scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft,
+              &FiniteVolumeSpec::shear_friction});
+}
+
+SolverSummary RunFrictionContinuation(
+    const Scene& scene, Model& model, const std::string& method,
+    const std::function<bool(const IterationRecord&)>& on_iteration,
+    const std::vector<double>* reference) {
   SolverSummary total;
   for (const Smoothings& smoothings : ContinuationStages(scene)) {
     Scene stage = scene;
     stage.material.finite_volume.bending_friction_smoothing = smoothings.bending;
     stage.material.finite_volume.shear_friction_smoothing = smoothings.shear;
-    Model stage_model = BuildModel(stage);
+    Model stage_model = BuildModel(stage, reference);
     assert(stage_model.positions.size() == model.positions.size());
     stage_model.positions = model.positions;
-    SolverOptions options = OptionsFor(stage, method);
-    options.on_iteration = [&](const IterationRecord& record) {
-      return !on_iteration || on_iteration(record);
-    };
-    std::unique_ptr<HessianWorkspace> workspace;
-    if (stage_model.num_free_dofs() > 0 && info->uses_hessian_workspace) {
-      workspace = std::make_unique<HessianWorkspace>(stage_model);
-    }
-    options.workspace = workspace.get();
-    const SolverSummary summary = info->make()->Solve(stage_model, options);
+    const SolverSummary summary = SolveWithSceneOptions(stage, stage_model, method, on_iteration);
     total.iterations += summary.iterations;
     total.wall_time_s += summary.wall_time_s;
     if (!AllFinite(stage_model.positions)) break;  // the scene's own solve starts from the last

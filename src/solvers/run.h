@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "src/model/contact.h"
 #include "src/model/equilibrium.h"
@@ -39,14 +40,25 @@ struct RunResult {
 RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
                    const std::function<bool(const IterationRecord&)>& on_iteration = {});
 
+// One solve of `model` from its positions with `method` and scene.solver's tolerance, limits and
+// options, without RunSolve's certificate (the stages of the continuation and of a load path).
+SolverSummary SolveWithSceneOptions(
+    const Scene& scene, Model& model, const std::string& method,
+    const std::function<bool(const IterationRecord&)>& on_iteration = {});
+
+// Whether the scene's fabric, or one of its regions, has a friction (in bending or in shear).
+bool HasFriction(const Scene& scene);
+
 // The frictions' continuation, which RunSolve runs first: from model.positions, the stages of
 // larger smoothing δ that a friction's kink at the flat state needs before the scene's own δ
 // (costs/fv_bending_friction.h, costs/fv_shear_friction.h), each solved with `method` from the
 // last; the result is left in `model`. Nothing is done (no stage) without friction. Returns the
-// stages' iterations and time together.
+// stages' iterations and time together. `friction_reference`: where the frictions' kinks sit, as
+// for BuildModel (a load step of the incremental form; null: the flat state).
 SolverSummary RunFrictionContinuation(
     const Scene& scene, Model& model, const std::string& method,
-    const std::function<bool(const IterationRecord&)>& on_iteration = {});
+    const std::function<bool(const IterationRecord&)>& on_iteration = {},
+    const std::vector<double>* friction_reference = nullptr);
 
 }  // namespace drape
 

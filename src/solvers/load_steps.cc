@@ -1,0 +1,69 @@
+#include "src/solvers/load_steps.h"
+
+#include <vector>
+
+#include "src/solvers/run.h"
+
+namespace drape {
+namespace {
+
+// One step: the continuation in the frictions' smoothing, then `method` at the scene's own.
+SolverSummary SolveStep(const Scene& step, Model& model, const std::string& method,
+                        const std::function<bool(const IterationRecord&)>& on_iteration,
+                        const std::vector<double>* reference) {
+  const SolverSummary continuation =
+      RunFrictionContinuation(step, model, method, on_iteration, reference);
+  SolverSummary summary = SolveWithSceneOptions(step, model, method, on_iteration);
+  summary.iterations += continuation.iterations;
+  summary.wall_time_s += continuation.wall_time_s;
+  return summary;
+}
+
+}  // namespace
+
+int FrictionLoadSteps(const Scene& scene) {
+  if (scene.material.model != "finite_volume" || !HasFriction(scene)) return 0;
+  return scene.material.finite_volume.friction_load_steps;
+}
+
+LoadsSpec ScaledLoads(const LoadsSpec& loads, double fraction) {
+  LoadsSpec scaled = loads;
+  if (scaled.gravity) *scaled.gravity *= fraction;
+  for (ForceSpec& force : scaled.forces) {
+    force.value *= fraction;
+    for (Eigen::Vector3d& value : force.values) value *= fraction;
+    force.ramp_to *= fraction;
+    force.pressure *= fraction;
+  }
+  if (scaled.pressure) scaled.pressure->pressure *= fraction;
+  return scaled;
+}
+
+LoadPathSummary RunLoadPath(const Scene& scene, Model& model, const std::string& method,
+                            const std::function<bool(const IterationRecord&)>& on_iteration) {
+  LoadPathSummary path;
+  const int steps = FrictionLoadSteps(scene);
+  if (steps == 0) return path;
+  std::vector<double> positions = model.initial;
+  const std::vector<double>* reference = nullptr;  // the first step's kinks: the flat state
+  for (int k = 1; k < steps; ++k) {
+    Scene step = scene;
+    step.loads = ScaledLoads(scene.loads, static_cast<double>(k) / steps);
+    Model step_model = BuildModel(step, reference);
+    step_model.positions = positions;
+    const SolverSummary summary = SolveStep(step, step_model, method, on_iteration, reference);
+    path.steps = k;
+    path.iterations += summary.iterations;
+    path.wall_time_s += summary.wall_time_s;
+    if (!summary.converged && path.unconverged_step == 0) path.unconverged_step = k;
+    positions = step_model.positions;
+    reference = &positions;
+  }
+  Model last = BuildModel(scene, reference);
+  last.positions = positions;
+  model = std::move(last);
+  path.reference = std::move(positions);
+  return path;
+}
+
+}  // namespace drape
