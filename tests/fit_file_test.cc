@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -220,6 +221,35 @@ TEST(FitFileTest, LoadsEveryExampleFitFile) {
     ++count;
   }
   EXPECT_GE(count, 5);
+}
+
+// drape's own nodes.csv is a measurement of positions: the free nodes' ids and positions (the
+// nodes fixed in all three directions left out), so that a fit can start from drape's output.
+TEST(FitFileTest, ReadsDrapesOwnNodesCsvAsPositions) {
+  const std::string path = WriteFitFolder("own_nodes", R"(scene: base.yaml
+parameters:
+  - {key: material.finite_volume.D_warp, initial: 1.0e-5, bounds: [1.0e-7, 1.0e-3], log: true}
+measurements:
+  - positions: {file: solved/nodes.csv}
+)");
+  const std::string folder = std::filesystem::path(path).parent_path().string();
+  std::ostringstream stdout_text, stderr_text;
+  ASSERT_EQ(RunCommand({"solve", folder + "/base.yaml", "--out", folder + "/solved"}, stdout_text,
+                       stderr_text),
+            0)
+      << stderr_text.str();
+  const FitSpec spec = LoadFitFile(path);
+  const PositionData& data = spec.specimens[0].measurements[0].positions;
+  const Model model = BuildModel(LoadConfig("configs/fit/drape_fv.yaml"));
+  std::vector<int> free;
+  for (int k = 0; k < model.num_nodes; ++k) {
+    if (!model.fully_fixed(k)) free.push_back(k);
+  }
+  EXPECT_FALSE(data.cloud);
+  EXPECT_EQ(data.ids, free);
+  ASSERT_EQ(data.points.size(), free.size());
+  for (const Eigen::Vector3d& point : data.points) EXPECT_TRUE(point.allFinite());
+  EXPECT_EQ(data.lines.front(), free.front() + 2);  // line 1 is the header
 }
 
 // A fit solves each equilibrium with its loads at once: a scene that asks for the incremental

@@ -5,7 +5,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +18,7 @@
 #include "src/model/mesh_file.h"
 #include "src/model/model.h"
 #include "src/output/json.h"
+#include "src/output/writers.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
@@ -29,6 +32,21 @@ namespace fs = std::filesystem;
 // ------------------------------------------------------------------------------- data files
 
 // The numbers of one comma- or blank-separated row; the column of each field for messages.
+// A data file's number: a scene's (yaml_reader.h), or a finite one below the scene's smallest
+// magnitude, which a measurement may well be (drape's own nodes.csv holds residual forces of
+// 1e-37 N): as a scene's number it is refused, so that products stay finite; as data, it is a
+// value.
+std::optional<double> ParseDataNumber(const std::string& text, std::string* error) {
+  if (const auto number = ParseNumber(text, error)) return number;
+  if (text.find_first_not_of("0123456789.eE+-") != std::string::npos) return std::nullopt;
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !(std::abs(number) < kSmallestInputMagnitude)) {
+    return std::nullopt;
+  }
+  return number;
+}
+
 bool SplitNumbers(const std::string& line, std::vector<double>* numbers, std::vector<int>* columns,
                   int* bad_column) {
   numbers->clear();
@@ -43,7 +61,7 @@ bool SplitNumbers(const std::string& line, std::vector<double>* numbers, std::ve
            !std::isspace(static_cast<unsigned char>(line[end])))
       ++end;
     std::string error;
-    const auto number = ParseNumber(line.substr(k, end - k), &error);
+    const auto number = ParseDataNumber(line.substr(k, end - k), &error);
     if (!number) {
       *bad_column = static_cast<int>(k) + 1;
       return false;
@@ -58,7 +76,21 @@ bool SplitNumbers(const std::string& line, std::vector<double>* numbers, std::ve
 struct Rows {
   std::vector<std::vector<double>> values;
   std::vector<int> lines;
+  std::vector<std::string> header;  // the first line's names, where it is a header
 };
+
+// The comma-separated names of a header line, trimmed.
+std::vector<std::string> HeaderNames(const std::string& line) {
+  std::vector<std::string> names;
+  std::stringstream stream(line);
+  std::string name;
+  while (std::getline(stream, name, ',')) {
+    const size_t first = name.find_first_not_of(" \t\r");
+    const size_t last = name.find_last_not_of(" \t\r");
+    names.push_back(first == std::string::npos ? "" : name.substr(first, last - first + 1));
+  }
+  return names;
+}
 
 std::ifstream OpenData(const std::string& path, const Location& where) {
   std::ifstream in(path);
@@ -80,7 +112,10 @@ Rows ReadRows(std::istream& in, const std::string& path, int first_line, int max
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
     int bad_column = 0;
     if (!SplitNumbers(line, &numbers, &columns, &bad_column)) {
-      if (allow_header && number == first_line) continue;
+      if (allow_header && number == first_line) {
+        rows.header = HeaderNames(line);
+        continue;
+      }
       throw InputError(Location{path, number, bad_column, ""}, "expected a number");
     }
     rows.values.push_back(numbers);
@@ -397,6 +432,28 @@ void ReadTop(const YamlValue& root, FitSpec* spec) {
   }
 }
 
+// drape's own nodes.csv (src/output/writers.h, NodesCsvColumns): each node's id and position, but
+// the nodes fixed in all three directions (the scene holds them where it says: measuring them
+// adds residuals that are zero by construction, which would understate the fit's uncertainties).
+PositionData DrapeNodePositions(const Rows& rows, const std::string& path) {
+  const auto column = [&](const char* name) {
+    const auto& names = NodesCsvColumns();
+    return static_cast<size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  const size_t x = column("x_m"), fixed_x = column("fixed_x");
+  assert(column("id") == 0 && column("z_m") == x + 2 && column("fixed_z") == fixed_x + 2);
+  PositionData data;
+  for (size_t row = 0; row < rows.values.size(); ++row) {
+    RequireColumns(rows, row, NodesCsvColumns().size(), path, "drape's nodes.csv");
+    const std::vector<double>& values = rows.values[row];
+    if (values[fixed_x] != 0 && values[fixed_x + 1] != 0 && values[fixed_x + 2] != 0) continue;
+    data.ids.push_back(RowId(rows, row, path));
+    data.points.emplace_back(values[x], values[x + 1], values[x + 2]);
+    data.lines.push_back(rows.lines[row]);
+  }
+  return data;
+}
+
 }  // namespace
 
 PositionData ReadPositionFile(const std::string& path, const Location& where) {
@@ -407,6 +464,7 @@ PositionData ReadPositionFile(const std::string& path, const Location& where) {
   std::ifstream in = OpenData(path, where);
   const Rows rows = ReadRows(in, path, 1, -1, true);
   if (rows.values.empty()) throw InputError(where, "'" + path + "' holds no points");
+  if (rows.header == NodesCsvColumns()) return DrapeNodePositions(rows, path);
   PositionData data;
   data.cloud = extension == ".xyz" || rows.values[0].size() == 3;
   for (size_t row = 0; row < rows.values.size(); ++row) {

@@ -301,11 +301,38 @@ int InContact(const RunResult& result, int node) {
   return 0;
 }
 
-// nodes.csv (format kResultFormatVersion): units in every header, booleans as 0/1.
+}  // namespace
+
+const std::vector<std::string>& NodesCsvColumns() {
+  static const std::vector<std::string> columns = {"id",
+                                                   "i",
+                                                   "j",
+                                                   "x_m",
+                                                   "y_m",
+                                                   "z_m",
+                                                   "fixed_x",
+                                                   "fixed_y",
+                                                   "fixed_z",
+                                                   "in_contact",
+                                                   "reaction_x_N",
+                                                   "reaction_y_N",
+                                                   "reaction_z_N",
+                                                   "residual_x_N",
+                                                   "residual_y_N",
+                                                   "residual_z_N",
+                                                   "contact_x_N",
+                                                   "contact_y_N",
+                                                   "contact_z_N"};
+  return columns;
+}
+
+namespace {
+
+// nodes.csv (format kResultFormatVersion): the columns of NodesCsvColumns().
 void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) {
-  out << "id,i,j,x_m,y_m,z_m,fixed_x,fixed_y,fixed_z,in_contact,reaction_x_N,reaction_y_N,"
-         "reaction_z_N,residual_x_N,residual_y_N,residual_z_N,contact_x_N,contact_y_N,"
-         "contact_z_N\n";
+  const std::vector<std::string>& columns = NodesCsvColumns();
+  for (size_t k = 0; k < columns.size(); ++k) out << (k ? "," : "") << columns[k];
+  out << '\n';
   for (int node = 0; node < model.num_nodes; ++node) {
     const auto ij = node < static_cast<int>(model.grid_index.size()) ? model.grid_index[node]
                                                                      : std::array<int, 2>{-1, -1};

@@ -35,6 +35,10 @@ struct MaterialValue {
 };
 std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material);
 
+// nodes.csv's columns, in order (units in the names, booleans as 0/1). `drape fit` reads a
+// nodes.csv as measured positions by these names (src/fit/fit_file.cc).
+const std::vector<std::string>& NodesCsvColumns();
+
 // The per-step trace of a method that records one (`kinetic` or `history` in output.write): one
 // file name per method, since each method has its own columns: kinetic_<method>.csv.
 std::string TraceFileName(const std::string& solver);
