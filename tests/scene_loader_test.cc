@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "src/scene/solver_methods.h"
+#include "tests/test_scenes.h"
 
 namespace drape {
 namespace {
@@ -936,6 +937,36 @@ TEST_P(FabricParameterBadSceneTest, IsRejectedWithALocatedMessage) {
 INSTANTIATE_TEST_SUITE_P(SceneLoader, FabricParameterBadSceneTest,
                          ::testing::ValuesIn(FabricParameterBadScenes()),
                          [](const auto& test) { return std::string(test.param.name); });
+
+}  // namespace
+}  // namespace drape
+
+namespace drape {
+namespace {
+
+// A scene's text (the Python module's drape.loads) is the file's scene, its errors located in the
+// label, its relative paths taken from the folder given.
+TEST(SceneLoaderText, IsTheFilesSceneWithItsErrorsInTheLabel) {
+  const std::string path = testing::SourcePath("configs/examples/hanging_sheet.yaml");
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  const Scene from_file = LoadScene(path, {"mesh.nodes=[5,5]"});
+  const Scene from_text =
+      LoadSceneText(text.str(), "<string>", "/some/folder", {"mesh.nodes=[5,5]"});
+  EXPECT_EQ(from_text.name, from_file.name);  // the text's own `name`
+  EXPECT_EQ(from_text.mesh.nodes, from_file.mesh.nodes);
+  EXPECT_EQ(from_text.directory, "/some/folder");
+  EXPECT_EQ(LoadSceneText(kMinimal, "<string>", ".").name, "scene");
+  try {
+    LoadSceneText("name: x\nmesh: {kind: grid, nodez: 3}\n", "<dict>", ".");
+    ADD_FAILURE() << "an unknown key was read";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where().file, "<dict>");
+    EXPECT_EQ(error.where().line, 2);
+    EXPECT_EQ(error.where().key, "mesh.nodez");
+  }
+}
 
 }  // namespace
 }  // namespace drape

@@ -303,6 +303,26 @@ int InContact(const RunResult& result, int node) {
 
 }  // namespace
 
+std::string SummaryJsonText(const Scene& scene, const Model& model, const SolveReport& report,
+                            const Provenance& provenance) {
+  std::ostringstream out;
+  WriteSummary(scene, model, report.result, report.drape, report.levels ? &*report.levels : nullptr,
+               provenance, out);
+  return out.str();
+}
+
+std::vector<double> NodeReactions(const Model& model, const RunResult& result) {
+  std::vector<double> forces(model.num_dofs());
+  for (int k = 0; k < model.num_dofs(); ++k) forces[k] = Reaction(model, result, k);
+  return forces;
+}
+
+std::vector<double> NodeContactForces(const Model& model, const RunResult& result) {
+  std::vector<double> forces(model.num_dofs());
+  for (int k = 0; k < model.num_dofs(); ++k) forces[k] = ContactForce(result, k);
+  return forces;
+}
+
 const std::vector<std::string>& NodesCsvColumns() {
   static const std::vector<std::string> columns = {"id",
                                                    "i",

@@ -43,6 +43,15 @@ const std::vector<std::string>& NodesCsvColumns();
 // file name per method, since each method has its own columns: kinetic_<method>.csv.
 std::string TraceFileName(const std::string& solver);
 
+// summary.json's text, as WriteOutputs writes it (the Python module's Result.summary).
+std::string SummaryJsonText(const Scene& scene, const Model& model, const SolveReport& report,
+                            const Provenance& provenance = {});
+
+// nodes.csv's forces, 3 per node (N): the supports' reactions (0 on free coordinates) and the
+// obstacles' contact forces (0 without obstacles; NaN where the certificate could not be made).
+std::vector<double> NodeReactions(const Model& model, const RunResult& result);
+std::vector<double> NodeContactForces(const Model& model, const RunResult& result);
+
 // Writes what scene.output.write asks for into `directory` (created if needed), as a whole
 // (src/output/result_folder.h): files of an earlier run that this one does not write are removed.
 // A `solver.levels` run's figures (report.levels) add the `levels` and `extrapolation` members to

@@ -1162,17 +1162,34 @@ void ReadScene(const YamlValue& root, Scene* scene) {
 
 }  // namespace
 
+namespace {
+
+Scene ReadSceneDocument(YAML::Node document, const std::string& label, Scene scene,
+                        const std::vector<std::string>& overrides) {
+  scene.root = Location{label, 1, 1, ""};
+  YamlOrigins origins(label);
+  ApplyOverrides(document, overrides, &origins);
+  ReadScene(YamlRoot(document, origins), &scene);
+  return scene;
+}
+
+}  // namespace
+
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides) {
   Scene scene;
   scene.file = path;
   scene.directory = DirectoryOf(path);
   scene.name = fs::path(path).stem().string();
-  scene.root = Location{path, 1, 1, ""};
-  YAML::Node document = ReadYamlFile(path, "scene file");
-  YamlOrigins origins(path);
-  ApplyOverrides(document, overrides, &origins);
-  ReadScene(YamlRoot(document, origins), &scene);
-  return scene;
+  return ReadSceneDocument(ReadYamlFile(path, "scene file"), path, std::move(scene), overrides);
+}
+
+Scene LoadSceneText(const std::string& text, const std::string& label, const std::string& directory,
+                    const std::vector<std::string>& overrides) {
+  Scene scene;
+  scene.file = label;
+  scene.directory = directory;
+  scene.name = "scene";
+  return ReadSceneDocument(ParseYamlText(text, label, "scene"), label, std::move(scene), overrides);
 }
 
 std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::string& key) {

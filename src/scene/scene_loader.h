@@ -19,6 +19,12 @@ std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::st
 
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The same for a scene's YAML text (the Python module's drape.loads): errors are located in
+// `label` (e.g. "<string>"), relative paths in it (mesh.path, output.directory) are taken from
+// `directory`, and the scene's name, where it gives none, is "scene".
+Scene LoadSceneText(const std::string& text, const std::string& label, const std::string& directory,
+                    const std::vector<std::string>& overrides = {});
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_SCENE_SCENE_LOADER_H_

@@ -360,12 +360,17 @@ YAML::Node ReadYamlFile(const std::string& path, const std::string& what) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read the " + what + ": read error");
+  return ParseYamlText(text.str(), path, what);
+}
+
+YAML::Node ParseYamlText(const std::string& text, const std::string& label,
+                         const std::string& what) {
   try {
-    CheckSingleDocument(text.str(), path, what);
-    return YAML::Load(text.str());
+    CheckSingleDocument(text, label, what);
+    return YAML::Load(text);
   } catch (const YAML::Exception& exception) {  // a ParserException, with its mark
     const YAML::Mark mark = exception.mark;
-    throw InputError(Location{path, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
+    throw InputError(Location{label, std::max(1, mark.line + 1), std::max(1, mark.column + 1), ""},
                      "YAML syntax error: " + exception.msg);
   }
 }

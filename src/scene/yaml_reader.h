@@ -121,6 +121,9 @@ std::vector<YamlValue> ReadList(const YamlValue& value);
 // syntax error or a second document. (yaml-cpp 0.7's LoadAll never returns on some inputs, e.g. a
 // lone ',': this reader counts the documents itself and stops where the parser stops advancing.)
 YAML::Node ReadYamlFile(const std::string& path, const std::string& what);
+// The same for YAML text already read, its errors located in `label` (a file name, or "<string>").
+YAML::Node ParseYamlText(const std::string& text, const std::string& label,
+                         const std::string& what);
 
 // Every number read lies in [1e-30, 1e15] in magnitude, or is 0: within that range the
 // products the model forms (mass × gravity × height, stiffness × length², ...) stay finite, and

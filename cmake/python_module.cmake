@@ -1,0 +1,39 @@
+# drape's Python module (python/): the package `drape` (python/drape/__init__.py) around the
+# extension `_drape` (python/drape_module.cc, pybind11) over drape_core, built into
+# build/python/drape (PYTHONPATH=build/python), installed where Debian's Python looks for that
+# prefix, and tested by pytest (python/tests) as the CTest test PythonModule.
+#   Debian: pybind11-dev python3-dev (build), python3-numpy (use), python3-pytest (tests).
+find_package(Python3 COMPONENTS Interpreter Development.Module)
+find_package(pybind11 CONFIG QUIET)
+if(NOT Python3_FOUND OR NOT pybind11_FOUND)
+  message(STATUS "pybind11 or the Python headers not found (Debian: pybind11-dev python3-dev): "
+                 "no Python module")
+  return()
+endif()
+set(DRAPE_PYTHON_FOUND ON)
+set_target_properties(drape_core PROPERTIES POSITION_INDEPENDENT_CODE ON)
+set(DRAPE_PYTHON_PACKAGE ${PROJECT_BINARY_DIR}/python/drape)
+pybind11_add_module(_drape MODULE ${PROJECT_SOURCE_DIR}/python/drape_module.cc)
+target_link_libraries(_drape PRIVATE drape_core)
+set_target_properties(_drape PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${DRAPE_PYTHON_PACKAGE})
+add_custom_command(TARGET _drape POST_BUILD
+                   COMMAND ${CMAKE_COMMAND} -E copy_if_different
+                           ${PROJECT_SOURCE_DIR}/python/drape/__init__.py ${DRAPE_PYTHON_PACKAGE}/
+                   VERBATIM)
+add_custom_target(drape_python_package ALL
+                  COMMAND ${CMAKE_COMMAND} -E copy_if_different
+                          ${PROJECT_SOURCE_DIR}/python/drape/__init__.py ${DRAPE_PYTHON_PACKAGE}/
+                  DEPENDS _drape VERBATIM)
+
+# Where Debian's Python finds a package under the install prefix: /usr/lib/python3/dist-packages
+# (the .deb's prefix), else <prefix>/lib/python3.X/dist-packages (/usr/local's, and any other).
+install(CODE "
+  if(CMAKE_INSTALL_PREFIX STREQUAL \"/usr\")
+    set(drape_python_dir \"\${CMAKE_INSTALL_PREFIX}/lib/python3/dist-packages\")
+  else()
+    set(drape_python_dir
+        \"\${CMAKE_INSTALL_PREFIX}/lib/python${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}/dist-packages\")
+  endif()
+  file(INSTALL \"${DRAPE_PYTHON_PACKAGE}\" DESTINATION \"\${drape_python_dir}\"
+       FILES_MATCHING PATTERN \"*.py\" PATTERN \"_drape*.so\" PATTERN \"__pycache__\" EXCLUDE)
+")

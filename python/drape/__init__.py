@@ -1,0 +1,147 @@
+"""drape in Python: load, check and solve fabric scenes with the code `drape solve` runs.
+
+    import drape
+    result = drape.solve("configs/examples/hanging_sheet.yaml", set={"mesh.nodes": [9, 9]})
+    result.positions          # (n, 3) float64, m
+    result.drape_coefficient  # a drape test's, else None
+
+Scenes come from a file (`load`), YAML text (`loads`) or a dict (`from_dict`); `set=` takes the
+overrides `drape solve --set` takes, as a dict of key paths to values. Bad input raises
+`drape.InputError` with the CLI's message and its `file`, `line`, `column` and `key`. A solve
+releases the GIL; Ctrl-C stops it and raises KeyboardInterrupt whose `result` is the last iterate.
+docs/python.md walks through it.
+"""
+
+import json
+import os
+
+from . import _drape
+
+__all__ = ["InputError", "Scene", "Result", "load", "loads", "from_dict", "solve", "__version__"]
+
+__version__ = _drape.version()
+
+
+class InputError(ValueError):
+    """Bad input, located as the CLI locates it: `file:line:column: key: problem`."""
+
+    def __init__(self, message, file="", line=0, column=0, key="", problem=""):
+        super().__init__(message)
+        self.file = file
+        self.line = line
+        self.column = column
+        self.key = key
+        self.problem = problem or message
+
+
+def _override_value(value):
+    """A --set value as YAML: booleans as true/false, lists and dicts as flow YAML (JSON)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (list, tuple, dict)):
+        return json.dumps(value)
+    if hasattr(value, "tolist"):  # NumPy scalars and arrays
+        return _override_value(value.tolist())
+    return str(value)
+
+
+def _overrides(set):
+    if set is None:
+        return []
+    if not isinstance(set, dict):
+        raise TypeError("set: expected a dict of key paths to values, e.g. {'mesh.spacing': 0.005}")
+    return [f"{key}={_override_value(value)}" for key, value in set.items()]
+
+
+class Scene:
+    """A loaded, checked scene (the `drape check` of it is `check()`)."""
+
+    def __init__(self, handle):
+        self._handle = handle
+
+    @property
+    def name(self):
+        return self._handle.name
+
+    @property
+    def file(self):
+        return self._handle.file
+
+    def check(self):
+        """What `drape check` prints, as data: nodes, free dofs, terms by type, SI material."""
+        return self._handle.check()
+
+    def __repr__(self):
+        return f"drape.Scene({self.name!r}, file={self.file!r})"
+
+
+def load(path, set=None):
+    """The scene of a YAML file, with `set` overrides ({'key.path': value})."""
+    return Scene(_drape.load(os.fspath(path), _overrides(set)))
+
+
+def loads(text, set=None, directory="."):
+    """The scene of YAML text; its relative paths are taken from `directory`."""
+    return Scene(_drape.loads(text, "<string>", os.fspath(directory), _overrides(set)))
+
+
+def from_dict(scene, set=None, directory="."):
+    """The scene of a dict with the YAML file's structure (JSON is YAML)."""
+    return Scene(_drape.loads(json.dumps(scene, indent=1), "<dict>", os.fspath(directory),
+                              _overrides(set)))
+
+
+class Result:
+    """A solved scene: NumPy arrays of the final state and the figures of summary.json."""
+
+    def __init__(self, solved):
+        self._solved = solved
+        arrays = solved.arrays()
+        figures = solved.figures()
+        self.positions = arrays["positions"]                # (n, 3) m
+        self.initial_positions = arrays["initial_positions"]  # (n, 3) m
+        self.reactions = arrays["reactions"]                # (n, 3) N, on fixed coordinates
+        self.contact_forces = arrays["contact_forces"]      # (n, 3) N
+        self.fixed = arrays["fixed"]                        # (n, 3) bool
+        self.faces = arrays["faces"]                        # (m, 3) node ids, for plotting
+        self.converged = figures["converged"]
+        self.stable = figures["stable"]
+        self.state = figures["state"]
+        self.termination = figures["termination"]
+        self.iterations = figures["iterations"]
+        self.energy = figures["energy"]                     # J, per term type and "total"
+        self.drape_coefficient = figures["drape_coefficient"]
+        self.summary = json.loads(figures["summary_json"])  # summary.json's dict
+        self.interrupted = figures["interrupted"]
+
+    def write(self, directory):
+        """The files `drape solve` writes (the scene's output.write), into `directory`."""
+        self._solved.write(os.fspath(directory))
+
+    def __repr__(self):
+        coefficient = ("" if self.drape_coefficient is None
+                       else f", drape_coefficient={self.drape_coefficient:.4g}")
+        return (f"drape.Result(converged={self.converged}, state={self.state!r}, "
+                f"nodes={len(self.positions)}{coefficient})")
+
+
+def solve(scene, solver=None, set=None, start=None):
+    """Solves a Scene, or the scene file at a path, as `drape solve` does; returns a Result.
+
+    solver: a method name (`drape solvers`); set: overrides (for a path); start: an earlier
+    Result or an (n, 3) array of positions, a warm start (the free nodes start there).
+    """
+    if not isinstance(scene, Scene):
+        scene = load(scene, set=set)
+    elif set is not None:
+        raise TypeError("set: give the overrides to drape.load (the scene is already loaded)")
+    if isinstance(start, Result):
+        start = start.positions
+    result = Result(_drape.solve(scene._handle, solver, start))
+    if result.interrupted:
+        interrupt = KeyboardInterrupt(
+            f"drape.solve interrupted after {result.iterations} iterations; "
+            "the last iterate is the exception's `result`")
+        interrupt.result = result
+        raise interrupt
+    return result

@@ -1,0 +1,212 @@
+// drape's Python module, _drape (the package python/drape wraps it): the scene loader, the model
+// builder and SolveAndReport that `drape solve` runs, with NumPy arrays for the results. The
+// package's __init__.py turns `set=` dicts into --set overrides, raises KeyboardInterrupt after an
+// interrupted solve and gives the classes their Python face; this file holds only what needs C++.
+#include <Python.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "src/analysis/mesh_rule.h"
+#include "src/analysis/solve_report.h"
+#include "src/model/model.h"
+#include "src/output/version.h"
+#include "src/output/writers.h"
+#include "src/scene/scene.h"
+#include "src/scene/scene_loader.h"
+#include "src/scene/solver_methods.h"
+#include "src/solvers/solver.h"
+#include "src/solvers/state_text.h"
+
+namespace py = pybind11;
+
+namespace drape {
+namespace {
+
+// A loaded scene and the overrides it was loaded with (for the result's provenance).
+struct PyScene {
+  Scene scene;
+  std::vector<std::string> overrides;
+};
+
+// A solved scene: what Result's arrays and write() are made from.
+struct PySolved {
+  Scene scene;
+  Model model;
+  SolveReport report;
+  Provenance provenance;
+  bool interrupted = false;  // stopped by Ctrl-C: the last iterate
+};
+
+// (n, 3) float64 array of 3 values per node.
+py::array_t<double> NodeArray(const std::vector<double>& values) {
+  py::array_t<double> array({static_cast<py::ssize_t>(values.size() / 3), py::ssize_t{3}});
+  std::copy(values.begin(), values.end(), array.mutable_data());
+  return array;
+}
+
+py::dict CheckData(const PyScene& loaded) {
+  const Model model = BuildModel(loaded.scene);
+  py::dict data;
+  data["name"] = loaded.scene.name;
+  data["nodes"] = model.num_nodes;
+  data["free_dofs"] = model.num_free_dofs();
+  data["terms"] = model.TermCounts();
+  data["solver"] = loaded.scene.solver.method;
+  py::dict material;
+  for (const MaterialValue& value : MaterialSiValues(loaded.scene.material)) {
+    material[py::str(value.key)] = py::make_tuple(value.value, value.unit);
+  }
+  data["material_si"] = material;
+  data["model"] = loaded.scene.material.model;
+  if (const std::optional<MeshAdvice> advice = AdviseMesh(loaded.scene, model);
+      advice && advice->coarse) {
+    data["warning"] = CoarseMeshWarning(*advice);
+  }
+  return data;
+}
+
+// The free coordinates of `start` ((n, 3) positions) in the model: a warm start.
+void WarmStart(const py::array_t<double>& start, Model* model) {
+  const auto view = start.unchecked<2>();
+  if (view.shape(0) != model->num_nodes || view.shape(1) != 3) {
+    throw py::value_error("start: expected an array of shape (" + std::to_string(model->num_nodes) +
+                          ", 3), got (" + std::to_string(view.shape(0)) + ", " +
+                          std::to_string(view.shape(1)) + ")");
+  }
+  for (int node = 0; node < model->num_nodes; ++node) {
+    for (int c = 0; c < 3; ++c) {
+      if (!model->fixed[3 * node + c]) model->positions[3 * node + c] = view(node, c);
+    }
+  }
+}
+
+// Solves as `drape solve` does (SolveAndReport), without the GIL; each iteration takes it back
+// briefly to run Python's signal handlers, so that Ctrl-C stops the solve at its last iterate.
+std::shared_ptr<PySolved> Solve(const PyScene& loaded, const std::optional<std::string>& solver,
+                                const std::optional<py::array_t<double>>& start) {
+  auto solved = std::make_shared<PySolved>();
+  solved->scene = loaded.scene;
+  if (solver) solved->scene.solver.method = *solver;
+  if (!FindSolver(solved->scene.solver.method)) {
+    throw InputError(solved->scene.solver.where,
+                     "unknown solver '" + solved->scene.solver.method + "'");
+  }
+  solved->model = BuildModel(solved->scene);
+  if (start) WarmStart(*start, &solved->model);
+  solved->provenance = Provenance{"python: drape.solve", loaded.overrides};
+  bool interrupted = false;
+  const auto on_iteration = [&interrupted](const IterationRecord&) {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) {  // the handler raised KeyboardInterrupt: kept for later
+      PyErr_Clear();
+      interrupted = true;
+    }
+    return !interrupted;
+  };
+  {
+    py::gil_scoped_release release;
+    solved->report = SolveAndReport(solved->scene, solved->model, solved->scene.solver.method,
+                                    on_iteration, /*automatic_levels=*/!start.has_value());
+  }
+  solved->interrupted = interrupted;
+  return solved;
+}
+
+py::dict ResultArrays(const PySolved& solved) {
+  const Model& model = solved.model;
+  const RunResult& result = solved.report.result;
+  py::dict arrays;
+  arrays["positions"] = NodeArray(model.positions);
+  arrays["initial_positions"] = NodeArray(model.initial);
+  arrays["reactions"] = NodeArray(NodeReactions(model, result));
+  arrays["contact_forces"] = NodeArray(NodeContactForces(model, result));
+  py::array_t<bool> fixed({static_cast<py::ssize_t>(model.num_nodes), py::ssize_t{3}});
+  for (int k = 0; k < model.num_dofs(); ++k) fixed.mutable_data()[k] = model.fixed[k] != 0;
+  arrays["fixed"] = fixed;
+  py::array_t<int> faces({static_cast<py::ssize_t>(model.triangles.size()), py::ssize_t{3}});
+  for (size_t t = 0; t < model.triangles.size(); ++t) {
+    for (int c = 0; c < 3; ++c) faces.mutable_data()[3 * t + c] = model.triangles[t][c];
+  }
+  arrays["faces"] = faces;
+  return arrays;
+}
+
+py::dict ResultFigures(const PySolved& solved) {
+  const RunResult& result = solved.report.result;
+  py::dict figures;
+  figures["converged"] = result.converged;
+  figures["stable"] = result.converged && result.stability.computed && result.stability.stable;
+  figures["state"] = StateText(result);
+  figures["termination"] = result.summary.termination;
+  figures["iterations"] = result.summary.iterations;
+  figures["interrupted"] = solved.interrupted;
+  py::dict energy;
+  energy["total"] = result.certificate.energy;
+  for (const auto& [type, value] : result.certificate.energy_by_type) energy[py::str(type)] = value;
+  figures["energy"] = energy;
+  const double coefficient = ReportedDrapeCoefficient(solved.report);
+  figures["drape_coefficient"] =
+      std::isfinite(coefficient) ? py::object(py::float_(coefficient)) : py::object(py::none());
+  figures["summary_json"] =
+      SummaryJsonText(solved.scene, solved.model, solved.report, solved.provenance);
+  return figures;
+}
+
+void Write(const PySolved& solved, const std::string& directory) {
+  CheckOutputWritable(directory);
+  WriteOutputs(solved.scene, solved.model, solved.report, directory, solved.provenance);
+}
+
+// drape's InputError as the package's drape.InputError(message, file, line, column, key).
+void TranslateInputError(std::exception_ptr pointer) {
+  try {
+    if (pointer) std::rethrow_exception(pointer);
+  } catch (const InputError& error) {
+    const py::object type = py::module_::import("drape").attr("InputError");
+    const Location& where = error.where();
+    const py::object value =
+        type(error.what(), where.file, where.line, where.column, where.key, error.problem());
+    PyErr_SetObject(type.ptr(), value.ptr());
+  }
+}
+
+}  // namespace
+}  // namespace drape
+
+PYBIND11_MODULE(_drape, module) {
+  using namespace drape;
+  module.doc() = "drape's C++ core: load, check and solve scenes (use the package drape)";
+  py::register_exception_translator(&TranslateInputError);
+  py::class_<PyScene, std::shared_ptr<PyScene>>(module, "Scene")
+      .def_property_readonly("name", [](const PyScene& s) { return s.scene.name; })
+      .def_property_readonly("file", [](const PyScene& s) { return s.scene.file; })
+      .def_property_readonly("overrides", [](const PyScene& s) { return s.overrides; })
+      .def("check", &CheckData);
+  py::class_<PySolved, std::shared_ptr<PySolved>>(module, "Solved")
+      .def("arrays", &ResultArrays)
+      .def("figures", &ResultFigures)
+      .def("write", &Write, py::arg("directory"));
+  module.def(
+      "load",
+      [](const std::string& path, const std::vector<std::string>& overrides) {
+        return std::make_shared<PyScene>(PyScene{LoadScene(path, overrides), overrides});
+      },
+      py::arg("path"), py::arg("overrides"));
+  module.def(
+      "loads",
+      [](const std::string& text, const std::string& label, const std::string& directory,
+         const std::vector<std::string>& overrides) {
+        return std::make_shared<PyScene>(
+            PyScene{LoadSceneText(text, label, directory, overrides), overrides});
+      },
+      py::arg("text"), py::arg("label"), py::arg("directory"), py::arg("overrides"));
+  module.def("solve", &Solve, py::arg("scene"), py::arg("solver"), py::arg("start"));
+  module.def("version", &DrapeVersion);
+}

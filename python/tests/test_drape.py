@@ -1,0 +1,134 @@
+"""The Python module against the command line: the same positions to the last digit, warm starts,
+located errors, Ctrl-C, and the scene as data. Run by CTest (PythonModule) with PYTHONPATH at the
+build tree's package, DRAPE_SOURCE_DIR at the clone and DRAPE_BINARY at the built drape."""
+
+import csv
+import json
+import os
+import signal
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import drape
+
+SOURCE = os.environ.get("DRAPE_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+BINARY = os.environ.get("DRAPE_BINARY", os.path.join(SOURCE, "build", "drape"))
+
+
+def config(relative):
+    return os.path.join(SOURCE, "configs", relative)
+
+
+def cli_solve(scene, folder, *overrides):
+    """`drape solve` into `folder`: its nodes.csv positions and summary.json."""
+    command = [BINARY, "solve", scene, "--out", str(folder)]
+    for override in overrides:
+        command += ["--set", override]
+    subprocess.run(command, check=True, capture_output=True)
+    with open(os.path.join(folder, "nodes.csv")) as nodes:
+        rows = list(csv.DictReader(nodes))
+    positions = np.array([[float(row[c]) for c in ("x_m", "y_m", "z_m")] for row in rows])
+    with open(os.path.join(folder, "summary.json")) as summary:
+        return positions, json.load(summary)
+
+
+@pytest.mark.parametrize("scene", ["examples/hanging_sheet.yaml", "examples/chain.yaml",
+                                   "examples/pulled_sheet.yaml"])
+def test_positions_are_the_clis_to_the_last_digit(scene, tmp_path):
+    positions, summary = cli_solve(config(scene), tmp_path)
+    result = drape.solve(config(scene))
+    assert result.converged == summary["converged"]
+    assert result.positions.shape == positions.shape
+    assert result.positions.dtype == np.float64
+    assert np.array_equal(result.positions, positions)  # nodes.csv holds 17 digits: exact
+    assert result.summary["energy"] == summary["energy"]
+    assert set(result.summary) == set(summary)
+
+
+def test_a_drape_test_gives_its_coefficient_and_arrays(tmp_path):
+    overrides = {"mesh.spacing": 0.02}
+    _, summary = cli_solve(config("fv/drape_tester_cotton_30.yaml"), tmp_path, "mesh.spacing=0.02")
+    result = drape.solve(config("fv/drape_tester_cotton_30.yaml"), set=overrides)
+    assert result.drape_coefficient == summary["drape_coefficient"]
+    n = len(result.positions)
+    assert result.fixed.shape == (n, 3) and result.fixed.dtype == np.bool_
+    assert result.reactions.shape == result.contact_forces.shape == (n, 3)
+    assert result.faces.shape[1] == 3 and result.faces.max() < n
+    # Reactions and contact forces balance the weight: Σ = m g upwards (to the solve's residual).
+    mass = summary["mass_kg"]
+    upward = result.reactions[:, 2].sum() + result.contact_forces[:, 2].sum()
+    assert upward == pytest.approx(mass * 9.81, rel=1e-6)
+    result.write(tmp_path / "written")
+    assert (tmp_path / "written" / "summary.json").is_file()
+
+
+def test_a_warm_start_begins_at_the_answer():
+    scene = drape.load(config("examples/hanging_sheet.yaml"))
+    cold = drape.solve(scene)
+    warm = drape.solve(scene, start=cold)
+    assert warm.converged and warm.iterations <= 1
+    assert np.allclose(warm.positions, cold.positions, atol=1e-9)
+    from_array = drape.solve(scene, start=cold.positions.copy())
+    assert np.array_equal(from_array.positions, warm.positions)
+    with pytest.raises(ValueError, match=r"shape \(225, 3\)"):
+        drape.solve(scene, start=np.zeros((3, 3)))
+
+
+def test_bad_input_is_located():
+    with pytest.raises(drape.InputError) as error:
+        drape.load(config("examples/hanging_sheet.yaml"), set={"mesh.nodez": [3, 3]})
+    assert (error.value.file, error.value.line, error.value.key) == ("--set", 1, "mesh.nodez")
+    assert "did you mean 'nodes'" in str(error.value)
+    text = "name: x\nmesh: {kind: grid, size: [1, 1], nodes: [3, 3]}\n" \
+           "material: {model: springs, density: -1}\n"
+    with pytest.raises(drape.InputError) as error:
+        drape.loads(text)
+    assert (error.value.file, error.value.line, error.value.column) == ("<string>", 3, 37)
+    assert error.value.key == "material.density"
+    with pytest.raises(drape.InputError) as error:
+        drape.from_dict({"mesh": {"kind": "grid", "sides": 3}})
+    assert error.value.file == "<dict>" and error.value.key == "mesh.sides"
+    with pytest.raises(drape.InputError, match="unknown solver"):
+        drape.solve(config("examples/chain.yaml"), solver="newtn")
+
+
+def test_a_scene_from_a_dict_is_the_files():
+    chain = {  # configs/examples/chain.yaml as a dict
+        "name": "chain", "dimension": 2,
+        "mesh": {"kind": "chain", "length": 1.0, "nodes": 11, "direction": [1, 0, 0]},
+        "material": {"model": "springs", "node_mass": 0.01, "springs": {"structural": 50}},
+        "fixed": [{"nodes": {"ids": [0]}, "move": [0.1, 0, 0]},
+                  {"nodes": {"ids": [10]}, "move": [-0.1, 0, 0]}],
+        "loads": {"gravity": [0, 0, -9.81]},
+        "solver": {"method": "newton", "tolerance": 1.0e-9, "max_iterations": 100000},
+    }
+    from_dict = drape.solve(drape.from_dict(chain))
+    from_file = drape.solve(config("examples/chain.yaml"))
+    assert np.array_equal(from_dict.positions, from_file.positions)
+
+
+def test_check_is_the_scene_as_data():
+    data = drape.load(config("fv/drape_tester_cotton_30.yaml")).check()
+    assert data["nodes"] == 709 and data["model"] == "finite_volume"
+    assert data["material_si"]["density"] == (pytest.approx(0.12), "kg/m^2")
+    assert sum(data["terms"].values()) == 5905
+    assert "coarse" in data["warning"]
+
+
+def test_ctrl_c_stops_a_solve_at_its_last_iterate():
+    scene = drape.load(config("fv/drape_tester_cotton_30.yaml"),
+                       set={"mesh.spacing": 0.005, "material.finite_volume.kes.2HB_warp": 0.1,
+                            "material.finite_volume.kes.2HB_weft": 0.1})
+    timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt) as interrupt:
+            drape.solve(scene)
+    finally:
+        timer.cancel()
+    result = interrupt.value.result
+    assert result.interrupted and not result.converged
+    assert result.positions.shape == (2821, 3) and np.isfinite(result.positions).all()
