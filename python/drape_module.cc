@@ -1,13 +1,16 @@
 // drape's Python module, _drape (the package python/drape wraps it): the scene loader, the model
-// builder and SolveAndReport that `drape solve` runs, with NumPy arrays for the results. The
+// builder and SolveAndReport that `drape solve` runs, with NumPy arrays for the results, and the
+// fit and the sweep that `drape fit` and `drape sweep` run, writing their files. The
 // package's __init__.py turns `set=` dicts into --set overrides, raises KeyboardInterrupt after an
 // interrupted solve and gives the classes their Python face; this file holds only what needs C++.
 #include <Python.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <signal.h>
 
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +18,11 @@
 
 #include "src/analysis/mesh_rule.h"
 #include "src/analysis/solve_report.h"
+#include "src/fit/fit_file.h"
+#include "src/fit/fit_methods.h"
+#include "src/fit/fit_problem.h"
+#include "src/fit/fit_solver.h"
+#include "src/fit/fit_writer.h"
 #include "src/model/model.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
@@ -23,6 +31,8 @@
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solver.h"
 #include "src/solvers/state_text.h"
+#include "src/sweep/sweep.h"
+#include "src/sweep/sweep_file.h"
 
 namespace py = pybind11;
 
@@ -164,6 +174,87 @@ void Write(const PySolved& solved, const std::string& directory) {
   WriteOutputs(solved.scene, solved.model, solved.report, directory, solved.provenance);
 }
 
+// While alive, SIGINT and SIGTERM stop drape's loops (RequestInterrupt: a fit at its next
+// evaluation, a sweep at its next task) instead of running Python's handlers, which are put back
+// at the end. For the fit and the sweep, whose loops have no per-iteration hook into Python.
+class InterruptScope {
+ public:
+  InterruptScope() {
+    sigaction(SIGINT, nullptr, &interrupt_);
+    sigaction(SIGTERM, nullptr, &terminate_);
+    ClearInterrupt();
+    InstallInterruptHandler();
+  }
+  ~InterruptScope() {
+    sigaction(SIGINT, &interrupt_, nullptr);
+    sigaction(SIGTERM, &terminate_, nullptr);
+    ClearInterrupt();
+  }
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+
+ private:
+  struct sigaction interrupt_ {};
+  struct sigaction terminate_ {};
+};
+
+// `drape fit` without its command line: the fit file (with --set overrides and --method) solved,
+// its files written into `directory`. Returns whether it converged and whether it was interrupted.
+py::dict Fit(const std::string& path, const std::vector<std::string>& overrides,
+             const std::optional<std::string>& method, const std::string& directory, int threads) {
+  FitSpec spec = LoadFitFile(path, overrides);
+  if (method) {
+    if (!FindFitMethod(*method)) {
+      throw InputError("method: unknown fit method '" + *method + "' (known: " + FitMethodList() +
+                       ")");
+    }
+    spec.method = *method;
+  }
+  spec.output_directory = directory;
+  FitProblem problem(spec, threads);
+  FitResult result;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    const InterruptScope scope;
+    result = RunFit(problem);
+    interrupted = InterruptRequested();
+  }
+  if (result.parameters.empty()) throw std::runtime_error("drape fit: " + result.termination);
+  CheckOutputWritable(directory);
+  WriteFitOutputs(problem, result, directory);
+  py::dict outcome;
+  outcome["converged"] = result.converged;
+  outcome["interrupted"] = interrupted;
+  return outcome;
+}
+
+// `drape sweep` without its command line: the sweep file's tasks solved into `out` (empty: the
+// sweep file's own output folder). Returns the sweep's counts and folder.
+py::dict Sweep(const std::string& path, const std::string& out, int threads, bool plots) {
+  const SweepSpec spec = LoadSweepFile(path);
+  SweepOptions options;
+  options.out = out;
+  options.threads = threads;
+  options.plots = plots;
+  options.command_line = "python: drape.sweep";
+  SweepSummary summary;
+  {
+    py::gil_scoped_release release;
+    const InterruptScope scope;
+    summary = RunSweep(spec, options, std::cerr);
+  }
+  py::dict outcome;
+  outcome["directory"] = summary.directory;
+  outcome["tasks"] = summary.tasks;
+  outcome["solved"] = summary.solved;
+  outcome["skipped"] = summary.skipped;
+  outcome["rows"] = summary.rows;
+  outcome["converged"] = summary.converged;
+  outcome["interrupted"] = summary.interrupted;
+  return outcome;
+}
+
 // drape's InputError as the package's drape.InputError(message, file, line, column, key).
 void TranslateInputError(std::exception_ptr pointer) {
   try {
@@ -208,5 +299,9 @@ PYBIND11_MODULE(_drape, module) {
       },
       py::arg("text"), py::arg("label"), py::arg("directory"), py::arg("overrides"));
   module.def("solve", &Solve, py::arg("scene"), py::arg("solver"), py::arg("start"));
+  module.def("fit", &Fit, py::arg("path"), py::arg("overrides"), py::arg("method"),
+             py::arg("directory"), py::arg("threads"));
+  module.def("sweep", &Sweep, py::arg("path"), py::arg("out"), py::arg("threads"),
+             py::arg("plots"));
   module.def("version", &DrapeVersion);
 }

@@ -12,12 +12,16 @@ releases the GIL; Ctrl-C stops it and raises KeyboardInterrupt whose `result` is
 docs/python.md walks through it.
 """
 
+import csv
 import json
 import os
+import shutil
+import tempfile
 
 from . import _drape
 
-__all__ = ["InputError", "Scene", "Result", "load", "loads", "from_dict", "solve", "__version__"]
+__all__ = ["InputError", "Scene", "Result", "FitResult", "load", "loads", "from_dict", "solve",
+           "fit", "sweep", "__version__"]
 
 __version__ = _drape.version()
 
@@ -145,3 +149,76 @@ def solve(scene, solver=None, set=None, start=None):
         interrupt.result = result
         raise interrupt
     return result
+
+
+def _number(text):
+    try:
+        return int(text)
+    except ValueError:
+        try:
+            return float(text)
+        except ValueError:
+            return text
+
+
+def _table(path):
+    """A CSV file of drape's as a pandas DataFrame where pandas is installed, else a list of dicts
+    (numbers as int or float)."""
+    try:
+        import pandas
+        return pandas.read_csv(path)
+    except ImportError:
+        with open(path, newline="") as file:
+            return [{key: _number(value) for key, value in row.items()}
+                    for row in csv.DictReader(file)]
+
+
+class FitResult:
+    """What `drape fit` writes, as data: `table` is fit.json's dict, `history` history.csv's rows."""
+
+    def __init__(self, directory, converged):
+        with open(os.path.join(directory, "fit.json")) as file:
+            self.table = json.load(file)
+        self.history = _table(os.path.join(directory, "history.csv"))
+        self.converged = converged
+        self.parameters = self.table["parameters"]
+        self.standard_errors = self.table["standard_errors"]
+        self.identifiability = self.table["identifiability"]
+        self.measurements = self.table["measurements"]
+        self.termination = self.table["termination"]
+
+    def __repr__(self):
+        return f"drape.FitResult(converged={self.converged}, parameters={self.parameters})"
+
+
+def fit(fit_file, set=None, method=None, directory=None, threads=1):
+    """Runs `drape fit` on a fit file; returns a FitResult.
+
+    set: overrides of every specimen's scene; method: a fit method (`bobyqa`, `implicit-lm`, ...);
+    directory: where its files go (kept), else a temporary folder, removed after reading.
+    """
+    folder = os.fspath(directory) if directory is not None else tempfile.mkdtemp(prefix="drape_fit_")
+    try:
+        outcome = _drape.fit(os.fspath(fit_file), _overrides(set), method, folder, threads)
+        result = FitResult(folder, outcome["converged"])
+    finally:
+        if directory is None:
+            shutil.rmtree(folder, ignore_errors=True)
+    if outcome["interrupted"]:
+        interrupt = KeyboardInterrupt("drape.fit interrupted; the best point is the exception's `result`")
+        interrupt.result = result
+        raise interrupt
+    return result
+
+
+def sweep(sweep_file, directory=None, threads=0, plots=False):
+    """Runs `drape sweep` on a sweep file into `directory` (else the file's own output folder, as
+    the command line; a rerun skips the finished tasks); returns sweep.csv's table."""
+    outcome = _drape.sweep(os.fspath(sweep_file), "" if directory is None else os.fspath(directory),
+                           threads, plots)
+    table = _table(os.path.join(outcome["directory"], "sweep.csv"))
+    if outcome["interrupted"]:
+        interrupt = KeyboardInterrupt("drape.sweep interrupted; the finished rows are `result`")
+        interrupt.result = table
+        raise interrupt
+    return table

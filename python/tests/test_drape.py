@@ -132,3 +132,25 @@ def test_ctrl_c_stops_a_solve_at_its_last_iterate():
     result = interrupt.value.result
     assert result.interrupted and not result.converged
     assert result.positions.shape == (2821, 3) and np.isfinite(result.positions).all()
+
+
+def test_a_fit_gives_its_tables(tmp_path):
+    fitted = drape.fit(config("fit/fit_drape_coefficient.yaml"))
+    assert fitted.converged
+    d_warp = fitted.parameters["material.finite_volume.D_warp"]
+    assert d_warp == pytest.approx(1e-4, rel=1e-4)  # the value the example's DC was made with
+    assert fitted.standard_errors["material.finite_volume.D_warp"] > 0
+    assert len(fitted.history) == fitted.table["evaluations"]
+    # The files drape fit writes, where asked, and drape's nodes.csv as measured positions.
+    folder = tmp_path / "fit"
+    drape.fit(config("fit/fit_drape_coefficient.yaml"), directory=folder)
+    assert (folder / "fit.json").is_file() and (folder / "history.csv").is_file()
+    with pytest.raises(drape.InputError, match="unknown fit method"):
+        drape.fit(config("fit/fit_drape_coefficient.yaml"), method="bobyqaa")
+
+
+def test_a_sweep_gives_its_table(tmp_path):
+    table = drape.sweep(config("sweep/sweep_small.yaml"), directory=tmp_path / "sweep", threads=1)
+    rows = table.to_dict("records") if hasattr(table, "to_dict") else table
+    assert len(rows) == 4 and all(row["converged"] in (1, True, "yes") for row in rows)
+    assert (tmp_path / "sweep" / "sweep.csv").is_file()
