@@ -256,7 +256,9 @@ py::dict Sweep(const std::string& path, const std::string& out, int threads, boo
 }
 
 // drape's InputError as the package's drape.InputError(message, file, line, column, key).
-void TranslateInputError(std::exception_ptr pointer) {
+// By value: pybind11's ExceptionTranslator type.
+void TranslateInputError(
+    std::exception_ptr pointer) {  // NOLINT(performance-unnecessary-value-param)
   try {
     if (pointer) std::rethrow_exception(pointer);
   } catch (const InputError& error) {
