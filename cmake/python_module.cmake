@@ -3,6 +3,12 @@
 # build/python/drape (PYTHONPATH=build/python), installed where Debian's Python looks for that
 # prefix, and tested by pytest (python/tests) as the CTest test PythonModule.
 #   Debian: pybind11-dev python3-dev (build), python3-numpy (use), python3-pytest (tests).
+# Debian's Python, the one README's test command installs NumPy, pytest, matplotlib and SciPy
+# for, unless a Python is chosen (-DPython3_EXECUTABLE=): a python3 found earlier in PATH (pyenv's,
+# a virtual environment's) has none of them.
+if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+  set(Python3_EXECUTABLE /usr/bin/python3)
+endif()
 find_package(Python3 COMPONENTS Interpreter Development.Module)
 find_package(pybind11 CONFIG QUIET)
 if(NOT Python3_FOUND OR NOT pybind11_FOUND)
@@ -13,7 +19,9 @@ endif()
 set(DRAPE_PYTHON_FOUND ON)
 set_target_properties(drape_core PROPERTIES POSITION_INDEPENDENT_CODE ON)
 set(DRAPE_PYTHON_PACKAGE ${PROJECT_BINARY_DIR}/python/drape)
-pybind11_add_module(_drape MODULE ${PROJECT_SOURCE_DIR}/python/drape_module.cc)
+# NO_EXTRAS: no link-time optimisation (a serial LTO link of the module over drape_core costs CI
+# time and gains nothing measurable: the solver runs in drape_core, compiled without LTO).
+pybind11_add_module(_drape MODULE NO_EXTRAS ${PROJECT_SOURCE_DIR}/python/drape_module.cc)
 target_link_libraries(_drape PRIVATE drape_core)
 set_target_properties(_drape PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${DRAPE_PYTHON_PACKAGE})
 add_custom_command(TARGET _drape POST_BUILD

@@ -191,19 +191,65 @@ class FitResult:
         return f"drape.FitResult(converged={self.converged}, parameters={self.parameters})"
 
 
-def fit(fit_file, set=None, method=None, directory=None, threads=1):
-    """Runs `drape fit` on a fit file; returns a FitResult.
+def _absolute(path, base):
+    return path if os.path.isabs(path) else os.path.normpath(os.path.join(base, path))
+
+
+def _absolute_fit_paths(spec, base):
+    """A fit dict with its file paths (the scene, the measurement files, other specimens' scenes)
+    made absolute against `base`: a fit file's are relative to its folder."""
+    if isinstance(spec.get("scene"), str):
+        spec["scene"] = _absolute(spec["scene"], base)
+    for item in spec.get("measurements") or []:
+        if not isinstance(item, dict):
+            continue
+        for kind, body in item.items():
+            if kind == "scene" and isinstance(body, str):
+                item[kind] = _absolute(body, base)
+            elif isinstance(body, dict) and isinstance(body.get("file"), str):
+                body["file"] = _absolute(body["file"], base)
+            if isinstance(body, dict) and body.get("measurements"):
+                _absolute_fit_paths({"measurements": body["measurements"]}, base)
+        if item.get("measurements"):
+            _absolute_fit_paths({"measurements": item["measurements"]}, base)
+    return spec
+
+
+def _run_fit(path, set, method, folder, threads, label=None):
+    try:
+        return _drape.fit(path, _overrides(set), method, folder, threads)
+    except InputError as error:
+        if label is None or error.file != path:
+            raise
+        raise InputError(str(error).replace(path, label, 1), label, error.line, error.column,
+                         error.key, error.problem) from None
+
+
+def fit(fit_file, set=None, method=None, directory=None, threads=1, base="."):
+    """Runs `drape fit` on a fit file, or a dict with its structure; returns a FitResult.
 
     set: overrides of every specimen's scene; method: a fit method (`bobyqa`, `implicit-lm`, ...);
-    directory: where its files go (kept), else a temporary folder, removed after reading.
+    directory: where its files go (kept), else a temporary folder, removed after reading; base:
+    the folder a dict's relative paths are taken from (a file's are taken from its own folder).
     """
     folder = os.fspath(directory) if directory is not None else tempfile.mkdtemp(prefix="drape_fit_")
+    scratch = None
     try:
-        outcome = _drape.fit(os.fspath(fit_file), _overrides(set), method, folder, threads)
+        if isinstance(fit_file, dict):
+            scratch = tempfile.mkdtemp(prefix="drape_fit_dict_")
+            path = os.path.join(scratch, "fit.yaml")
+            spec = _absolute_fit_paths(json.loads(json.dumps(fit_file)), os.fspath(base))
+            with open(path, "w") as file:
+                json.dump(spec, file, indent=1)
+            outcome = _run_fit(path, set, method, folder, threads, label="<dict>")
+        else:
+            outcome = _run_fit(os.fspath(fit_file), set, method, folder, threads)
         result = FitResult(folder, outcome["converged"])
     finally:
         if directory is None:
             shutil.rmtree(folder, ignore_errors=True)
+        if scratch is not None:
+            shutil.rmtree(scratch, ignore_errors=True)
     if outcome["interrupted"]:
         interrupt = KeyboardInterrupt("drape.fit interrupted; the best point is the exception's `result`")
         interrupt.result = result

@@ -154,3 +154,20 @@ def test_a_sweep_gives_its_table(tmp_path):
     rows = table.to_dict("records") if hasattr(table, "to_dict") else table
     assert len(rows) == 4 and all(row["converged"] in (1, True, "yes") for row in rows)
     assert (tmp_path / "sweep" / "sweep.csv").is_file()
+
+
+def test_a_fit_from_a_dict_is_the_files():
+    spec = {  # configs/fit/fit_drape_coefficient.yaml as a dict, its paths from configs/fit
+        "scene": "drape_fv.yaml",
+        "parameters": [{"key": "material.finite_volume.D_warp", "initial": 6.0e-5,
+                        "bounds": [1.0e-6, 1.0e-3], "log": True}],
+        "measurements": [{"drape_coefficient": {"value": 0.503192972, "disc_radius": 0.06,
+                                                "sigma": 0.005}}],
+    }
+    from_dict = drape.fit(spec, base=config("fit"))
+    from_file = drape.fit(config("fit/fit_drape_coefficient.yaml"))
+    assert from_dict.parameters == from_file.parameters
+    spec["parameters"][0]["bounds"] = [1.0, 0.5]
+    with pytest.raises(drape.InputError) as error:
+        drape.fit(spec, base=config("fit"))
+    assert error.value.file == "<dict>" and error.value.key == "parameters[0].bounds"

@@ -1,5 +1,7 @@
 #include "src/solvers/load_steps.h"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "src/solvers/run.h"
@@ -43,6 +45,7 @@ LoadPathSummary RunLoadPath(const Scene& scene, Model& model, const std::string&
                             const std::function<bool(const IterationRecord&)>& on_iteration) {
   LoadPathSummary path;
   const int steps = FrictionLoadSteps(scene);
+  path.total = steps;
   if (steps == 0) return path;
   std::vector<double> positions = model.initial;
   const std::vector<double>* reference = nullptr;  // the first step's kinks: the flat state
@@ -56,8 +59,12 @@ LoadPathSummary RunLoadPath(const Scene& scene, Model& model, const std::string&
     path.iterations += summary.iterations;
     path.wall_time_s += summary.wall_time_s;
     if (!summary.converged && path.unconverged_step == 0) path.unconverged_step = k;
+    const bool finite = std::all_of(step_model.positions.begin(), step_model.positions.end(),
+                                    [](double x) { return std::isfinite(x); });
+    if (!finite) break;  // the last step starts from the last finite state
     positions = step_model.positions;
     reference = &positions;
+    if (InterruptRequested() || summary.termination == kStoppedByCaller) break;
   }
   Model last = BuildModel(scene, reference);
   last.positions = positions;

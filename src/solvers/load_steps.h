@@ -22,7 +22,9 @@ int FrictionLoadSteps(const Scene& scene);
 LoadsSpec ScaledLoads(const LoadsSpec& loads, double fraction);
 
 struct LoadPathSummary {
-  int steps = 0;                  // the steps solved here (N − 1; the last is the caller's)
+  int total = 0;                  // N, the scene's steps
+  int steps = 0;                  // the steps solved here: N − 1 (the last is the caller's), or
+                                  // fewer where one was interrupted or stopped being finite
   int iterations = 0;             // theirs together, the frictions' continuation included
   double wall_time_s = 0.0;       // theirs together
   int unconverged_step = 0;       // the first step (1-based) that did not converge; 0: none
@@ -33,8 +35,11 @@ struct LoadPathSummary {
 // path must start where the frictions' kinks do), the scene at k/N of its loads for k = 1 … N − 1,
 // each solved with `method` after the frictions' continuation, its kinks at the previous step's
 // state. Then `model` becomes the last step's model, at the full loads with its kinks at step
-// N − 1's state, positioned there: what RunSolve solves next. Nothing is done without load steps
-// (FrictionLoadSteps(scene) == 0) and `model` is left as it is.
+// N − 1's state, positioned there: what RunSolve solves next. An interrupt (Ctrl-C, or
+// `on_iteration` returning false) or a step whose state stops being finite ends the path there:
+// the last step then starts from the last finite state, and unconverged_step says which step
+// failed. Nothing is done without load steps (FrictionLoadSteps(scene) == 0) and `model` is left
+// as it is.
 LoadPathSummary RunLoadPath(const Scene& scene, Model& model, const std::string& method,
                             const std::function<bool(const IterationRecord&)>& on_iteration = {});
 

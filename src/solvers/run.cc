@@ -249,9 +249,10 @@ RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
 void NoteLoadPath(const LoadPathSummary& path, RunResult* result) {
   result->summary.iterations += path.iterations;
   result->summary.wall_time_s += path.wall_time_s;
-  result->summary.termination += "; the last of " + std::to_string(path.steps + 1) +
+  result->summary.termination += "; the last of " + std::to_string(path.total) +
                                  " load steps of the incremental friction, after " +
-                                 std::to_string(path.iterations) + " iterations in the others";
+                                 std::to_string(path.iterations) + " iterations in " +
+                                 std::to_string(path.steps) + " before it";
   if (path.unconverged_step > 0 && result->converged) {
     result->converged = false;
     result->summary.termination +=

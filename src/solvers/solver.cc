@@ -108,7 +108,7 @@ bool IterationMonitor::Record(int iteration, double energy, double relative_resi
     return true;
   }
   if (!caller_continues) {
-    summary_->termination = "stopped by caller";
+    summary_->termination = kStoppedByCaller;
     return true;
   }
   if (InterruptRequested()) {

@@ -26,6 +26,9 @@ struct IterationRecord {
   double relative_residual = 0.0;  // ‖free residual forces‖ / reference force
 };
 
+// The termination of a solve that SolverOptions::on_iteration stopped.
+inline constexpr char kStoppedByCaller[] = "stopped by caller";
+
 struct SolverOptions {
   double tolerance = 1e-8;  // relative residual to reach
   int max_iterations = 1000;
@@ -34,7 +37,7 @@ struct SolverOptions {
   // (src/scene/solver_methods.h), which supplies the registered default.
   std::map<std::string, double> method_options;
   // Called after every iteration, with model.positions at the current iterate. Returning false
-  // stops the solve (termination "stopped by caller").
+  // stops the solve (termination kStoppedByCaller).
   std::function<bool(const IterationRecord&)> on_iteration;
   // The model's free Hessian and its CHOLMOD analysis, when the caller has built them (RunSolve,
   // which certifies the answer in them afterwards): a solver that assembles or factorises the
