@@ -109,7 +109,8 @@ TEST(LoadSteps, OneStepIsTheMonotoneForm) {
 // Under its growing weight every curvature of the cantilever grows, so the steps' equilibrium is
 // the monotone form's, up to the smoothing: each step's kink is smoothed over δ about a curvature
 // change of κ/N, which weakens the friction where κ/N is not ≫ δ. The difference falls with δ
-// (on the development machine, 4 steps: 6e-5 m at δ = 0.1 1/m, 6e-6 at 0.01 and 5e-7 at 0.001).
+// (on the development machine, 4 steps: 4.2e-5 m at δ = 0.1 1/m, 3.8e-6 at 0.01 and 3.8e-7 at
+// 0.001).
 TEST(LoadSteps, UnderMonotoneLoadingTheyReachTheMonotoneForm) {
   double previous = INFINITY;
   for (const char* smoothing : {"0.1", "0.01", "0.001"}) {
