@@ -45,25 +45,28 @@ struct FvBendingFrictionStep {
     assert(across_sign == 1.0 || across_sign == -1.0);
   }
 
-  // κ (1/m), the curvature along a → P → b signed by t = σ (d − P); 0 where d is on P.
+  // κ (1/m), the curvature along a → P → b signed by t = σ (d − P); false where d is on P (no
+  // direction across).
   template <typename T>
-  static T SignedCurvature(const T* a, const T* p, const T* b, const T* d, double size,
-                           double sign) {
+  static bool SignedCurvature(const T* a, const T* p, const T* b, const T* d, double size,
+                              double sign, T* curvature) {
+    const T length = SafeDistance(p, d);
+    if (!(length > 0.0)) return false;
     T binormal[3];
     CurvatureBinormal(a, p, b, binormal);
     const T across[3] = {d[0] - p[0], d[1] - p[1], d[2] - p[2]};
     const T along = binormal[0] * across[0] + binormal[1] * across[1] + binormal[2] * across[2];
-    const T length = SafeDistance(p, d);
-    if (!(length > 0.0)) return T();
-    return sign * along / (length * size);
+    *curvature = sign * along / (length * size);
+    return true;
   }
 
   template <typename T>
   bool operator()(const T* const a, const T* const p, const T* const b, const T* const d,
                   T* energy) const {
     using std::sqrt;
-    if (!(SafeDistance(p, d) > 0.0)) return false;  // no direction across
-    const T slip = SignedCurvature(a, p, b, d, size, sign) - previous;
+    T curvature;
+    if (!SignedCurvature(a, p, b, d, size, sign, &curvature)) return false;
+    const T slip = curvature - previous;
     energy[0] = weight * (sqrt(slip * slip + smoothing * smoothing) - smoothing);
     return true;
   }

@@ -38,15 +38,23 @@ struct FvShearFriction {
     assert(friction >= 0.0 && rest_a > 0.0 && rest_b > 0.0 && smoothing_in > 0.0);
   }
 
-  // Nodes P, A (warp neighbour), B (weft neighbour), as FvMembrane.
+  // γ (rad), FvMembrane's shear angle of quarter P, A, B; false where an arm has no length or the
+  // angle is not defined.
   template <typename T>
-  bool operator()(const T* const p, const T* const a, const T* const b, T* energy) const {
+  static bool ShearAngleOf(const T* p, const T* a, const T* b, T* shear) {
     using std::sqrt;
     T gram[3];
     FvMembrane::ArmGram(p, a, b, gram);
     if (!(gram[0] > 0.0) || !(gram[1] > 0.0)) return false;  // an arm of zero length
+    return FvMembrane::ShearAngle(gram, sqrt(gram[0]), sqrt(gram[1]), shear);
+  }
+
+  // Nodes P, A (warp neighbour), B (weft neighbour), as FvMembrane.
+  template <typename T>
+  bool operator()(const T* const p, const T* const a, const T* const b, T* energy) const {
+    using std::sqrt;
     T shear;
-    if (!FvMembrane::ShearAngle(gram, sqrt(gram[0]), sqrt(gram[1]), &shear)) return false;
+    if (!ShearAngleOf(p, a, b, &shear)) return false;
     const T slip = shear - previous;
     energy[0] = weight * (sqrt(slip * slip + smoothing * smoothing) - smoothing);
     return true;

@@ -18,6 +18,7 @@
 
 #include "src/analysis/mesh_rule.h"
 #include "src/analysis/solve_report.h"
+#include "src/cli/cli.h"
 #include "src/fit/fit_file.h"
 #include "src/fit/fit_methods.h"
 #include "src/fit/fit_problem.h"
@@ -104,10 +105,7 @@ std::shared_ptr<PySolved> Solve(const PyScene& loaded, const std::optional<std::
   auto solved = std::make_shared<PySolved>();
   solved->scene = loaded.scene;
   if (solver) solved->scene.solver.method = *solver;
-  if (!FindSolver(solved->scene.solver.method)) {
-    throw InputError(solved->scene.solver.where,
-                     "unknown solver '" + solved->scene.solver.method + "'");
-  }
+  RequireKnownSolver(solved->scene);  // as drape solve: before the model is built
   solved->model = BuildModel(solved->scene);
   if (start) WarmStart(*start, &solved->model);
   solved->provenance = Provenance{"python: drape.solve", loaded.overrides};

@@ -30,8 +30,10 @@ std::vector<double> StepArc(double radius, bool down) {
 }
 
 double SignedAt(const std::vector<double>& x, double sign) {
-  return FvBendingFrictionStep::SignedCurvature(x.data(), x.data() + 3, x.data() + 6, x.data() + 9,
-                                                kSize, sign);
+  double curvature = NAN;
+  EXPECT_TRUE(FvBendingFrictionStep::SignedCurvature(x.data(), x.data() + 3, x.data() + 6,
+                                                     x.data() + 9, kSize, sign, &curvature));
+  return curvature;
 }
 
 double StepEnergy(const FvBendingFrictionStep& step, const std::vector<double>& x) {

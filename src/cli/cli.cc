@@ -94,13 +94,6 @@ std::string UnknownSolverText(const std::string& name) {
   return "unknown solver '" + name + "' (known: " + list + ")" + SuggestionText(name, names);
 }
 
-// The scene's method must exist before anything is built (a typo should not cost a model build).
-void RequireKnownSolver(const Scene& scene) {
-  if (!FindSolver(scene.solver.method)) {
-    throw InputError(scene.solver.where, UnknownSolverText(scene.solver.method));
-  }
-}
-
 std::string TermSummary(const Model& model) {
   std::string text;
   int total = 0;
@@ -740,6 +733,12 @@ int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   err << std::flush;
   AbortJobAfterError(kExitBadInput);  // under MPI: the other ranks may wait for this one
   return kExitBadInput;
+}
+
+void RequireKnownSolver(const Scene& scene) {
+  if (!FindSolver(scene.solver.method)) {
+    throw InputError(scene.solver.where, UnknownSolverText(scene.solver.method));
+  }
 }
 
 }  // namespace drape

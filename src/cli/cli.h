@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "src/scene/scene.h"
+
 namespace drape {
 
 // Exit status of the command.
@@ -24,6 +26,10 @@ struct CommandOptions {
   // Without a terminal: print a plain progress line on `err` every this many seconds (0: never).
   double plain_progress_interval_s = 0.0;
 };
+
+// The scene's method must exist before anything is built (a typo should not cost a model build):
+// InputError at solver.method, "unknown solver 'newtn' (known: …); did you mean 'newton'?".
+void RequireKnownSolver(const Scene& scene);
 
 // Runs `drape args...` (args without the program name): prints results on `out`, errors, usage
 // and progress on `err`, and returns the exit status. Input errors are caught here and printed as

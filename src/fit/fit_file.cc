@@ -31,7 +31,6 @@ namespace fs = std::filesystem;
 
 // ------------------------------------------------------------------------------- data files
 
-// The numbers of one comma- or blank-separated row; the column of each field for messages.
 // A data file's number: a scene's (yaml_reader.h), or a finite one below the scene's smallest
 // magnitude, which a measurement may well be (drape's own nodes.csv holds residual forces of
 // 1e-37 N): as a scene's number it is refused, so that products stay finite; as data, it is a
@@ -47,6 +46,7 @@ std::optional<double> ParseDataNumber(const std::string& text, std::string* erro
   return number;
 }
 
+// The numbers of one comma- or blank-separated row; the column of each field for messages.
 bool SplitNumbers(const std::string& line, std::vector<double>* numbers, std::vector<int>* columns,
                   int* bad_column) {
   numbers->clear();

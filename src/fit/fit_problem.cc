@@ -242,11 +242,13 @@ bool FitProblem::SolveEquilibrium(FitEquilibrium* equilibrium, const std::vector
                     time_limit);
   }
   int iterations = run.iterations;
-  if (!Accepted(*model, run)) {  // from the flat state, through a friction's kink
+  bool accepted = Accepted(*model, run);
+  if (!accepted) {  // from the flat state, through a friction's kink
     model->positions = model->initial;
     iterations += RunFrictionContinuation(equilibrium->scene, *model, "newton").iterations;
     run = RunNewton(*model, equilibrium->tolerance, max_iterations, time_limit);
     iterations += run.iterations;
+    accepted = Accepted(*model, run);
   }
   // A floor above the tolerance: later solves of this equilibrium stop as soon as they reach it.
   if (run.stagnated) {
@@ -254,7 +256,7 @@ bool FitProblem::SolveEquilibrium(FitEquilibrium* equilibrium, const std::vector
         std::min(kAcceptedResidual, std::max(equilibrium->tolerance, 2 * run.best));
   }
   equilibrium->relative_residual = run.residual;
-  equilibrium->converged = Accepted(*model, run);
+  equilibrium->converged = accepted;
   equilibrium->inner_iterations = iterations;
   equilibrium->positions = model->positions;
   equilibrium->model = std::move(model);

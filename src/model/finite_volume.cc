@@ -119,11 +119,11 @@ void AddBendingFriction(double friction, const FiniteVolumeSpec& spec,
                      "curvature by the direction across the fabric, which a strip (a single row "
                      "or column of nodes) has not; use a grid with at least two rows");
   }
-  double previous = 0.0;
+  double previous = 0.0;  // the flat state's, or the reference's (0 where d sits on P there)
   if (reference) {
-    previous = FvBendingFrictionStep::SignedCurvature(
-        At(reference, along[0]), At(reference, along[1]), At(reference, along[2]),
-        At(reference, across.node), size, across.sign);
+    FvBendingFrictionStep::SignedCurvature(At(reference, along[0]), At(reference, along[1]),
+                                           At(reference, along[2]), At(reference, across.node),
+                                           size, across.sign, &previous);
   }
   model->terms.push_back(
       MakeTerm("fv_bending_friction_step", {along[0], along[1], along[2], across.node},
@@ -221,18 +221,6 @@ void AddBending(const FiniteVolumeSpec& spec, const Mesh& mesh, int p, const Nei
   }
 }
 
-// The shear angle γ (rad) of quarter P, A, B (FvMembrane's), 0 where an arm has no length.
-double ShearAngleAt(const double* p, const double* a, const double* b) {
-  double gram[3];
-  FvMembrane::ArmGram(p, a, b, gram);
-  double shear = 0.0;
-  if (!(gram[0] > 0.0) || !(gram[1] > 0.0) ||
-      !FvMembrane::ShearAngle(gram, std::sqrt(gram[0]), std::sqrt(gram[1]), &shear)) {
-    return 0.0;
-  }
-  return shear;
-}
-
 // The four quarters of control volume p: membrane, and the shear friction where the fabric has it.
 // The friction's least-squares shift, HG A_q, its energy at a shear angle of 1 rad, keeps the
 // ceres-* residual √(2 (E + shift)) smooth at rest, where E = 0 (as AddBendingFriction's).
@@ -245,10 +233,11 @@ void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, cons
       model->terms.push_back(MakeTerm("fv_membrane", {p, a, b},
                                       FvMembrane::Create(e.e1, e.e2, e.e12, e.g, rest_a, rest_b)));
       if (!(spec.shear_friction > 0.0)) continue;
-      const double previous =
-          reference && spec.friction_load_steps > 0
-              ? ShearAngleAt(At(reference, p), At(reference, a), At(reference, b))
-              : 0.0;
+      double previous = 0.0;  // the rest state's, or the reference's (0 where it has none)
+      if (reference && spec.friction_load_steps > 0) {
+        FvShearFriction::ShearAngleOf(At(reference, p), At(reference, a), At(reference, b),
+                                      &previous);
+      }
       model->terms.push_back(
           MakeTerm("fv_shear_friction", {p, a, b},
                    FvShearFriction::Create(spec.shear_friction, rest_a, rest_b,

@@ -712,10 +712,9 @@ void WriteOutputs(const Scene& scene, const Model& model, const SolveReport& rep
   const fs::path& folder = result_folder.staging();
   const RunResult& result = report.result;
   const std::optional<DrapeAnalysis>& drape = report.drape;
-  const LevelsReport* levels = report.levels ? &*report.levels : nullptr;
   if (Requested(scene, "summary")) {
     WriteAtomically(folder / "summary.json", [&](std::ostream& out) {
-      WriteSummary(scene, model, result, drape, levels, provenance, out);
+      out << SummaryJsonText(scene, model, report, provenance);
     });
   }
   WriteAtomically(folder / "scene.yaml", [&](std::ostream& out) { WriteSceneYaml(scene, out); });

@@ -24,8 +24,7 @@ SolverSummary SolveStep(const Scene& step, Model& model, const std::string& meth
 }  // namespace
 
 int FrictionLoadSteps(const Scene& scene) {
-  if (scene.material.model != "finite_volume" || !HasFriction(scene)) return 0;
-  return scene.material.finite_volume.friction_load_steps;
+  return HasFriction(scene) ? scene.material.finite_volume.friction_load_steps : 0;
 }
 
 LoadsSpec ScaledLoads(const LoadsSpec& loads, double fraction) {
