@@ -237,7 +237,7 @@ TEST(Contact, FiniteVolumeSheetDrapedOverSphereStaysOutsideTheClearance) {
   ExpectDrapeOverSphereRespectsClearance(std::move(model));
 }
 
-// The step limit (issue 14, item 2): a node may not jump over a pin, a thin disk or through a
+// The step limit: a node may not jump over a pin, a thin disk or through a
 // plane, but a move that stays clear is not limited.
 TEST(ObstacleStepLimit, StopsANodeBeforeItJumpsOverAPinOrThroughADiskOrAPlane) {
   Model model;

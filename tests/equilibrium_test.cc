@@ -88,7 +88,7 @@ TEST(Certificate, NotEvaluableWhereTheEnergyIsNot) {
   EXPECT_FALSE(certificate.relative_residual <= 1.0);
 }
 
-// Issue 14, item 2: a state that has run away, is not finite, or has a node inside an obstacle's
+// A state that has run away, is not finite, or has a node inside an obstacle's
 // body is not certified, whatever its residual.
 TEST(Certificate, RefusesAStateThatHasRunAway) {
   Model model = HangingMass(0.1);
@@ -117,7 +117,7 @@ TEST(Certificate, RefusesANodeInsideAnObstacle) {
       << certificate.unsound;
 }
 
-// Issue 14, item 4: reactions + contact (+ constraint) = −(weight + loads), checked.
+// Reactions + contact (+ constraint) = −(weight + loads), checked.
 TEST(Certificate, BalanceCountsReactionsAndTheGivenConstraintForces) {
   Model model = HangingMass(kRest + kMass * kGravity / kStiffness);
   Certificate certificate = ComputeCertificate(model, model.positions.data());

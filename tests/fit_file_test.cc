@@ -1,4 +1,5 @@
-// The fit file: every key of issue 8's format read, and bad input reported as file:line:column.
+// The fit file: every key of its format (docs/reference.md, "The fit file") read, and bad input
+// reported as file:line:column.
 #include "src/fit/fit_file.h"
 
 #include <gtest/gtest.h>

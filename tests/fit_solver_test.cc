@@ -1,4 +1,4 @@
-// Validation of `drape fit` (issue 8, item 4): synthetic measurements computed here from known
+// Validation of `drape fit`: synthetic measurements computed here from known
 // parameters, with and without noise, and the fitted parameters compared with the known ones.
 // Noise: independent Gaussian N(0, (0.5 mm)²) on every measured coordinate, std::mt19937 with the
 // seed given in each test. Tolerances: 1e-4 relative noise-free, 2% with noise.
@@ -65,7 +65,7 @@ TEST(FitSolverTest, RecoversSpringStiffnessFromNodePositions) {
 // Ctrl-C part way through a fit (here requested from the progress callback at the 6th
 // evaluation): the closing solve at the best point ran with the interrupt still set, stopped at
 // once far from it, and fit.json reported that state's objective with a false "several
-// equilibria" warning (issue 14, failure 7). The result is the best point's objective now.
+// equilibria" warning. The result is the best point's objective now.
 TEST(FitSolverTest, AnInterruptedFitReportsTheBestObjectiveFound) {
   const TrueSolve solved =
       SolveTruth("configs/fit/sheet_springs.yaml", {"material.springs.structural=35"});

@@ -60,7 +60,7 @@ TEST_P(NetlogoCoarse, ExplicitEulerAndNewtonAgree) {
   const double e1 = euler.result.certificate.energy, e2 = newton.result.certificate.energy;
   // From the symmetric flat start newton used to stop on a symmetric saddle (the coarse arc: an
   // umbrella held open by compressed rings); now it leaves it along the negative curvature and
-  // ends at a stable minimum (issue 14). The triangular and arc discs fold in more than one way,
+  // ends at a stable minimum. The triangular and arc discs fold in more than one way,
   // so the two methods may settle in different minima there.
   EXPECT_TRUE(newton.result.stability.stable) << newton.result.stability.min_eigenvalue;
   if (std::abs(e1 - e2) > 1e-4 * std::abs(e2)) {

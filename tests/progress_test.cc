@@ -47,7 +47,7 @@ TEST(ProgressLine, ClearErasesTheLineAndOnlyIfShown) {
   EXPECT_EQ(erased, "\r" + std::string(width, ' ') + "\r");
 }
 
-// Without a terminal (issue 14, item 6): a plain line of its own every interval of solving time,
+// Without a terminal: a plain line of its own every interval of solving time,
 // nothing before the first interval has passed, and nothing to erase.
 TEST(ProgressLine, PlainModePrintsALineEveryIntervalOfSolvingTime) {
   std::ostringstream out;

@@ -1,6 +1,6 @@
 // A result folder written as a whole (src/output/result_folder.h): files of an earlier run that
 // this one does not write are removed, leftovers of killed runs are cleaned, and a second run
-// into a folder another one holds is refused. Before (issue 14, failure 7), a killed or second run
+// into a folder another one holds is refused. Before, a killed or second run
 // left a folder mixing two runs' files, and hidden temporaries that no later run removed.
 #include "src/output/result_folder.h"
 

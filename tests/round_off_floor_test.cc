@@ -1,4 +1,4 @@
-// The round-off floor of the residual (issue 14, item 3): measured at the final state, reported,
+// The round-off floor of the residual: measured at the final state, reported,
 // and a solve whose residual reaches it above the tolerance stops there, converged, saying so.
 #include "src/numerics/round_off_floor.h"
 

@@ -99,7 +99,7 @@ TEST(ExplicitEuler, StopsWhenProvotHoldsTheTriangularDiscStillOutOfEquilibrium) 
   EXPECT_LE(MaxStretchRatio(model, model.positions.data()), 1.1 * (1.0 + 1e-12));
 }
 
-// Issue 14, item 5: with Provot's constraint the equilibrium is that of the constrained problem:
+// With Provot's constraint the equilibrium is that of the constrained problem:
 // the constraint's forces count in the residual and in the reactions, which then carry the whole
 // weight (before: converged no, 0.198 N of reactions for 0.4905 N of yarn).
 TEST(ExplicitEuler, ProvotLimitedYarnIsAConstrainedEquilibriumWithTheWholeWeightInTheReactions) {

@@ -109,7 +109,7 @@ TEST(Newton, AModelWithoutFreeCoordinatesIsEvaluatedNotSolved) {
   ASSERT_EQ(summary.history.size(), 1u);
 }
 
-// Issue 14, item 1: a saddle is not an answer. On Rusinko & Swan's arc disc on a pin newton used
+// A saddle is not an answer. On Rusinko & Swan's arc disc on a pin newton used
 // to stop after 10 iterations on the flat disc balanced on the pin (a saddle, most negative
 // eigenvalue −1.24 N/m, energy −0.00431 J, drape ratio 0.94) and exit 0; now it leaves it along
 // the negative curvature and finds the drape (−0.01387 J).

@@ -220,8 +220,8 @@ TEST(SparseCholesky, SolvesAPositiveDefiniteSystemAndRefusesAnIndefiniteOne) {
 }
 
 // CHOLMOD's allocations fail (SuiteSparse's allocator replaced by one that always fails): the
-// constructor used the NULL of cholmod_allocate_sparse unchecked and crashed (issue 14, failure
-// 7); now it reports std::bad_alloc, which the commands turn into "out of memory", exit 2.
+// constructor used the NULL of cholmod_allocate_sparse unchecked and crashed; now it reports
+// std::bad_alloc, which the commands turn into "out of memory", exit 2.
 void* NoMemory(size_t) { return nullptr; }
 
 TEST(SparseCholesky, ReportsOutOfMemoryInsteadOfUsingANullMatrix) {

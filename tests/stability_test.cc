@@ -68,7 +68,7 @@ TEST(Stability, AStraightChainCompressedBetweenItsSupportsIsASaddle) {
 }
 
 // A stiffness of 1e-320 (subnormal) made the shift τ underflow to 0, and the search for the most
-// negative eigenvalue multiplied 0 by 10 for ever (issue 14, failure 7). It ends now (in
+// negative eigenvalue multiplied 0 by 10 for ever. It ends now (in
 // milliseconds; a hang fails by the suite's timeout), with a number.
 TEST(Stability, TheEigenvalueSearchEndsForASubnormalStiffness) {
   ChainSpec spec = CompressedChain();

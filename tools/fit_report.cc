@@ -1,4 +1,4 @@
-// Regenerates docs/fitting.md: every fit method of `drape fit` on the validation cases of issue 8
+// Regenerates docs/fitting.md: every fit method of `drape fit` on its validation cases
 // (synthetic measurements from known parameters, with and without 0.5 mm Gaussian noise), with
 // evaluations, wall time and accuracy.
 //

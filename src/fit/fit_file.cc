@@ -1,4 +1,4 @@
-// The fit-file schema (issue 8; docs/reference.md, "Fitting"): keys, types, ranges and defaults,
+// The fit-file schema (docs/reference.md, "Fitting"): keys, types, ranges and defaults,
 // and the measurement data files. Every error is located in the file that holds it.
 #include "src/fit/fit_file.h"
 

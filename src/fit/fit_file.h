@@ -1,4 +1,4 @@
-// The fit file of `drape fit` (issue 8): which scene keys to fit, to which measurements, by which
+// The fit file of `drape fit`: which scene keys to fit, to which measurements, by which
 // method. Read with located errors ("file:line:column: key.path: what is wrong"); measurement
 // data files (csv, xyz, and ply/stl/obj through src/model/mesh_file.h) are read here too, so that
 // every bad input is reported before a single equilibrium is solved.
