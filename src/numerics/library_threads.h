@@ -15,8 +15,8 @@ struct LibraryThreads {
 // through OMP_MAX_ACTIVE_LEVELS, OMP_THREAD_LIMIT or OPENBLAS_NUM_THREADS. Debian's CHOLMOD
 // (SuiteSparse 5) opens OpenMP regions of a fixed 4 threads inside every large supernode,
 // ignoring OMP_NUM_THREADS, and OpenBLAS keeps its own spinning threads: on this project's 2-core
-// machine the threads wait on each other (38,000 context switches a second), and one factorisation
-// of the 50×50 sheet's Hessian takes 0.045 s with them against 0.022 s on one thread
+// machine the threads wait on each other (381,000 context switches in a 7.8 s run), and one
+// factorisation of the 50×50 sheet's Hessian takes 0.045 s with them against 0.022 s on one thread
 // (docs/benchmarks.md). Both libraries are looked up at run time (they are dependencies of CHOLMOD
 // and LAPACK, not of drape); a missing one is left alone. Idempotent; the first call does the work.
 LibraryThreads RunLibrariesOnOneThread();
