@@ -134,6 +134,18 @@ TEST(SceneSchema, FiniteVolumeRowsAreTheMaterialKeys) {
   }
 }
 
+TEST(SceneSchema, UnitsOfWrittenPathsAreTheirRowsOrTheirAncestors) {
+  EXPECT_EQ(SchemaUnit("solver.time_limit"), "s");
+  EXPECT_EQ(SchemaUnit("fixed[0].move"), "m");
+  EXPECT_EQ(SchemaUnit("obstacles[1].sphere.radius"), "m");
+  EXPECT_EQ(SchemaUnit("regions[0].nodes.within.radius"), "m");
+  EXPECT_EQ(SchemaUnit("regions[0].nodes.row"), "");
+  EXPECT_EQ(SchemaUnit("material.springs.shear.weft"), "N/m");
+  EXPECT_EQ(SchemaUnit("material.finite_volume.D_warp"), "N*m");
+  EXPECT_EQ(SchemaUnit("loads.forces[2].ramp.from"), "N");
+  EXPECT_EQ(SchemaUnit("solver.newton.max_line_search"), "");
+}
+
 // ------------------------------------------------------------------------- the round trip
 
 std::string BaseScene(SchemaRow::Base base) {

@@ -368,20 +368,20 @@ std::vector<SchemaRow> Lines() {
 
 std::vector<SchemaRow> Springs() {
   const std::string t = "material.springs";
-  const std::string family = "N/m > 0, or `{warp: N/m, weft: N/m}`";
+  const std::string family = "number or `{warp: …, weft: …}`";
   return {
       Row(t, "structural")
-          .Is(family)
+          .Is(family, "N/m", "> 0")
           .Default("not built")
           .Doc("springs between neighbours along u (warp) and v (weft)")
           .Example({"material.springs.structural={warp: 10, weft: 20}"}),
       Row(t, "shear")
-          .Is("as `structural`")
+          .Is(family, "N/m", "> 0")
           .Default("not built")
           .Doc("diagonal springs of each quad")
           .Example({"material.springs.shear={warp: 3, weft: 4}"}),
       Row(t, "flexion")
-          .Is("as `structural`")
+          .Is(family, "N/m", "> 0")
           .Default("not built")
           .Doc("skip-one springs (bending resistance)")
           .Example({"material.springs.flexion={warp: 1, weft: 2}"}),
@@ -644,20 +644,20 @@ std::vector<SchemaRow> Regions() {
           .Example(region("density: 0.4"), "regions[0].density", "0.4"),
       Row(t, "structural")
           .For({"`material.springs` is given"})
-          .Is("N/m, or `{warp, weft}`")
+          .Is("number or `{warp: …, weft: …}`", "N/m", "> 0")
           .Default("the material's")
           .Doc("that spring family")
           .Example(region("structural: {warp: 5, weft: 6}"), "regions[0].structural",
                    "{warp: 5, weft: 6}"),
       Row(t, "shear")
           .For({"`material.springs` is given"})
-          .Is("N/m, or `{warp, weft}`")
+          .Is("number or `{warp: …, weft: …}`", "N/m", "> 0")
           .Default("the material's")
           .Doc("that spring family")
           .Example(region("shear: {warp: 5, weft: 6}"), "regions[0].shear", "{warp: 5, weft: 6}"),
       Row(t, "flexion")
           .For({"`material.springs` is given"})
-          .Is("N/m, or `{warp, weft}`")
+          .Is("number or `{warp: …, weft: …}`", "N/m", "> 0")
           .Default("the material's")
           .Doc("that spring family")
           .Example(region("flexion: {warp: 5, weft: 6}"), "regions[0].flexion",
@@ -688,7 +688,12 @@ std::vector<SchemaRow> NodeSelections() {
   };
   auto row = [&](const char* key, const std::string& type, const std::string& doc,
                  const std::string& example) {
-    return Row(t, key).Is(type).Doc(doc).Example(fixed(example), "fixed[0].nodes", example);
+    const std::string name = key;
+    const bool lengths = name == "box" || name == "within" || name == "outside";  // in m
+    return Row(t, key)
+        .Is(type, lengths ? "m" : "")
+        .Doc(doc)
+        .Example(fixed(example), "fixed[0].nodes", example);
   };
   return {
       row("edge", "`top` \\| `bottom` \\| `left` \\| `right`", "a grid border: `{edge: top}`",
@@ -700,13 +705,13 @@ std::vector<SchemaRow> NodeSelections() {
           "{ij: [[0, 0], [1, 0]]}"),
       row("row", "integer ≥ 0", "the lattice row j (grid, chain, circle): `{row: 15}`", "{row: 1}"),
       row("column", "integer ≥ 0", "the lattice column i: `{column: 0}`", "{column: 2}"),
-      row("box", "`{min: [3] m, max: [3] m}`",
+      row("box", "`{min: [3], max: [3]}`",
           "nodes inside the box (max ≥ min): `{box: {min: [x, y, z], max: [x, y, z]}}`",
           "{box: {min: [0, 0, 0], max: [1, 1, 0]}}"),
-      row("within", "`{center: [3] m, radius: m > 0}`",
+      row("within", "`{center: [3], radius: > 0}`",
           "nodes within distance r: `{within: {center: [x, y, z], radius: r}}`",
           "{within: {center: [0, 0, 0], radius: 0.5}}"),
-      row("outside", "as `within`",
+      row("outside", "`{center: [3], radius: > 0}`",
           "nodes at distance r or more (a rim): `{outside: {center: [x, y, z], radius: r}}`",
           "{outside: {center: [0, 0, 0], radius: 0.5}}"),
       row("all", "`true`", "every node: `{all: true}`", "{all: true}"),
@@ -1007,6 +1012,30 @@ std::vector<const SchemaRow*> SchemaRows(const std::string& table) {
     if (row.table == table) rows.push_back(&row);
   }
   return rows;
+}
+
+std::string SchemaUnit(const std::string& path) {
+  std::vector<std::string> parts;  // without list indices
+  size_t start = 0;
+  while (start <= path.size()) {
+    const size_t dot = std::min(path.find('.', start), path.size());
+    const std::string part = path.substr(start, dot - start);
+    parts.push_back(part.substr(0, part.find('[')));
+    start = dot + 1;
+  }
+  if (parts.size() > 2 && parts[0] == "obstacles") parts.erase(parts.begin() + 1);  // the kind
+  const auto nodes = std::find(parts.begin() + 1, parts.end(), "nodes");
+  if (parts.size() > 1 && nodes != parts.end() && nodes + 1 != parts.end()) {
+    parts.erase(parts.begin(), nodes);  // a node selection, anywhere
+  }
+  for (size_t count = parts.size(); count > 0; --count) {
+    std::string ancestor;
+    for (size_t k = 0; k < count; ++k) ancestor += (k == 0 ? "" : ".") + parts[k];
+    for (const SchemaRow& row : SceneSchema()) {
+      if (row.Path() == ancestor) return row.unit;
+    }
+  }
+  return "";
 }
 
 std::string SchemaMarkdown(const std::string& table) {

@@ -59,6 +59,11 @@ std::vector<std::string> SchemaKeys(const std::string& table, const std::string&
 // The rows of `table`.
 std::vector<const SchemaRow*> SchemaRows(const std::string& table);
 
+// The unit of the value at `path` in a written scene ("fixed[0].move",
+// "obstacles[1].sphere.radius", "regions[0].nodes.within.radius"): its row's, else its nearest
+// ancestor row's; "" for none.
+std::string SchemaUnit(const std::string& path);
+
 // docs/reference.md's table of `table`, in markdown (ending with a newline).
 std::string SchemaMarkdown(const std::string& table);
 
