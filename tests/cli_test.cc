@@ -594,6 +594,27 @@ TEST_F(CliTest, CheckDescribesTheModelAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out_));
 }
 
+// `drape check --json`: the scene as solved, each value with its unit, as JSON (yaml-cpp reads
+// JSON), defaults filled in; nothing written.
+TEST_F(CliTest, CheckJsonPrintsTheResolvedSceneWithUnits) {
+  const ProgramOutcome outcome =
+      Drape({"check", "--json", WriteScene(), "--set", "material.springs.structural=60"});
+  ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
+  const YAML::Node scene = YAML::Load(outcome.out);
+  EXPECT_EQ(scene["mesh"]["length"]["value"].as<double>(), 0.4);
+  EXPECT_EQ(scene["mesh"]["length"]["unit"].as<std::string>(), "m");
+  EXPECT_EQ(scene["material"]["springs"]["structural"]["warp"]["value"].as<double>(), 60.0);
+  EXPECT_EQ(scene["material"]["springs"]["structural"]["warp"]["unit"].as<std::string>(), "N/m");
+  EXPECT_EQ(scene["material"]["node_mass"]["unit"].as<std::string>(), "kg");
+  EXPECT_EQ(scene["fixed"][1]["move"]["value"][0].as<double>(), -0.05);
+  EXPECT_EQ(scene["fixed"][1]["move"]["unit"].as<std::string>(), "m");
+  EXPECT_EQ(scene["contact"]["thickness"]["value"].as<double>(), 0.001) << "the default";
+  EXPECT_EQ(scene["solver"]["method"]["value"].as<std::string>(), "ceres-lbfgs");
+  EXPECT_EQ(scene["loads"]["gravity"]["unit"].as<std::string>(), "m/s²");
+  EXPECT_EQ(outcome.out.front(), '{');
+  EXPECT_FALSE(fs::exists(out_));
+}
+
 // Ctrl-C (SIGINT) and a batch system's SIGTERM (Slurm, `timeout`, `docker stop`): the solver stops
 // at its next iteration, the last iterate is written, marked converged: false and interrupted, and
 // the exit status is 1. The signal is blocked in the child from before it starts, so it stays

@@ -29,6 +29,7 @@
 #include "src/numerics/library_threads.h"
 #include "src/output/json.h"
 #include "src/output/result_folder.h"
+#include "src/output/scene_json.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/parallel/process_group.h"
@@ -81,6 +82,7 @@ struct Arguments {
   int threads = 0;                    // fit, solve --drops: local threads (task_farm.h)
   std::optional<int> drops;           // solve: repeated drops of a drape test
   std::vector<std::string> overrides;
+  bool json = false;  // check: the resolved scene as JSON with units
 };
 
 // "unknown solver 'newtn' (known: newton, ...); did you mean 'newton'?"
@@ -285,6 +287,10 @@ int Check(const Arguments& arguments, std::ostream& out) {
   const Scene scene = LoadScene(arguments.file, arguments.overrides);
   RequireKnownSolver(scene);
   const Model model = BuildModel(scene);
+  if (arguments.json) {
+    out << SceneJson(scene) << std::flush;
+    return kExitConverged;
+  }
   out << scene.name << ": " << model.num_nodes << " nodes, " << model.num_free_dofs()
       << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << "\n";
   if (scene.drape_test) out << DrapeTestText(scene);
@@ -584,6 +590,9 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       "load and build the scene, print what it contains (and the SI material values "
       "derived from KES or Peirce inputs); write nothing");
   AddSceneArguments(check, &arguments, "scene file (YAML)");
+  check->add_flag("--json", arguments.json,
+                  "print the scene as solved (defaults filled in, SI) as JSON, each value "
+                  "{\"value\": ..., \"unit\": ...}, instead of the summary");
 
   app.add_subcommand("solvers",
                      "list the methods and their options (solver.<method>.<key>) with defaults");

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "src/scene/scene_schema.h"
+
 namespace drape {
 namespace {
 
@@ -48,9 +50,7 @@ std::string Metres(double metres) {
 }  // namespace
 
 const std::vector<std::string>& DrapeTestKeys() {
-  static const std::vector<std::string> keys = {
-      "specimen_diameter", "disc_diameter", "clamp_diameter", "offset", "drops", "placement",
-      "waviness",          "seed"};
+  static const std::vector<std::string> keys = SchemaKeys("drape_test");
   return keys;
 }
 

@@ -1,6 +1,6 @@
-// The scene schema: which keys exist, their types, units, ranges and defaults. Every key of
-// The scene format (docs/architecture.md, "The scene format is a contract") is read here; every key
-// is documented in docs/reference.md (Scene reference).
+// Reads a scene: every key of the scene format (docs/architecture.md, "The scene format is a
+// contract") is read here, with its range and default. Which keys each map accepts is the scene
+// schema's (src/scene/scene_schema.h), which docs/reference.md's scene tables are generated from.
 #include "src/scene/scene_loader.h"
 
 #include <yaml-cpp/yaml.h>
@@ -20,6 +20,7 @@
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
+#include "src/scene/scene_schema.h"
 #include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
 #include "src/scene/yaml_overrides.h"
@@ -49,16 +50,9 @@ std::string JoinNames(const std::vector<std::string>& names) {
 
 // ------------------------------------------------------------------------------------ mesh
 
-const std::map<std::string, std::vector<std::string>>& MeshKeysByKind() {
-  static const std::map<std::string, std::vector<std::string>> keys = {
-      {"grid", {"kind", "size", "nodes", "u", "v", "plane", "origin", "max_nodes"}},
-      {"circle", {"kind", "radius", "spacing", "origin", "max_nodes"}},
-      {"arc", {"kind", "radius", "rings", "spokes", "origin", "max_nodes"}},
-      {"chain",
-       {"kind", "length", "nodes", "direction", "origin", "points", "closed", "max_nodes"}},
-      {"file", {"kind", "path", "max_nodes"}},
-  };
-  return keys;
+const std::vector<std::string>& MeshKinds() {
+  static const std::vector<std::string> kinds = {"arc", "chain", "circle", "file", "grid"};
+  return kinds;
 }
 
 MeshSpec::Kind MeshKindOf(const std::string& name) {
@@ -211,9 +205,7 @@ void CheckMeshSize(const YamlMap& map, MeshSpec* spec) {
 }
 
 const std::vector<std::string>& MeshKeys() {
-  static const std::vector<std::string> keys = {
-      "kind",  "size",   "nodes",  "u",         "v",    "plane",  "origin", "radius",   "spacing",
-      "rings", "spokes", "length", "direction", "path", "points", "closed", "max_nodes"};
+  static const std::vector<std::string> keys = SchemaKeys("mesh");
   return keys;
 }
 
@@ -227,11 +219,9 @@ MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory,
   spec.where = value.where;
   spec.radius = default_radius;
   std::string kind = default_kind;
-  std::vector<std::string> kinds;
-  for (const auto& entry : MeshKeysByKind()) kinds.push_back(entry.first);
-  if (const auto given = map.Find("kind")) kind = ReadChoice(*given, kinds);
+  if (const auto given = map.Find("kind")) kind = ReadChoice(*given, MeshKinds());
   spec.kind = MeshKindOf(kind);
-  const auto& allowed = MeshKeysByKind().at(kind);
+  const auto allowed = SchemaKeys("mesh", kind);
   for (const auto& key : map.Keys()) {
     if (!Contains(allowed, key)) {
       throw InputError(map.KeyLocation(key), "'" + key + "' does not apply to a " + kind +
@@ -312,8 +302,7 @@ void ReadRestLength(const YamlValue& value, SpringsSpec* springs) {
 }
 
 SpringsSpec ReadSprings(const YamlValue& value) {
-  const YamlMap map(
-      value, {"structural", "shear", "flexion", "rest_length", "tension_only", "stretch_limit"});
+  const YamlMap map(value, SchemaKeys("material.springs"));
   SpringsSpec springs;
   springs.present = true;
   springs.where = value.where;
@@ -371,9 +360,7 @@ double ReadParameter(const YamlMap& map, const std::string& key, const std::stri
 
 // finite_volume.kes: KES-FB measurements in their own units (src/scene/fabric_parameters.h).
 const std::vector<std::string>& KesKeys() {
-  static const std::vector<std::string> keys = {"B_warp",   "B_weft",   "G",        "W",
-                                                "EMT_warp", "EMT_weft", "LT_warp",  "LT_weft",
-                                                "Fm",       "2HB_warp", "2HB_weft", "2HG"};
+  static const std::vector<std::string> keys = SchemaKeys("material.finite_volume.kes");
   return keys;
 }
 
@@ -432,10 +419,7 @@ void ReadFrictions(const YamlMap& map, const std::optional<YamlMap>& kes, Finite
 }
 
 FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& density) {
-  const YamlMap map(value, {"E_warp", "E_weft", "nu_warp", "nu_weft", "G", "D_warp", "D_weft",
-                            "D_12", "kes", "bending_length", "bending_friction_warp",
-                            "bending_friction_weft", "bending_friction_smoothing", "shear_friction",
-                            "shear_friction_smoothing", "friction_load_steps"});
+  const YamlMap map(value, SchemaKeys("material.finite_volume"));
   FiniteVolumeSpec fv;
   fv.present = true;
   fv.where = value.where;
@@ -445,7 +429,7 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
     if (v->get().IsScalar()) {
       Fail(*v, "give the bending length per direction: {warp: cm, weft: cm}");
     }
-    peirce.emplace(*v, std::vector<std::string>{"warp", "weft"});
+    peirce.emplace(*v, SchemaKeys("material.finite_volume.bending_length"));
   }
   auto find = [](const std::optional<YamlMap>& block, const std::string& key) {
     return block ? block->Find(key) : std::nullopt;
@@ -553,7 +537,7 @@ std::vector<SpringLineSpec> ReadLines(const YamlValue& value) {
   }
   std::vector<SpringLineSpec> lines;
   for (const auto& item : ReadList(value)) {
-    const YamlMap map(item, {"nodes", "structural", "tension_only"});
+    const YamlMap map(item, SchemaKeys("material.lines"));
     SpringLineSpec line;
     line.where = item.where;
     line.nodes = ReadSelector(map.Get("nodes"));
@@ -565,8 +549,7 @@ std::vector<SpringLineSpec> ReadLines(const YamlValue& value) {
 }
 
 MaterialSpec ReadMaterial(const YamlValue& value) {
-  const YamlMap map(
-      value, {"model", "density", "node_mass", "total_mass", "springs", "finite_volume", "lines"});
+  const YamlMap map(value, SchemaKeys("material"));
   MaterialSpec material;
   material.where = value.where;
   if (const auto model = map.Find("model")) {
@@ -648,8 +631,7 @@ void ReadSelectorKind(const std::string& kind, const YamlValue& value, NodeSelec
 }
 
 NodeSelector ReadSelector(const YamlValue& value) {
-  static const std::vector<std::string> kinds = {
-      "edge", "corner", "ids", "ij", "row", "column", "box", "within", "outside", "all", "region"};
+  static const std::vector<std::string> kinds = SchemaKeys("nodes");
   if (!value.get().IsMap()) {
     Fail(value, "expected a node selection such as {edge: top} or {ids: [0, 3]}, got " +
                     Describe(value.get()));
@@ -732,9 +714,11 @@ std::vector<RegionSpec> ReadRegions(const YamlValue& value, const MaterialSpec& 
     Fail(value,
          "expected a list of regions (- nodes: ..., D_warp: ...), got " + Describe(value.get()));
   }
-  std::vector<std::string> keys = {"nodes",   "density",      "structural", "shear",
-                                   "flexion", "tension_only", "name"};
-  for (const FiniteVolumeKey& fv : FiniteVolumeKeys()) keys.push_back(fv.key);
+  const std::vector<std::string> keys = SchemaKeys("regions");
+  std::vector<std::string> overrides;  // every key but the selection and the name
+  for (const std::string& key : keys) {
+    if (key != "nodes" && key != "name") overrides.push_back(key);
+  }
   std::vector<RegionSpec> regions;
   for (const auto& item : ReadList(value)) {
     const YamlMap map(item, keys);
@@ -748,8 +732,7 @@ std::vector<RegionSpec> ReadRegions(const YamlValue& value, const MaterialSpec& 
       ReadRegionKey(key, map.Get(key), &region);
     }
     if (region.given.empty()) {
-      Fail(item, "the region overrides nothing: give one or more of " +
-                     JoinNames(std::vector<std::string>(keys.begin() + 1, keys.end() - 1)));
+      Fail(item, "the region overrides nothing: give one or more of " + JoinNames(overrides));
     }
     regions.push_back(region);
   }
@@ -781,7 +764,7 @@ std::vector<FixedSpec> ReadFixed(const YamlValue& value) {
   }
   std::vector<FixedSpec> fixed;
   for (const auto& item : ReadList(value)) {
-    const YamlMap map(item, {"nodes", "dofs", "move"});
+    const YamlMap map(item, SchemaKeys("fixed"));
     FixedSpec spec;
     spec.where = item.where;
     spec.nodes = ReadSelector(map.Get("nodes"));
@@ -813,7 +796,7 @@ void ReadForceRamp(const YamlValue& value, ForceSpec* force) {
 }
 
 ForceSpec ReadForce(const YamlValue& item) {
-  const YamlMap map(item, {"nodes", "total", "each", "values", "ramp", "traction", "pressure"});
+  const YamlMap map(item, SchemaKeys("loads.forces"));
   ForceSpec force;
   force.where = item.where;
   force.nodes = ReadSelector(map.Get("nodes"));
@@ -856,7 +839,7 @@ ForceSpec ReadForce(const YamlValue& item) {
 }
 
 LoadsSpec ReadLoads(const YamlValue& value) {
-  const YamlMap map(value, {"gravity", "forces", "pressure"});
+  const YamlMap map(value, SchemaKeys("loads"));
   LoadsSpec loads;
   loads.where = value.where;
   if (const auto gravity = map.Find("gravity")) loads.gravity = ReadVector3(*gravity);
@@ -877,11 +860,10 @@ LoadsSpec ReadLoads(const YamlValue& value) {
 
 // ------------------------------------------------------------------------------ obstacles
 
-// Every key an obstacle may have; which kinds take which is the registry's
+// Every key an obstacle may have (the schema's); which kinds take which is the registry's
 // (src/model/obstacle_kinds.h), checked when the model is built.
 const std::vector<std::string>& ObstacleKeys() {
-  static const std::vector<std::string> keys = {"center", "radius", "height",   "min",     "max",
-                                                "point",  "normal", "position", "friction"};
+  static const std::vector<std::string> keys = SchemaKeys("obstacles");
   return keys;
 }
 
@@ -928,7 +910,7 @@ std::vector<ObstacleSpec> ReadObstacles(const YamlValue& value) {
 }
 
 ContactSpec ReadContact(const YamlValue& value) {
-  const YamlMap map(value, {"thickness"});
+  const YamlMap map(value, SchemaKeys("contact"));
   ContactSpec contact;
   contact.where = value.where;
   if (const auto thickness = map.Find("thickness")) {
@@ -964,7 +946,7 @@ std::map<std::string, double> ReadMethodOptions(const SolverMethod& method,
 
 SolverSpec ReadSolver(const YamlValue& value) {
   const auto methods = MethodNames();
-  std::vector<std::string> keys = {"method", "tolerance", "max_iterations", "time_limit", "levels"};
+  std::vector<std::string> keys = SchemaKeys("solver");
   keys.insert(keys.end(), methods.begin(), methods.end());
   const YamlMap map(value, keys);
   SolverSpec solver;
@@ -995,7 +977,7 @@ SolverSpec ReadSolver(const YamlValue& value) {
 }
 
 OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
-  const YamlMap map(value, {"directory", "write", "obj_up"});
+  const YamlMap map(value, SchemaKeys("output"));
   OutputSpec output;
   output.where = value.where;
   output.directory = ResolvePath(scene.directory, "out/" + scene.name);
@@ -1130,8 +1112,7 @@ void RefuseFitAndSweepFiles(const YamlValue& root) {
 
 void ReadScene(const YamlValue& root, Scene* scene) {
   RefuseFitAndSweepFiles(root);
-  const YamlMap top(root, {"name", "dimension", "mesh", "material", "regions", "fixed", "loads",
-                           "obstacles", "contact", "solver", "output", "drape_test"});
+  const YamlMap top(root, SchemaKeys(""));
   if (const auto name = top.Find("name")) scene->name = ReadName(*name);
   if (const auto dimension = top.Find("dimension")) {
     scene->dimension = ReadInt(*dimension);
