@@ -20,6 +20,7 @@
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
+#include "src/scene/output_kinds.h"
 #include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
 #include "src/scene/yaml_overrides.h"
@@ -29,13 +30,6 @@ namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
-
-// What `output.write` may ask for; the writers decide what each produces. Add new outputs here.
-const std::vector<std::string>& OutputKinds() {
-  static const std::vector<std::string> kinds = {"summary", "nodes",   "history", "vtk",   "obj",
-                                                 "png",     "kinetic", "profile", "shadow"};
-  return kinds;
-}
 
 bool Contains(const std::vector<std::string>& list, const std::string& item) {
   return std::find(list.begin(), list.end(), item) != list.end();
@@ -1004,16 +998,14 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
     if (given.empty()) Fail(*directory, "expected a folder, got nothing");
     output.directory = ResolvePath(scene.directory, given);
   }
-  if (scene.drape_test) {  // a drape test's figures: the shadow and its radial profile
-    output.write.insert(output.write.end(), {"profile", "shadow"});
-  }
+  output.write = DefaultOutputWrite(scene.drape_test.has_value());
   if (const auto write = map.Find("write")) {
     if (!write->get().IsSequence()) {
       Fail(*write, "expected a list such as [summary, nodes], got " + Describe(write->get()));
     }
     output.write.clear();
     for (const auto& item : ReadList(*write)) {
-      const std::string kind = ReadChoice(item, OutputKinds());
+      const std::string kind = ReadChoice(item, OutputKindNames());
       if (Contains(output.write, kind)) Fail(item, "'" + kind + "' is listed twice");
       output.write.push_back(kind);
     }
