@@ -34,6 +34,7 @@
 #include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/scene/drape_test.h"
+#include "src/scene/material_models.h"
 #include "src/scene/output_kinds.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
@@ -290,8 +291,8 @@ int Check(const Arguments& arguments, std::ostream& out) {
       << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << "\n";
   if (scene.drape_test) out << DrapeTestText(scene);
   const MaterialSpec& material = scene.material;
-  out << "material " << material.model
-      << (material.model != "springs" && material.springs.present ? " + springs" : "")
+  out << "material " << MaterialModelName(material.model)
+      << (material.model != MaterialModel::kSprings && material.springs.present ? " + springs" : "")
       << (material.lines.empty() ? ""
                                  : " + " + std::to_string(material.lines.size()) + " spring lines")
       << " (SI):";

@@ -30,6 +30,7 @@
 #include "src/output/scene_yaml.h"
 #include "src/output/version.h"
 #include "src/scene/material_keys.h"
+#include "src/scene/material_models.h"
 #include "src/solvers/state_text.h"
 
 namespace drape {
@@ -206,7 +207,7 @@ void AddProvenanceMembers(const Scene& scene, const Provenance& provenance,
   }
   members->emplace_back("overrides", overrides + "]");
   std::vector<std::pair<std::string, std::string>> values = {
-      {"model", JsonString(scene.material.model)}};
+      {"model", JsonString(MaterialModelName(scene.material.model))}};
   std::vector<std::pair<std::string, std::string>> units;
   for (const MaterialValue& value : MaterialSiValues(scene.material)) {
     values.emplace_back(value.key, JsonNumber(value.value));
@@ -654,7 +655,7 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
   static const char* const mass_units[] = {"kg/m^2", "kg", "kg"};
   const int mass = static_cast<int>(material.mass_kind);
   std::vector<MaterialValue> values = {{mass_keys[mass], material.mass_value, mass_units[mass]}};
-  if (material.model == "finite_volume") {
+  if (material.model == MaterialModel::kFiniteVolume) {
     const FiniteVolumeSpec& fv = material.finite_volume;
     for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
       if (key.reported_when_zero || fv.*key.member != 0.0) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "src/scene/material_models.h"
 #include "src/scene/output_kinds.h"
 
 namespace drape {
@@ -136,8 +137,8 @@ struct SpringLineSpec {
 };
 
 struct MaterialSpec {
-  // springs | finite_volume. A finite_volume material may have springs beside it (`springs`).
-  std::string model = "springs";
+  // src/scene/material_models.h. A finite_volume material may have springs beside it (`springs`).
+  MaterialModel model = MaterialModel::kSprings;
   enum class MassKind { kDensity, kNodeMass, kTotalMass };
   MassKind mass_kind = MassKind::kDensity;
   double mass_value = 0.0;  // kg/m², kg per node, or kg

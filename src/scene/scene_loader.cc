@@ -20,6 +20,7 @@
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
+#include "src/scene/material_models.h"
 #include "src/scene/output_kinds.h"
 #include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
@@ -564,9 +565,9 @@ MaterialSpec ReadMaterial(const YamlValue& value) {
   MaterialSpec material;
   material.where = value.where;
   if (const auto model = map.Find("model")) {
-    material.model = ReadChoice(*model, {"springs", "finite_volume"});
+    material.model = MaterialModelNamed(ReadChoice(*model, MaterialModelNames()));
   }
-  if (material.model == "springs") {
+  if (material.model == MaterialModel::kSprings) {
     ReadMass(map, &material);
     if (map.Has("finite_volume")) {
       throw InputError(map.KeyLocation("finite_volume"),
@@ -674,7 +675,7 @@ void CheckRegionKeyApplies(const YamlMap& map, const std::string& key,
     throw InputError(map.KeyLocation(key),
                      "a region's density needs the material's mass as density (kg/m²)");
   }
-  if (fv_key && material.model != "finite_volume") {
+  if (fv_key && material.model != MaterialModel::kFiniteVolume) {
     throw InputError(map.KeyLocation(key),
                      "'" + key + "' applies only when material.model is finite_volume");
   }
