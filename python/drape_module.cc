@@ -27,6 +27,7 @@
 #include "src/model/model.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/scene/material_models.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
@@ -75,7 +76,7 @@ py::dict CheckData(const PyScene& loaded) {
     material[py::str(value.key)] = py::make_tuple(value.value, value.unit);
   }
   data["material_si"] = material;
-  data["model"] = loaded.scene.material.model;
+  data["model"] = MaterialModelName(loaded.scene.material.model);
   if (const std::optional<MeshAdvice> advice = AdviseMesh(loaded.scene, model);
       advice && advice->coarse) {
     data["warning"] = CoarseMeshWarning(*advice);

@@ -86,7 +86,7 @@ TEST(Cantilever, ElasticaReferenceReproducesBisshoppDrucker) {
 // plus the finite-volume terms. (Equivalent to BuildModel once it adds the finite-volume terms.)
 Model BuildFiniteVolumeModel(const Scene& scene) {
   Scene without_material = scene;
-  without_material.material.model = "springs";
+  without_material.material.model = MaterialModel::kSprings;
   without_material.material.springs = SpringsSpec{};
   Model model = BuildModel(without_material);
   AddFiniteVolumeTerms(scene.material.finite_volume, BuildMesh(scene.mesh), &model);

@@ -54,7 +54,7 @@ TEST(FvScenes, EverySceneHasACoarseVersionAndBuilds) {
     const std::string file = entry.path().filename().string();
     EXPECT_EQ(listed.count(file), 1u) << file << " has no coarse version in this test";
     const Scene scene = LoadScene(entry.path().string());
-    EXPECT_EQ(scene.material.model, "finite_volume") << file;
+    EXPECT_EQ(scene.material.model, MaterialModel::kFiniteVolume) << file;
     EXPECT_GT(BuildModel(scene).num_nodes, 20) << file;
     ++count;
   }

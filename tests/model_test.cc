@@ -345,7 +345,7 @@ TEST(Model, EverythingFixedIsFine) {
 
 TEST(Model, MaterialAndObstacleErrorsAreRejectedWhereWritten) {
   Scene scene = Sheet(3, 3);
-  scene.material.model = "finite_volume";
+  scene.material.model = MaterialModel::kFiniteVolume;
   scene.material.finite_volume.present = true;
   scene.material.finite_volume.where = Location{"scene.yaml", 9, 3, "material.finite_volume"};
   const std::string message = ErrorOf(scene);  // every rigidity left at zero

@@ -96,7 +96,7 @@ TEST_F(SceneLoaderTest, MinimalSceneGetsTheDefaults) {
   EXPECT_TRUE(scene.mesh.u.empty());
   EXPECT_EQ(scene.mesh.plane, "xy");
   EXPECT_EQ(scene.mesh.origin, Eigen::Vector3d::Zero());
-  EXPECT_EQ(scene.material.model, "springs");
+  EXPECT_EQ(scene.material.model, MaterialModel::kSprings);
   EXPECT_EQ(scene.material.mass_kind, MaterialSpec::MassKind::kDensity);
   EXPECT_DOUBLE_EQ(scene.material.mass_value, 0.2);
   const SpringsSpec& springs = scene.material.springs;
@@ -307,7 +307,7 @@ material:
     D_12: 1.0e-6
 )");
   const FiniteVolumeSpec& spec = fv.material.finite_volume;
-  EXPECT_EQ(fv.material.model, "finite_volume");
+  EXPECT_EQ(fv.material.model, MaterialModel::kFiniteVolume);
   EXPECT_TRUE(spec.present);
   EXPECT_DOUBLE_EQ(spec.E_warp, 500.0);
   EXPECT_DOUBLE_EQ(spec.E_weft, 300.0);

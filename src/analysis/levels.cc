@@ -14,6 +14,7 @@
 #include "src/analysis/drape_analysis.h"
 #include "src/model/contact.h"
 #include "src/model/mesh.h"
+#include "src/scene/material_models.h"
 
 namespace drape {
 
@@ -404,10 +405,9 @@ Scene CoarsenedScene(const Scene& scene, int factor) {
   const LatticeAxes fine_axes = AxesOf(scene.mesh), coarse_axes = AxesOf(coarse.mesh);
   const double ratio =
       coarse_axes.u.h > 0.0 ? coarse_axes.u.h / fine_axes.u.h : coarse_axes.v.h / fine_axes.v.h;
-  SpringsSpec& springs = coarse.material.springs;
-  springs.flexion.warp *= std::pow(ratio, -4.0);
-  springs.flexion.weft *= std::pow(ratio, -4.0);
-  if (springs.rest_length == SpringsSpec::RestLength::kGiven) springs.rest_length_value *= ratio;
+  const MaterialModelRow& model = MaterialModelOf(scene.material.model);
+  assert(model.rescale_for_spacing && "a material model without its rescaling rule");
+  model.rescale_for_spacing(ratio, &coarse.material);
   const Mesh fine_mesh = BuildMesh(scene.mesh), coarse_mesh = BuildMesh(coarse.mesh);
   for (FixedSpec& fixed : coarse.fixed) {
     MapSelector(scene, fine_mesh, coarse_mesh, fine_axes, coarse_axes, &fixed.nodes);

@@ -3,16 +3,15 @@
 // answer interpolated onto the finer lattice (grid sequencing), then the drape coefficient and
 // the energy extrapolated to h → 0 (Richardson) from the three finest levels.
 //
-// Coarser scenes keep the fabric per unit area: finite-volume rigidities and areal densities are
-// per unit area already; spring stiffnesses stay (a square lattice of springs k has membrane
-// rigidity k whatever its spacing) except flexion: a skip-one spring of a sheet bent to curvature
-// κ shortens by κ²h³/3, so its energy per unit area, k_f κ⁴ h⁴/18, stays the same when k_f scales
-// as h⁻⁴. Node selectors by position (edge, corner, box, within, all) select the same places;
-// `ids` and `ij` are mapped through the lattice index: fine index i lands at i h/H on the coarse
-// lattice and the coarse nodes on either side are selected (a clamp on the first two nodes stays
-// the first two; a node between coarse nodes selects both). What cannot be scaled is refused at
-// solver.levels: meshes other than a uniform grid or a circle, per-node forces and masses given per
-// node.
+// Coarser scenes keep the fabric per unit area: each material model's row says how its
+// parameters change with the spacing (MaterialModelRow::rescale_for_spacing,
+// src/scene/material_models.cc: finite-volume rigidities and areal densities are per unit area
+// already; spring stiffnesses stay but flexion, which scales as h⁻⁴). Node selectors by position
+// (edge, corner, box, within, all) select the same places; `ids` and `ij` are mapped through the
+// lattice index: fine index i lands at i h/H on the coarse lattice and the coarse nodes on either
+// side are selected (a clamp on the first two nodes stays the first two; a node between coarse
+// nodes selects both). What cannot be scaled is refused at solver.levels: meshes other than a
+// uniform grid or a circle, per-node forces and masses given per node.
 #ifndef DRAPE_SRC_ANALYSIS_LEVELS_H_
 #define DRAPE_SRC_ANALYSIS_LEVELS_H_
 

@@ -6,13 +6,14 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/analysis/levels.h"
+#include "src/scene/material_models.h"
 
 namespace drape {
 
 std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
   const MaterialSpec& material = scene.material;
-  if (material.model != "finite_volume" || material.mass_kind != MaterialSpec::MassKind::kDensity ||
-      !scene.loads.gravity) {
+  if (material.model != MaterialModel::kFiniteVolume ||
+      material.mass_kind != MaterialSpec::MassKind::kDensity || !scene.loads.gravity) {
     return std::nullopt;
   }
   if (!HasDrapeCoefficient(scene, model) || !(DiscRadius(scene) > 0.0)) return std::nullopt;

@@ -35,6 +35,8 @@
 #include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/scene/drape_test.h"
+#include "src/scene/material_models.h"
+#include "src/scene/output_kinds.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
@@ -295,8 +297,8 @@ int Check(const Arguments& arguments, std::ostream& out) {
       << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << "\n";
   if (scene.drape_test) out << DrapeTestText(scene);
   const MaterialSpec& material = scene.material;
-  out << "material " << material.model
-      << (material.model != "springs" && material.springs.present ? " + springs" : "")
+  out << "material " << MaterialModelName(material.model)
+      << (material.model != MaterialModel::kSprings && material.springs.present ? " + springs" : "")
       << (material.lines.empty() ? ""
                                  : " + " + std::to_string(material.lines.size()) + " spring lines")
       << " (SI):";
@@ -447,6 +449,11 @@ int ListSolvers(std::ostream& out) {
   for (const auto& method : SolverMethods()) {
     out << method.name << "\n    " << method.description << "\n    defaults: max_iterations "
         << method.max_iterations << ", time_limit " << method.time_limit << " s\n";
+    if (method.records_trace) {
+      out << "    writes its per-step trace to " << TraceFileName(method.name)
+          << " (output.write: " << OutputKindOf(OutputKind::kHistory).name << " or "
+          << OutputKindOf(OutputKind::kKinetic).name << ")\n";
+    }
     if (method.options.empty()) continue;
     out << "    options (solver." << method.name << ".<key>):\n";
     for (const auto& option : method.options) {

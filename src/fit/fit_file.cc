@@ -20,6 +20,7 @@
 #include "src/output/json.h"
 #include "src/output/writers.h"
 #include "src/scene/file_paths.h"
+#include "src/scene/material_models.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
 #include "src/solvers/load_steps.h"
@@ -394,9 +395,10 @@ void CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
     if (measurement.kind == Kind::kDrapeCoefficient && model.triangles.empty()) {
       throw InputError(measurement.where, "a drape coefficient needs a surface mesh");
     }
-    if (measurement.kind == Kind::kBendingLength && scene.material.model != "finite_volume") {
-      throw InputError(measurement.where,
-                       "the virtual Peirce test needs material.model: finite_volume");
+    if (measurement.kind == Kind::kBendingLength &&
+        !MaterialModelOf(scene.material.model).peirce_test) {
+      throw InputError(measurement.where, "the virtual Peirce test needs material.model: " +
+                                              MaterialModelsWith(&MaterialModelRow::peirce_test));
     }
   }
 }

@@ -6,6 +6,7 @@
 #include "src/analysis/drape_analysis.h"
 #include "src/model/equilibrium.h"
 #include "src/scene/fabric_parameters.h"
+#include "src/scene/material_models.h"
 
 namespace drape {
 namespace {
@@ -151,9 +152,9 @@ double PeirceBendingLength(double overhang, double chord_angle) {
 }
 
 Scene PeirceStripScene(const Scene& specimen, const FitMeasurement& measurement) {
-  if (specimen.material.model != "finite_volume") {
-    throw InputError(measurement.where,
-                     "the virtual Peirce test needs material.model: finite_volume");
+  if (!MaterialModelOf(specimen.material.model).peirce_test) {
+    throw InputError(measurement.where, "the virtual Peirce test needs material.model: " +
+                                            MaterialModelsWith(&MaterialModelRow::peirce_test));
   }
   if (specimen.material.mass_kind != MaterialSpec::MassKind::kDensity) {
     throw InputError(measurement.where, "the virtual Peirce test needs material.density (kg/m²)");

@@ -104,13 +104,6 @@ class BuildClock {
   const std::chrono::steady_clock::time_point start_;
 };
 
-void RejectUnsupported(const Scene& scene) {
-  const MaterialSpec& material = scene.material;
-  if (material.model != "springs" && material.model != "finite_volume") {
-    throw InputError(material.where, "unknown material model '" + material.model + "'");
-  }
-}
-
 // Lumped area per node, or lumped length where the mesh has no area (a chain).
 std::vector<double> MassWeights(const Mesh& mesh) {
   double area = 0.0;
@@ -518,7 +511,6 @@ void CheckPressureHeld(const Scene& scene, const Model& model) {
 
 Model BuildModel(const Scene& scene, const std::vector<double>* friction_reference) {
   const BuildClock clock(scene);
-  RejectUnsupported(scene);
   const Mesh mesh = BuildMesh(scene.mesh);
   const std::string nodes = std::to_string(mesh.nodes.size()) + " nodes";
   clock.Check("the mesh of " + nodes);
@@ -549,7 +541,7 @@ Model BuildModel(const Scene& scene, const std::vector<double>* friction_referen
   model.fringe = mesh.fringe;
   model.edges = mesh.lines;
 
-  if (scene.material.model == "finite_volume") {
+  if (scene.material.model == MaterialModel::kFiniteVolume) {
     std::vector<const FiniteVolumeSpec*> of_node(mesh.nodes.size());
     for (size_t k = 0; k < of_node.size(); ++k) {
       of_node[k] = &materials.at(static_cast<int>(k)).finite_volume;
@@ -558,7 +550,7 @@ Model BuildModel(const Scene& scene, const std::vector<double>* friction_referen
     AddFiniteVolumeTerms(of_node, mesh, &model,
                          friction_reference ? friction_reference->data() : nullptr);
   }
-  if (scene.material.model == "springs" || scene.material.springs.present) {
+  if (scene.material.model == MaterialModel::kSprings || scene.material.springs.present) {
     AddSprings(materials, mesh, &model);
   }
   if (scene.material.springs.stretch_limit) {

@@ -12,6 +12,9 @@
 #include <set>
 #include <stdexcept>
 
+#include "src/scene/output_kinds.h"
+#include "src/scene/solver_methods.h"
+
 namespace drape {
 
 namespace fs = std::filesystem;
@@ -71,18 +74,26 @@ void Rename(const fs::path& from, const fs::path& to) {
 }  // namespace
 
 const std::vector<std::string>& ResultFileNames() {
-  static const std::vector<std::string> names = {"summary.json",
-                                                 "nodes.csv",
-                                                 "history.csv",
-                                                 "kinetic.csv",
-                                                 "mesh.vtk",
-                                                 "mesh.obj",
-                                                 "profile.csv",
-                                                 "drape.png",
-                                                 "shadow.png",
-                                                 "scene.yaml",
-                                                 "kinetic_explicit-euler.csv",
-                                                 "kinetic_puiseux-dynamic.csv"};  // TraceFileName
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> files;
+    auto add = [&files](const std::string& file) {
+      if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
+    };
+    for (const OutputKindRow& row : OutputKinds()) {
+      for (const std::string& pattern : row.files) {
+        if (OutputFileName(pattern, "") == pattern) {
+          add(pattern);
+          continue;
+        }
+        for (const SolverMethod& method : SolverMethods()) {
+          if (method.records_trace) add(OutputFileName(pattern, method.name));
+        }
+      }
+    }
+    add(kSolvedSceneFile);
+    add("kinetic.csv");  // the trace's name before the per-method names (format version 1)
+    return files;
+  }();
   return names;
 }
 

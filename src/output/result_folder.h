@@ -14,7 +14,9 @@
 
 namespace drape {
 
-// Every file name a solve may write into its result folder.
+// Every file name a solve may write into its result folder: each output kind's files
+// (src/scene/output_kinds.h), the trace's for each method that records one, scene.yaml, and the
+// trace's name of older versions (kinetic.csv), so that an older run's is removed too.
 const std::vector<std::string>& ResultFileNames();
 
 // Holds the folder's lock for its lifetime; creates the folder. Throws std::runtime_error when

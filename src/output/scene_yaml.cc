@@ -11,6 +11,7 @@
 #include "src/model/obstacle_kinds.h"
 #include "src/output/json.h"
 #include "src/scene/material_keys.h"
+#include "src/scene/material_models.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 
@@ -235,11 +236,13 @@ void WriteMaterial(const MaterialSpec& material, YAML::Emitter& out) {
   Key(out, "material");
   out << YAML::Value << YAML::BeginMap;
   Key(out, "model");
-  out << YAML::Value << material.model;
+  out << YAML::Value << MaterialModelName(material.model);
   Key(out, mass_keys[static_cast<int>(material.mass_kind)]);
   Number(out, material.mass_value);
-  if (material.model != "springs") WriteFiniteVolume(material.finite_volume, out);
-  if (material.model == "springs" || material.springs.present) {
+  if (material.model == MaterialModel::kFiniteVolume) {
+    WriteFiniteVolume(material.finite_volume, out);
+  }
+  if (material.model == MaterialModel::kSprings || material.springs.present) {
     WriteSprings(material.springs, out);
   }
   if (!material.lines.empty()) {

@@ -30,6 +30,7 @@
 #include "src/output/scene_yaml.h"
 #include "src/output/version.h"
 #include "src/scene/material_keys.h"
+#include "src/scene/material_models.h"
 #include "src/solvers/state_text.h"
 
 namespace drape {
@@ -206,7 +207,7 @@ void AddProvenanceMembers(const Scene& scene, const Provenance& provenance,
   }
   members->emplace_back("overrides", overrides + "]");
   std::vector<std::pair<std::string, std::string>> values = {
-      {"model", JsonString(scene.material.model)}};
+      {"model", JsonString(MaterialModelName(scene.material.model))}};
   std::vector<std::pair<std::string, std::string>> units;
   for (const MaterialValue& value : MaterialSiValues(scene.material)) {
     values.emplace_back(value.key, JsonNumber(value.value));
@@ -640,21 +641,21 @@ std::vector<std::string> DrapeCaption(const DrapeAnalysis& analysis) {
   return {line};
 }
 
-bool Requested(const Scene& scene, const std::string& what) {
+bool Requested(const Scene& scene, OutputKind kind) {
   const auto& write = scene.output.write;
-  return std::find(write.begin(), write.end(), what) != write.end();
+  return std::find(write.begin(), write.end(), OutputKindOf(kind).name) != write.end();
 }
 
-}  // namespace
+bool HasDrape(const OutputContext& context) { return context.report.drape.has_value(); }
 
-std::string TraceFileName(const std::string& solver) { return "kinetic_" + solver + ".csv"; }
+}  // namespace
 
 std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
   static const char* const mass_keys[] = {"density", "node_mass", "total_mass"};
   static const char* const mass_units[] = {"kg/m^2", "kg", "kg"};
   const int mass = static_cast<int>(material.mass_kind);
   std::vector<MaterialValue> values = {{mass_keys[mass], material.mass_value, mass_units[mass]}};
-  if (material.model == "finite_volume") {
+  if (material.model == MaterialModel::kFiniteVolume) {
     const FiniteVolumeSpec& fv = material.finite_volume;
     for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
       if (key.reported_when_zero || fv.*key.member != 0.0) {
@@ -706,52 +707,78 @@ void CheckOutputWritable(const std::string& directory) {
   }
 }
 
+const std::vector<OutputFileWriter>& OutputFileWriters() {
+  using Kind = OutputKind;
+  static const std::vector<OutputFileWriter> writers = {
+      {"summary.json",
+       {Kind::kSummary},
+       nullptr,
+       [](const OutputContext& c, std::ostream& out) {
+         out << SummaryJsonText(c.scene, c.model, c.report, c.provenance);
+       }},
+      {"nodes.csv",
+       {Kind::kNodes},
+       nullptr,
+       [](const OutputContext& c, std::ostream& out) {
+         WriteNodes(c.model, c.report.result, out);
+       }},
+      {"history.csv",
+       {Kind::kHistory},
+       nullptr,
+       [](const OutputContext& c, std::ostream& out) {
+         WriteHistory(c.report.result.summary, out);
+       }},
+      // The per-step trace of the methods that record one goes with the history.
+      {"kinetic_<method>.csv",
+       {Kind::kHistory, Kind::kKinetic},
+       [](const OutputContext& c) { return !c.report.result.summary.trace_columns.empty(); },
+       [](const OutputContext& c, std::ostream& out) { WriteTrace(c.report.result.summary, out); }},
+      {"mesh.vtk",
+       {Kind::kVtk},
+       nullptr,
+       [](const OutputContext& c, std::ostream& out) {
+         WriteVtk(c.scene, c.model, c.report.result, out);
+       }},
+      {"mesh.obj",
+       {Kind::kObj},
+       nullptr,
+       [](const OutputContext& c, std::ostream& out) { WriteObj(c.scene, c.model, out); }},
+      {"profile.csv",
+       {Kind::kProfile},
+       HasDrape,
+       [](const OutputContext& c, std::ostream& out) { WriteProfile(*c.report.drape, out); }},
+      {"drape.png",
+       {Kind::kPng},
+       [](const OutputContext& c) { return c.model.num_nodes > 0; },
+       [](const OutputContext& c, std::ostream& out) {
+         DrapeViewOptions view;
+         if (c.report.drape) view.caption = DrapeCaption(*c.report.drape);
+         DrawDrapeView(c.scene, c.model, out, view);
+       }},
+      {"shadow.png",
+       {Kind::kPng, Kind::kShadow},
+       HasDrape,
+       [](const OutputContext& c, std::ostream& out) {
+         DrawShadowView(c.scene, c.model, *c.report.drape, out);
+       }},
+  };
+  return writers;
+}
+
 void WriteOutputs(const Scene& scene, const Model& model, const SolveReport& report,
                   const std::string& directory, const Provenance& provenance) {
   ResultFolder result_folder(directory);  // the files go to its staging folder, then move in
   const fs::path& folder = result_folder.staging();
-  const RunResult& result = report.result;
-  const std::optional<DrapeAnalysis>& drape = report.drape;
-  if (Requested(scene, "summary")) {
-    WriteAtomically(folder / "summary.json", [&](std::ostream& out) {
-      out << SummaryJsonText(scene, model, report, provenance);
-    });
+  const OutputContext context{scene, model, report, provenance};
+  for (const OutputFileWriter& writer : OutputFileWriters()) {
+    const bool requested = std::any_of(writer.kinds.begin(), writer.kinds.end(),
+                                       [&](OutputKind kind) { return Requested(scene, kind); });
+    if (!requested || (writer.applies && !writer.applies(context))) continue;
+    WriteAtomically(folder / OutputFileName(writer.file, report.result.summary.solver),
+                    [&](std::ostream& out) { writer.write(context, out); });
   }
-  WriteAtomically(folder / "scene.yaml", [&](std::ostream& out) { WriteSceneYaml(scene, out); });
-  if (Requested(scene, "nodes")) {
-    WriteAtomically(folder / "nodes.csv",
-                    [&](std::ostream& out) { WriteNodes(model, result, out); });
-  }
-  if (Requested(scene, "history")) {
-    WriteAtomically(folder / "history.csv",
-                    [&](std::ostream& out) { WriteHistory(result.summary, out); });
-  }
-  // The per-step trace of the methods that record one goes with the history.
-  if ((Requested(scene, "history") || Requested(scene, "kinetic")) &&
-      !result.summary.trace_columns.empty()) {
-    WriteAtomically(folder / TraceFileName(result.summary.solver),
-                    [&](std::ostream& out) { WriteTrace(result.summary, out); });
-  }
-  if (Requested(scene, "vtk")) {
-    WriteAtomically(folder / "mesh.vtk",
-                    [&](std::ostream& out) { WriteVtk(scene, model, result, out); });
-  }
-  if (Requested(scene, "obj")) {
-    WriteAtomically(folder / "mesh.obj", [&](std::ostream& out) { WriteObj(scene, model, out); });
-  }
-  if (drape && Requested(scene, "profile")) {
-    WriteAtomically(folder / "profile.csv", [&](std::ostream& out) { WriteProfile(*drape, out); });
-  }
-  if (Requested(scene, "png") && model.num_nodes > 0) {
-    DrapeViewOptions view;
-    if (drape) view.caption = DrapeCaption(*drape);
-    WriteAtomically(folder / "drape.png",
-                    [&](std::ostream& out) { DrawDrapeView(scene, model, out, view); });
-  }
-  if (drape && (Requested(scene, "png") || Requested(scene, "shadow"))) {
-    WriteAtomically(folder / "shadow.png",
-                    [&](std::ostream& out) { DrawShadowView(scene, model, *drape, out); });
-  }
+  WriteAtomically(folder / kSolvedSceneFile,
+                  [&](std::ostream& out) { WriteSceneYaml(scene, out); });
   result_folder.Commit();
 }
 

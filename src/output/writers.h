@@ -1,9 +1,13 @@
-// Result files: summary.json, nodes.csv, history.csv, kinetic.csv, mesh.vtk, mesh.obj, profile.csv,
-// drape.png, shadow.png (the pictures drawn by src/output/render.h). Each is written to a temporary
-// name in the output folder and renamed, so no half-written file is ever left.
+// Result files: summary.json, nodes.csv, history.csv, kinetic_<method>.csv, mesh.vtk, mesh.obj,
+// profile.csv, drape.png, shadow.png (the pictures drawn by src/output/render.h), scene.yaml: the
+// files of the output kinds of src/scene/output_kinds.h, each written by its row of
+// OutputFileWriters(). Each is written to a temporary name in the output folder and renamed, so
+// no half-written file is ever left.
 #ifndef DRAPE_SRC_OUTPUT_WRITERS_H_
 #define DRAPE_SRC_OUTPUT_WRITERS_H_
 
+#include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -39,10 +43,6 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material);
 // nodes.csv as measured positions by these names (src/fit/fit_file.cc).
 const std::vector<std::string>& NodesCsvColumns();
 
-// The per-step trace of a method that records one (`kinetic` or `history` in output.write): one
-// file name per method, since each method has its own columns: kinetic_<method>.csv.
-std::string TraceFileName(const std::string& solver);
-
 // summary.json's text, as WriteOutputs writes it (the Python module's Result.summary).
 std::string SummaryJsonText(const Scene& scene, const Model& model, const SolveReport& report,
                             const Provenance& provenance = {});
@@ -51,6 +51,25 @@ std::string SummaryJsonText(const Scene& scene, const Model& model, const SolveR
 // obstacles' contact forces (0 without obstacles; NaN where the certificate could not be made).
 std::vector<double> NodeReactions(const Model& model, const RunResult& result);
 std::vector<double> NodeContactForces(const Model& model, const RunResult& result);
+
+// What a file's writer sees.
+struct OutputContext {
+  const Scene& scene;
+  const Model& model;
+  const SolveReport& report;
+  const Provenance& provenance;
+};
+
+// The writer of one file of the output kinds (src/scene/output_kinds.h): every file a kind's row
+// names has one (tests/output_kinds_test.cc).
+struct OutputFileWriter {
+  std::string file;               // as the kinds' rows name it (kMethodPlaceholder: the method)
+  std::vector<OutputKind> kinds;  // written when `output.write` names one of these
+  // Whether this run has the file (a drape coefficient, a trace); null: always.
+  std::function<bool(const OutputContext&)> applies;
+  std::function<void(const OutputContext&, std::ostream&)> write;
+};
+const std::vector<OutputFileWriter>& OutputFileWriters();
 
 // Writes what scene.output.write asks for into `directory` (created if needed), as a whole
 // (src/output/result_folder.h): files of an earlier run that this one does not write are removed.

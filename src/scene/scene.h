@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "src/scene/material_models.h"
+#include "src/scene/output_kinds.h"
+
 namespace drape {
 
 // Where a value stands in a scene file (1-based line and column) and its dotted key path.
@@ -134,8 +137,8 @@ struct SpringLineSpec {
 };
 
 struct MaterialSpec {
-  // springs | finite_volume. A finite_volume material may have springs beside it (`springs`).
-  std::string model = "springs";
+  // src/scene/material_models.h. A finite_volume material may have springs beside it (`springs`).
+  MaterialModel model = MaterialModel::kSprings;
   enum class MassKind { kDensity, kNodeMass, kTotalMass };
   MassKind mass_kind = MassKind::kDensity;
   double mass_value = 0.0;  // kg/m², kg per node, or kg
@@ -234,7 +237,7 @@ struct SolverSpec {
 
 struct OutputSpec {
   std::string directory;  // resolved: absolute or relative to the current directory
-  std::vector<std::string> write{"summary", "nodes", "history", "vtk", "obj"};
+  std::vector<std::string> write = DefaultOutputWrite(false);  // names of src/scene/output_kinds.h
   // mesh.obj's up axis: "z" (as solved) or "y": a quarter turn about x, (x, y, z) → (x, z, −y),
   // so drape's +z is the file's +y (right-handed; Blender's and three.js's default import).
   std::string obj_up = "z";

@@ -20,6 +20,8 @@
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
+#include "src/scene/material_models.h"
+#include "src/scene/output_kinds.h"
 #include "src/scene/scene_schema.h"
 #include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
@@ -30,13 +32,6 @@ namespace drape {
 namespace {
 
 namespace fs = std::filesystem;
-
-// What `output.write` may ask for; the writers decide what each produces. Add new outputs here.
-const std::vector<std::string>& OutputKinds() {
-  static const std::vector<std::string> kinds = {"summary", "nodes",   "history", "vtk",   "obj",
-                                                 "png",     "kinetic", "profile", "shadow"};
-  return kinds;
-}
 
 bool Contains(const std::vector<std::string>& list, const std::string& item) {
   return std::find(list.begin(), list.end(), item) != list.end();
@@ -553,9 +548,9 @@ MaterialSpec ReadMaterial(const YamlValue& value) {
   MaterialSpec material;
   material.where = value.where;
   if (const auto model = map.Find("model")) {
-    material.model = ReadChoice(*model, {"springs", "finite_volume"});
+    material.model = MaterialModelNamed(ReadChoice(*model, MaterialModelNames()));
   }
-  if (material.model == "springs") {
+  if (material.model == MaterialModel::kSprings) {
     ReadMass(map, &material);
     if (map.Has("finite_volume")) {
       throw InputError(map.KeyLocation("finite_volume"),
@@ -662,7 +657,7 @@ void CheckRegionKeyApplies(const YamlMap& map, const std::string& key,
     throw InputError(map.KeyLocation(key),
                      "a region's density needs the material's mass as density (kg/m²)");
   }
-  if (fv_key && material.model != "finite_volume") {
+  if (fv_key && material.model != MaterialModel::kFiniteVolume) {
     throw InputError(map.KeyLocation(key),
                      "'" + key + "' applies only when material.model is finite_volume");
   }
@@ -986,16 +981,14 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
     if (given.empty()) Fail(*directory, "expected a folder, got nothing");
     output.directory = ResolvePath(scene.directory, given);
   }
-  if (scene.drape_test) {  // a drape test's figures: the shadow and its radial profile
-    output.write.insert(output.write.end(), {"profile", "shadow"});
-  }
+  output.write = DefaultOutputWrite(scene.drape_test.has_value());
   if (const auto write = map.Find("write")) {
     if (!write->get().IsSequence()) {
       Fail(*write, "expected a list such as [summary, nodes], got " + Describe(write->get()));
     }
     output.write.clear();
     for (const auto& item : ReadList(*write)) {
-      const std::string kind = ReadChoice(item, OutputKinds());
+      const std::string kind = ReadChoice(item, OutputKindNames());
       if (Contains(output.write, kind)) Fail(item, "'" + kind + "' is listed twice");
       output.write.push_back(kind);
     }

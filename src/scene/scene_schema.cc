@@ -3,6 +3,9 @@
 #include <algorithm>
 
 #include "src/scene/material_keys.h"
+#include "src/scene/material_models.h"
+#include "src/scene/output_kinds.h"
+#include "src/scene/scene.h"
 
 namespace drape {
 namespace {
@@ -50,6 +53,31 @@ class Row {
  private:
   SchemaRow row_;
 };
+
+// "`a` \\| `b`": a choice among names, as the reference's type column writes it.
+std::string ChoiceText(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "`" : " \\| `") + name + "`";
+  return text;
+}
+
+// "`[summary, nodes]`; a drape test adds `profile` and `shadow`": the registry's defaults.
+std::string DefaultWriteText() {
+  const auto plain = DefaultOutputWrite(false);
+  const auto drape_test = DefaultOutputWrite(true);
+  std::string list;
+  for (const auto& kind : plain) list += (list.empty() ? "" : ", ") + kind;
+  std::vector<std::string> added;
+  for (const auto& kind : drape_test) {
+    if (std::find(plain.begin(), plain.end(), kind) == plain.end())
+      added.push_back("`" + kind + "`");
+  }
+  std::string text = "`[" + list + "]`";
+  for (size_t i = 0; i < added.size(); ++i) {
+    text += (i == 0 ? "; a drape test adds " : i + 1 == added.size() ? " and " : ", ") + added[i];
+  }
+  return text;
+}
 
 constexpr const char* kRequired = "**required**";
 constexpr const char* kNotWritten = "-";
@@ -307,8 +335,9 @@ std::vector<SchemaRow> Material() {
   const std::string t = "material";
   return {
       Row(t, "model")
-          .Is("`springs` \\| `finite_volume`")
-          .Default("`springs`")
+          .Is(ChoiceText(MaterialModelNames()))
+          .Default("`" + MaterialModelName(MaterialSpec().model) + "`")
+          .Doc("one of the material models below")
           .On(Base::kFiniteVolume)
           .Example({"material.model=finite_volume"}),
       Row(t, "density")
@@ -934,9 +963,8 @@ std::vector<SchemaRow> ContactSolverOutput() {
           .Example({"output.directory=/tmp/drape-schema-example"}),
       Row("output", "write")
           .Is("list, no repeats")
-          .Default("`[summary, nodes, history, vtk, obj]`")
-          .Doc("any of `summary`, `nodes`, `history`, `vtk`, `obj`, `png`, `kinetic`, "
-               "`profile`, `shadow`")
+          .Default(DefaultWriteText())
+          .Doc("any of the output kinds below")
           .Example({"output.write=[nodes, png]"}),
       Row("output", "obj_up")
           .Is("`z` or `y`")

@@ -104,7 +104,7 @@ std::vector<SolverMethod> BuildCatalogue() {
        {Positive(Real("relaxation", 1.0, 0, 2, "step relaxation omega: x += omega * step"))}},
       {"puiseux-dynamic",
        "Puiseux's implicit dynamic scheme (A0 + M/dt^2 + beta/2dt) x(n+1) = ...; stops at rest, "
-       "at t_max or on the residual; writes kinetic.csv",
+       "at t_max or on the residual",
        20000,
        600.0,
        {Positive(Real("dt", 0.01, 0, 100, "time step, s")),
@@ -112,7 +112,8 @@ std::vector<SolverMethod> BuildCatalogue() {
         Positive(Real("t_max", kInf, 0, kInf, "simulated time after which it stops, s")),
         Derived(Positive(Real("epsilon", 0, 0, kInf,
                               "at rest when the kinetic energy is below epsilon^2, J")),
-                "solver.tolerance")}},
+                "solver.tolerance")},
+       true},
       {"explicit-euler",
        "Rusinko & Swan's explicit Euler with friction: v <- (1-f)v + a dt, x <- x + v dt, and "
        "Provot's stretch-limit constraint breadth-first from the fixed nodes; stops at rest",
@@ -127,7 +128,8 @@ std::vector<SolverMethod> BuildCatalogue() {
                       "springs.stretch_limit (0: none)");
           limit.zero_means_none = true;
           return limit;
-        }()}},
+        }()},
+       true},
       {"nlopt-lbfgs",
        "NLopt LD_LBFGS on the exact energy; stops on the relative residual; iterations = energy "
        "evaluations",

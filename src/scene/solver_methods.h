@@ -35,6 +35,9 @@ struct SolverMethod {
   int max_iterations;       // the default solver.max_iterations for this method
   double time_limit;        // the default solver.time_limit for this method, s
   std::vector<MethodOption> options;
+  // Records a per-step trace (SolverSummary::trace_columns), written as TraceFileName(name) with
+  // the output kinds `history` or `kinetic` (src/scene/output_kinds.h).
+  bool records_trace = false;
 };
 
 const std::vector<SolverMethod>& SolverMethods();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "src/scene/material_keys.h"
+#include "src/scene/material_models.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/load_steps.h"
 
@@ -118,7 +119,7 @@ constexpr double kFrictionContinuationRatio = 10.0;
 // Whether the scene's fabric, or one of its regions, has one of the given frictions (a region
 // gives them under their FiniteVolumeKeys() names).
 bool HasFriction(const Scene& scene, std::initializer_list<double FiniteVolumeSpec::*> members) {
-  if (scene.material.model != "finite_volume") return false;
+  if (!MaterialModelOf(scene.material.model).friction) return false;
   for (const auto member : members) {
     if (scene.material.finite_volume.*member > 0.0) return true;
   }

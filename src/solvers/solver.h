@@ -60,7 +60,7 @@ struct SolverSummary {
   // each node at the final positions, 3 per node, N; empty if none. The certificate counts them.
   std::vector<double> constraint_forces;
   // A per-step series beyond the history (the dynamic scheme's kinetic energy, written to
-  // kinetic.csv): column names, then one row per step.
+  // kinetic_<method>.csv, src/scene/output_kinds.h): column names, then one row per step.
   std::vector<std::string> trace_columns;
   std::vector<std::vector<double>> trace;
 };

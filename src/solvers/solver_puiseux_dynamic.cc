@@ -5,7 +5,8 @@
 // with R the residual force and the matrix factorised once. The fabric starts at rest. Stops (the
 // paper's rules): relative residual r < tolerance (converged), kinetic energy w_c < ε² (at rest),
 // t > t_max; plus the iteration and time limits. The kinetic energy of the nodes, w_c = ½Σ m|v|²,
-// and of the centre of gravity, w_cg = ½ M |v_G|², with v = δ/dt, go to kinetic.csv.
+// and of the centre of gravity, w_cg = ½ M |v_G|², with v = δ/dt, go to its trace,
+// kinetic_puiseux-dynamic.csv.
 #include <cassert>
 #include <cmath>
 #include <cstdio>

@@ -11,6 +11,7 @@
 #include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/scene/drape_test.h"
+#include "src/scene/material_models.h"
 
 namespace drape {
 namespace {
@@ -282,7 +283,7 @@ void WriteDropsTable(const DropsSummary& summary, std::ostream& html) {
 
 void WriteFabric(const Scene& scene, std::ostream& html) {
   html << "<h2>The test and the fabric</h2>\n<pre>" << HtmlText(DrapeTestText(scene))
-       << "</pre>\n<table>\n<tr><th>material." << HtmlText(scene.material.model)
+       << "</pre>\n<table>\n<tr><th>material." << HtmlText(MaterialModelName(scene.material.model))
        << "</th><th>SI</th></tr>\n";
   for (const MaterialValue& value : MaterialSiValues(scene.material)) {
     html << "<tr><td>" << HtmlText(value.key) << "</td><td>" << FormatNumber(value.value, 6)
