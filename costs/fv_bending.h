@@ -56,7 +56,7 @@ struct FvBendingEdge {
   }
 
   // In two stages, binormal then residuals linear in it, for the fast derivatives
-  // (src/model/fast_hessian.h).
+  // (src/derivatives/fast_hessian.h).
   template <typename T>
   bool operator()(const T* const a, const T* const p, const T* const b, T* residual) const {
     T binormal[3];
@@ -112,9 +112,9 @@ struct FvBending {
   }
 
   // Nodes in the paper's order W, P, E, S, N. Written in stages, so that the fast derivatives
-  // (src/model/fast_hessian.h) can differentiate each stage on its own and chain them: the two
-  // binormals (3 nodes each) and unit tangents (2 nodes each), the two sections (of one binormal
-  // and the other direction's tangent), then residuals linear in the sections.
+  // (src/derivatives/fast_hessian.h) can differentiate each stage on its own and chain them: the
+  // two binormals (3 nodes each) and unit tangents (2 nodes each), the two sections (of one
+  // binormal and the other direction's tangent), then residuals linear in the sections.
   template <typename T>
   bool operator()(const T* const w, const T* const p, const T* const e, const T* const s,
                   const T* const n, T* residual) const {

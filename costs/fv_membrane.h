@@ -38,8 +38,8 @@ struct FvMembrane {
   }
 
   // Nodes P, A (warp neighbour), B (weft neighbour). Written in two stages, so that the fast
-  // derivatives (src/model/fast_hessian.h) can chain them: the arms' Gram entries (quadratic in the
-  // coordinates), then the residuals as functions of those three numbers alone.
+  // derivatives (src/derivatives/fast_hessian.h) can chain them: the arms' Gram entries (quadratic
+  // in the coordinates), then the residuals as functions of those three numbers alone.
   template <typename T>
   bool operator()(const T* const p, const T* const a, const T* const b, T* residual) const {
     T gram[3];

@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "src/analysis/mesh_rule.h"
-#include "src/analysis/solve_report.h"
 #include "src/cli/cli.h"
 #include "src/fit/fit_file.h"
 #include "src/fit/fit_methods.h"
@@ -27,12 +26,13 @@
 #include "src/model/model.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/run/solve_report.h"
+#include "src/run/state_text.h"
 #include "src/scene/material_models.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solver.h"
-#include "src/solvers/state_text.h"
 #include "src/sweep/sweep.h"
 #include "src/sweep/sweep_file.h"
 

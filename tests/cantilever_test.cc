@@ -24,7 +24,7 @@
 
 #include "src/model/finite_volume.h"
 #include "src/model/mesh.h"
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 #include "tests/rk4.h"
 #include "tests/test_scenes.h"
 

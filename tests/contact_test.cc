@@ -13,8 +13,8 @@
 
 #include "src/model/finite_volume.h"
 #include "src/model/mesh.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 #include "tests/hand_built_models.h"
 
 namespace drape {

@@ -11,7 +11,7 @@
 #include "costs/constant_force_potential.h"
 #include "src/model/equilibrium.h"
 #include "src/model/mesh.h"
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

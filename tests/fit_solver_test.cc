@@ -272,7 +272,7 @@ TEST(FitSolverTest, RecoversBendingRigidityFromABendingLength) {
 // The bending friction (KES 2HB) and the rigidity of the warp: the shipped example's drape
 // coefficient and bending length (made at D_warp = 1e-4 N·m, H = 1e-3 N) determine both; the
 // drape coefficient alone leaves a curve of (D, H) pairs, and the fit says so. The fits start from
-// the flat state, through the friction's kink (src/solvers/run.h, RunFrictionContinuation).
+// the flat state, through the friction's kink (src/run/run.h, RunFrictionContinuation).
 TEST(FitSolverTest, SeparatesFrictionFromRigidityWithADrapeCoefficientAndABendingLength) {
   FitSpec spec = LoadFitFile(SourcePath("configs/fit/fit_friction.yaml"));
   ASSERT_EQ(spec.parameters.size(), 2u);

@@ -16,8 +16,8 @@
 #include "src/fit/fit_file.h"
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape::testing {

@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "src/model/model.h"
+#include "src/run/run.h"
 #include "src/scene/fabric_parameters.h"
-#include "src/solvers/run.h"
 #include "tests/rk4.h"
 #include "tests/test_scenes.h"
 

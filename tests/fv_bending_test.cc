@@ -80,7 +80,7 @@ TEST(FvBendingEdge, DerivativesMatchDifferencesAtRandomAndFlatStates) {
   testing::ExpectZeroForce(*term, {-0.02, 0, 0, 0, 0, 0, 0.03, 0, 0}, 1e-15);
 }
 
-// The staged projection (src/model/fast_hessian.h) at states where the exact Hessian is
+// The staged projection (src/derivatives/fast_hessian.h) at states where the exact Hessian is
 // indefinite: semidefinite, Ceres's Jᵀ J for the internal volume and above H for the edge one,
 // H₊ = H where H is semidefinite (the shared check); and it does change something at some of
 // these states (the check is not vacuous) but not at rest.

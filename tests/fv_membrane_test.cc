@@ -52,7 +52,7 @@ TEST(FvMembrane, DerivativesMatchDifferencesAtFlatRestState) {
   }
 }
 
-// The staged projection over the arms' Gram entries (src/model/fast_hessian.h): semidefinite,
+// The staged projection over the arms' Gram entries (src/derivatives/fast_hessian.h): semidefinite,
 // above H, H₊ = H where H is semidefinite (the shared check). Compressed arms make H indefinite
 // (negative sideways curvature): then H₊ ≠ H; at rest and stretched, H₊ = H.
 TEST(FvMembrane, StagedProjectionIsSemidefiniteAboveTheHessianAndExactWhereItCan) {

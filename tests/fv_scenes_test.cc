@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "src/analysis/drape_analysis.h"
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

@@ -25,9 +25,9 @@
 #include <vector>
 
 #include "src/model/model.h"
+#include "src/run/run.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 #include "tests/term_checks.h"
 #include "tests/test_scenes.h"
 

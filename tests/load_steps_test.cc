@@ -1,9 +1,9 @@
-// The incremental friction's load path (src/solvers/load_steps.h): the loads it scales, when it
+// The incremental friction's load path (src/run/load_steps.h): the loads it scales, when it
 // applies, that one step is the monotone form, and that on a load path along which every
 // curvature grows (a heavy cantilever under its growing weight) its steps reach the monotone
 // form's equilibrium as the smoothing δ → 0 (the deformation theory and the incremental one agree
 // under monotone loading).
-#include "src/solvers/load_steps.h"
+#include "src/run/load_steps.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -13,8 +13,8 @@
 #include <fstream>
 #include <string>
 
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

@@ -6,7 +6,7 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/model/stretch_limit.h"
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

@@ -15,10 +15,10 @@
 #include <sstream>
 #include <string>
 
-#include "src/analysis/solve_report.h"
 #include "src/model/model.h"
 #include "src/output/result_folder.h"
 #include "src/output/writers.h"
+#include "src/run/solve_report.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 #include "tests/test_scenes.h"

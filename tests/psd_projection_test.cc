@@ -1,6 +1,6 @@
-// Making small symmetric matrices positive semidefinite (src/model/psd_projection.h): the result
-// is the eigen-decomposition's, with either filter, and a semidefinite matrix is left alone.
-#include "src/model/psd_projection.h"
+// Making small symmetric matrices positive semidefinite (src/derivatives/psd_projection.h): the
+// result is the eigen-decomposition's, with either filter, and a semidefinite matrix is left alone.
+#include "src/derivatives/psd_projection.h"
 
 #include <gtest/gtest.h>
 

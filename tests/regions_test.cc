@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "src/model/mesh.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

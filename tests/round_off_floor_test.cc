@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "src/numerics/sparse_hessian.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

@@ -1,6 +1,6 @@
 // RunSolve: the solver's claim is confirmed by the certificate (residual, soundness, balance), and
 // a run whose state stops being finite saves its last finite iterate.
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
-// Products of small fixed-size matrices (src/model/small_product.h) against Eigen's own products.
-#include "src/model/small_product.h"
+// Products of small fixed-size matrices (src/derivatives/small_product.h) against Eigen's own
+// products.
+#include "src/derivatives/small_product.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "src/model/stretch_limit.h"
+#include "src/run/run.h"
 #include "src/scene/solver_methods.h"
-#include "src/solvers/run.h"
 #include "tests/test_scenes.h"
 
 namespace drape {

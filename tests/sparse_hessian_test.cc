@@ -106,8 +106,9 @@ TEST(FreeHessian, ProjectedHessianIsPositiveSemidefiniteWhereTheTrueOneIsNot) {
 
 // Each term's stand-in, summed over the free coordinates: what FreeHessian's projection must give,
 // whatever shortcut it takes (the 3×3 block of a spring). A term with a staged projection gives its
-// own (Term::EnergyHessianProjected, src/model/fast_hessian.h); any other its Hessian projected by
-// a full eigen-decomposition (negative eigenvalues replaced by their magnitudes, or by zero).
+// own (Term::EnergyHessianProjected, src/derivatives/fast_hessian.h); any other its Hessian
+// projected by a full eigen-decomposition (negative eigenvalues replaced by their magnitudes, or by
+// zero).
 Eigen::MatrixXd ProjectedTermByTerm(const Model& model, const DofMap& dofs,
                                     EigenvalueFilter filter) {
   Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(dofs.num_free(), dofs.num_free());
@@ -157,8 +158,8 @@ TEST(FreeHessian, ProjectsEachSpringAsItsFullEigenDecompositionWould) {
 }
 
 // A shaken finite-volume drape: its terms build their stand-ins from their stages
-// (src/model/fast_hessian.h, checked term by term in tests/term_checks.h); the assembled H₊ is
-// their sum, and semidefinite where the true Hessian is not.
+// (src/derivatives/fast_hessian.h, checked term by term in tests/term_checks.h); the assembled H₊
+// is their sum, and semidefinite where the true Hessian is not.
 TEST(FreeHessian, FiniteVolumeStandInIsTheSumOfTheTermsAndSemidefinite) {
   const Model model = ShakenDrape("0.03", 5, 0.008);
   for (EigenvalueFilter filter : {EigenvalueFilter::kClamp, EigenvalueFilter::kAbsolute}) {

@@ -1,7 +1,7 @@
-// The closed-form derivatives of the bending stages (src/model/stage_derivatives.h) against
-// second-order automatic differentiation (src/model/second_order.h) of the functors' own stage
-// functions (costs/fv_bending.h), at random states, at straight (flat) states and near them.
-#include "src/model/stage_derivatives.h"
+// The closed-form derivatives of the bending stages (src/derivatives/stage_derivatives.h) against
+// second-order automatic differentiation (src/derivatives/second_order.h) of the functors' own
+// stage functions (costs/fv_bending.h), at random states, at straight (flat) states and near them.
+#include "src/derivatives/stage_derivatives.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <type_traits>
 
 #include "costs/fv_bending.h"
-#include "src/model/second_order.h"
+#include "src/derivatives/second_order.h"
 
 namespace drape::internal {
 namespace {

@@ -2,7 +2,7 @@
 // that stopped short of the tolerance (an iteration or time limit) is not an equilibrium, whatever
 // its Hessian: it used to be called a "stable minimum" there. Nor is a state with the fabric
 // through a support disk.
-#include "src/solvers/state_text.h"
+#include "src/run/state_text.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "src/model/stretch_limit.h"
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 #include "tests/term_checks.h"
 #include "tests/test_scenes.h"
 

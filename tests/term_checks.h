@@ -20,17 +20,17 @@ inline int NodesSpanned(const Term& term) {
 }
 
 // The term's energy, gradient and Hessian (by whatever path EnergyHessian takes: the staged chain
-// rule of src/model/fast_hessian.h for the finite-volume bending) equal those of nested Jets over
-// the whole functor (ReferenceHessian), to `tolerance` relative to the largest entry.
+// rule of src/derivatives/fast_hessian.h for the finite-volume bending) equal those of nested Jets
+// over the whole functor (ReferenceHessian), to `tolerance` relative to the largest entry.
 void ExpectHessianMatchesReference(const Term& term, const std::vector<double>& positions,
                                    double tolerance = 1e-10);
 
 // Jᵀ J (row-major, over the term's coordinates) for the Jacobian J of the term's residuals, as
 // Ceres differentiates them for its own solvers (Term::NewCostFunction): the Gauss–Newton part of
-// E = ½|r|², by a path that shares nothing with src/model/fast_hessian.h.
+// E = ½|r|², by a path that shares nothing with src/derivatives/fast_hessian.h.
 Eigen::MatrixXd GaussNewtonByCeres(const Term& term, const std::vector<double>& positions);
 
-// A term's staged projection (Term::EnergyHessianProjected, src/model/fast_hessian.h), with
+// A term's staged projection (Term::EnergyHessianProjected, src/derivatives/fast_hessian.h), with
 // `filter`: the energy, gradient and Hessian are EnergyHessian's, bit for bit; the stand-in H₊ is
 // symmetric, positive semidefinite, keeps the translations in its null space, and equals H exactly
 // where H is semidefinite. Where H is not: H₊ is never below H (H₊ − H ⪰ 0) for

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "src/model/model.h"
+#include "src/run/run.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 #include "tests/test_paths.h"
 
 namespace drape::testing {

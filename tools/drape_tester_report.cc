@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "src/analysis/drape_analysis.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 
 namespace drape {
 namespace {

@@ -25,8 +25,8 @@
 #include "src/fit/fit_problem.h"
 #include "src/fit/fit_solver.h"
 #include "src/model/model.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 
 namespace drape {
 namespace {

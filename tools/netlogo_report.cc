@@ -18,8 +18,8 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/model/stretch_limit.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 
 namespace drape {
 namespace {

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "src/model/model.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
-#include "src/solvers/run.h"
 
 namespace drape {
 namespace {

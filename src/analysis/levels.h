@@ -15,14 +15,12 @@
 #ifndef DRAPE_SRC_ANALYSIS_LEVELS_H_
 #define DRAPE_SRC_ANALYSIS_LEVELS_H_
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "src/model/model.h"
 #include "src/scene/scene.h"
-#include "src/solvers/run.h"
 
 namespace drape {
 
@@ -104,17 +102,12 @@ std::optional<DrapeErrorBar> DrapeErrorOf(const std::vector<LevelRecord>& levels
 Extrapolation Extrapolate(const std::string& quantity, const std::vector<double>& spacing,
                           const std::vector<double>& values);
 
-// How each level after the coarsest starts: from the coarser level's answer interpolated (grid
-// sequencing: the coarse level chooses the folds, which the finer keep), or from the flat start,
-// like a solve on that mesh alone (the finest level's answer is the plain solve's, bit for bit;
-// the coarser levels only measure how the answer changes with the spacing).
-enum class LevelStart { kFromCoarser, kFlat };
+// The spacing a level reports: the lattice step along the warp (along the weft where the warp
+// has a single node), m.
+double LevelSpacing(const MeshSpec& mesh);
 
-// Solves scene.solver.levels levels; the finest is `model` (built from `scene`), whose RunResult
-// is returned. `report` gets the per-level figures, the extrapolations and the error bar.
-RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
-                    const std::function<bool(const IterationRecord&)>& on_iteration,
-                    LevelsReport* report, LevelStart start = LevelStart::kFromCoarser);
+// The extrapolations and the drape coefficient's error bar of `report->levels` (coarsest first).
+void AnalyseLevels(LevelsReport* report);
 
 }  // namespace drape
 

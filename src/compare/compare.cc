@@ -14,12 +14,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/analysis/solve_report.h"
 #include "src/compare/compare_report.h"
 #include "src/model/equilibrium.h"
+#include "src/run/run.h"
+#include "src/run/solve_report.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
-#include "src/solvers/run.h"
 #include "src/solvers/solver.h"
 
 namespace drape {

@@ -19,11 +19,11 @@
 #include "src/model/model.h"
 #include "src/output/json.h"
 #include "src/output/writers.h"
+#include "src/run/load_steps.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_models.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
-#include "src/solvers/load_steps.h"
 
 namespace drape {
 namespace {

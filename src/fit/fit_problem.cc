@@ -12,10 +12,10 @@
 #include "src/output/json.h"
 #include "src/parallel/byte_codec.h"
 #include "src/parallel/shared_work.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
-#include "src/solvers/run.h"
 #include "src/solvers/solver.h"
 
 namespace drape {

@@ -1,7 +1,7 @@
 // One energy term of the model: a cost functor from costs/ bound to the nodes it acts on.
 // Energy, gradient and Hessian are all derived from the functor by automatic differentiation
 // (ceres::Jet, nested for the Hessian; for the finite-volume functors, nested Jets on each of the
-// functor's stages chained together, src/model/fast_hessian.h), so the physics is written
+// functor's stages chained together, src/derivatives/fast_hessian.h), so the physics is written
 // once, in costs/.
 //
 // A functor declares
@@ -32,8 +32,8 @@
 #include <vector>
 
 #include "costs/energy_form.h"
-#include "src/model/fast_hessian.h"
-#include "src/model/psd_projection.h"
+#include "src/derivatives/fast_hessian.h"
+#include "src/derivatives/psd_projection.h"
 
 namespace drape {
 
@@ -55,9 +55,9 @@ class Term {
   virtual bool EnergyHessian(const double* positions, double* energy, double* gradient,
                              double* hessian) const = 0;
   // Whether EnergyHessianProjected is available: the term builds a semidefinite stand-in for its
-  // Hessian from its functor's stages (src/model/fast_hessian.h, "Projection").
+  // Hessian from its functor's stages (src/derivatives/fast_hessian.h, "Projection").
   virtual bool HasStagedProjection() const { return false; }
-  // What that stand-in is where the Hessian is indefinite (src/model/fast_hessian.h).
+  // What that stand-in is where the Hessian is indefinite (src/derivatives/fast_hessian.h).
   virtual StandIn StagedStandIn() const { return StandIn::kAboveHessian; }
   // EnergyHessian, and in `projected` (same layout) that semidefinite stand-in, with `*changed`
   // whether it differs from `hessian`. False if not evaluable, or if the term has none.
@@ -234,7 +234,7 @@ class AutoDiffTerm : public Term {
     return std::isfinite(e.a) && e.v.allFinite();
   }
 
-  // By the functor's staged chain rule where it has one (src/model/fast_hessian.h), else by
+  // By the functor's staged chain rule where it has one (src/derivatives/fast_hessian.h), else by
   // nested Jets.
   bool EnergyHessian(const double* positions, double* energy, double* gradient,
                      double* hessian) const override {

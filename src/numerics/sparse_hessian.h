@@ -8,8 +8,8 @@
 // same pattern: the true Hessian, and the Hessian whose every term is first projected to
 // positive semidefinite (negative eigenvalues of the small local matrix set to zero, or to their
 // magnitude: EigenvalueFilter); a term with a staged projection (the finite-volume terms:
-// Term::EnergyHessianProjected, src/model/fast_hessian.h) builds its semidefinite stand-in from
-// its functor's stages instead, unchanged where its Hessian is semidefinite. The terms' local
+// Term::EnergyHessianProjected, src/derivatives/fast_hessian.h) builds its semidefinite stand-in
+// from its functor's stages instead, unchanged where its Hessian is semidefinite. The terms' local
 // derivatives and projections are computed on several threads (std::thread: drape's OpenMP is
 // switched off for CHOLMOD's sake) and summed by one thread in term order, so the values do not
 // depend on the thread count.
@@ -24,9 +24,9 @@
 
 #include <vector>
 
+#include "src/derivatives/psd_projection.h"
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
-#include "src/model/psd_projection.h"
 
 namespace drape {
 

@@ -29,9 +29,9 @@
 #include "src/output/result_folder.h"
 #include "src/output/scene_yaml.h"
 #include "src/output/version.h"
+#include "src/run/state_text.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
-#include "src/solvers/state_text.h"
 
 namespace drape {
 

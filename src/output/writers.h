@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "src/analysis/solve_report.h"
 #include "src/model/model.h"
+#include "src/run/solve_report.h"
 #include "src/scene/scene.h"
 
 namespace drape {

@@ -226,7 +226,7 @@ struct SolverSpec {
   std::optional<double> time_limit;  // s
   // Nested lattices to solve on (grid and circle meshes): 1 = the scene's mesh only; N > 1 solves
   // on spacings 2^(N-1) h, ..., 2h, h, each started from the previous one, and extrapolates.
-  // 0: not given; LevelsToSolve (src/analysis/solve_report.h) decides.
+  // 0: not given; LevelsToSolve (src/run/solve_report.h) decides.
   int levels = 0;
   Location levels_where;
   // Method-specific keys: solver.<method>.<key>: number (checked against the catalogue of

@@ -5,7 +5,7 @@
 //
 // Precision: a line search comparing energies stalls around a relative residual of 1e-7, where
 // energy changes fall below the roundoff of the total energy. When Ceres stops for that reason,
-// the solve restarts from there with the energy measured locally (src/model/local_energy.h),
+// the solve restarts from there with the energy measured locally (src/derivatives/local_energy.h),
 // re-anchored at every iterate.
 #include <ceres/first_order_function.h>
 #include <ceres/gradient_problem.h>
@@ -16,9 +16,9 @@
 #include <memory>
 #include <vector>
 
+#include "src/derivatives/local_energy.h"
 #include "src/model/contact.h"
 #include "src/model/equilibrium.h"
-#include "src/model/local_energy.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 

@@ -2,14 +2,15 @@
 //
 // Each iteration assembles the energy, its gradient and its Hessian from the terms' nested-Jet
 // derivatives (FreeHessian), in two versions: the true Hessian H and H₊, whose every term is made
-// positive semidefinite (the finite-volume terms by their own stand-ins, src/model/fast_hessian.h:
-// the bending term's is its Gauss–Newton part). Far from equilibrium (relative residual above
-// 1e-4) H₊ replaces a term's negative eigenvalues with their magnitudes: clamping them to zero, the
-// usual projection, leaves a compressed spring no sideways curvature, and the steps then crawl
-// through the slack, wrinkled parts of a hanging sheet (docs/benchmarks.md). Near equilibrium it
-// clamps them: there the energy is flat to rounding, steps are judged by the residual force alone,
-// and the magnitudes can hold the iterates at a saddle (configs/fit/drape_fv.yaml with
-// D_warp = 4e-5 stalled at a residual of 5e-7 with magnitudes throughout).
+// positive semidefinite (the finite-volume terms by their own stand-ins,
+// src/derivatives/fast_hessian.h: the bending term's is its Gauss–Newton part). Far from
+// equilibrium (relative residual above 1e-4) H₊ replaces a term's negative eigenvalues with their
+// magnitudes: clamping them to zero, the usual projection, leaves a compressed spring no sideways
+// curvature, and the steps then crawl through the slack, wrinkled parts of a hanging sheet
+// (docs/benchmarks.md). Near equilibrium it clamps them: there the energy is flat to rounding,
+// steps are judged by the residual force alone, and the magnitudes can hold the iterates at a
+// saddle (configs/fit/drape_fv.yaml with D_warp = 4e-5 stalled at a residual of 5e-7 with
+// magnitudes throughout).
 //
 // The step p solves (A + λ D) p = −g with CHOLMOD (symbolic analysis once), where
 //   A = H when H + λD factorises (only H gives quadratic convergence), else H₊ (H₊ ≠ H where a

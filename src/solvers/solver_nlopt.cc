@@ -31,9 +31,9 @@
 #include <string>
 #include <vector>
 
+#include "src/derivatives/local_energy.h"
 #include "src/model/contact.h"
 #include "src/model/equilibrium.h"
-#include "src/model/local_energy.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 
@@ -74,7 +74,7 @@ struct Objective {
   double best_value = std::numeric_limits<double>::infinity();
   double best_residual = std::numeric_limits<double>::infinity();
   std::vector<double> best_gradient;
-  LocalEnergy local;  // the objective when local_energy is set (src/model/local_energy.h)
+  LocalEnergy local;  // the objective when local_energy is set (src/derivatives/local_energy.h)
 
   double Evaluate(const std::vector<double>& free, std::vector<double>& free_gradient) {
     if (monitor_stopped || stalled) return best_value;  // NLopt may evaluate once more

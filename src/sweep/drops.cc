@@ -9,7 +9,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "src/analysis/solve_report.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
 #include "src/output/csv_field.h"
@@ -18,9 +17,10 @@
 #include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/parallel/task_farm.h"
+#include "src/run/solve_report.h"
+#include "src/run/state_text.h"
 #include "src/scene/drape_test.h"
 #include "src/solvers/solver.h"
-#include "src/solvers/state_text.h"
 #include "src/sweep/drops_report.h"
 #include "src/sweep/sweep.h"
 

@@ -10,7 +10,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "src/analysis/solve_report.h"
 #include "src/model/model.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
@@ -19,9 +18,10 @@
 #include "src/output/result_folder.h"
 #include "src/output/writers.h"
 #include "src/parallel/task_farm.h"
+#include "src/run/solve_report.h"
+#include "src/run/state_text.h"
 #include "src/scene/scene_loader.h"
 #include "src/solvers/solver.h"
-#include "src/solvers/state_text.h"
 #include "src/sweep/sweep_report.h"
 
 namespace drape {

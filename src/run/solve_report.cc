@@ -1,4 +1,4 @@
-#include "src/analysis/solve_report.h"
+#include "src/run/solve_report.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // A number that carries its gradient and Hessian over N variables (forward-mode automatic
-// differentiation to second order), for the small stages of src/model/fast_hessian.h.
+// differentiation to second order), for the small stages of src/derivatives/fast_hessian.h.
 //
 // It gives what nested Jets (ceres::Jet<ceres::Jet<double, N>, N>) give — value, exact gradient,
 // exact Hessian — with the Hessian stored once (its upper triangle, N(N+1)/2 numbers, where a
@@ -9,8 +9,8 @@
 // a ∇²b + b ∇²a + ∇a ∇bᵀ + ∇b ∇aᵀ). Only what the staged functors use is defined: + − × ÷ with
 // numbers and each other, comparisons with numbers (by value), sqrt, asin. The stages' results are
 // checked against nested Jets over each whole functor (tests/term_checks.h).
-#ifndef DRAPE_SRC_MODEL_SECOND_ORDER_H_
-#define DRAPE_SRC_MODEL_SECOND_ORDER_H_
+#ifndef DRAPE_SRC_DERIVATIVES_SECOND_ORDER_H_
+#define DRAPE_SRC_DERIVATIVES_SECOND_ORDER_H_
 
 #include <cmath>
 
@@ -126,4 +126,4 @@ struct SecondOrder {
 
 }  // namespace drape::internal
 
-#endif  // DRAPE_SRC_MODEL_SECOND_ORDER_H_
+#endif  // DRAPE_SRC_DERIVATIVES_SECOND_ORDER_H_

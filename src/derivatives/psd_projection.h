@@ -1,13 +1,13 @@
 // Making a small symmetric matrix positive semidefinite: shared by the staged projection of the
-// finite-volume terms (src/model/fast_hessian.h) and the per-term projection of the assembled
+// finite-volume terms (src/derivatives/fast_hessian.h) and the per-term projection of the assembled
 // Hessian (src/numerics/sparse_hessian.cc).
-#ifndef DRAPE_SRC_MODEL_PSD_PROJECTION_H_
-#define DRAPE_SRC_MODEL_PSD_PROJECTION_H_
+#ifndef DRAPE_SRC_DERIVATIVES_PSD_PROJECTION_H_
+#define DRAPE_SRC_DERIVATIVES_PSD_PROJECTION_H_
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
-#include "src/model/small_product.h"
+#include "src/derivatives/small_product.h"
 
 namespace drape {
 
@@ -65,4 +65,4 @@ bool IsSemidefinite(const Matrix& matrix) {
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_MODEL_PSD_PROJECTION_H_
+#endif  // DRAPE_SRC_DERIVATIVES_PSD_PROJECTION_H_

@@ -1,6 +1,6 @@
 // One equilibrium run: solve a model with a named method, then certify the result afresh.
-#ifndef DRAPE_SRC_SOLVERS_RUN_H_
-#define DRAPE_SRC_SOLVERS_RUN_H_
+#ifndef DRAPE_SRC_RUN_RUN_H_
+#define DRAPE_SRC_RUN_RUN_H_
 
 #include <functional>
 #include <string>
@@ -28,7 +28,7 @@ struct RunResult {
   double residual_floor = 0.0;
   bool at_floor = false;
   // The solver's state stopped being finite: what is saved is its last finite iterate, not
-  // converged, and the termination says where (src/solvers/run.cc, ReturnToLastFinite).
+  // converged, and the termination says where (src/run/run.cc, ReturnToLastFinite).
   bool non_finite = false;
   // Converged, but not to a stable minimum (a saddle: stability.min_eigenvalue < 0).
   bool Saddle() const { return converged && stability.computed && !stability.stable; }
@@ -62,4 +62,4 @@ SolverSummary RunFrictionContinuation(
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_SOLVERS_RUN_H_
+#endif  // DRAPE_SRC_RUN_RUN_H_

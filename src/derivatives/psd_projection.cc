@@ -1,6 +1,6 @@
 // ProjectSymmetric's definition, instantiated once for every size drape projects (the header says
 // why here and not in each unit that calls it).
-#include "src/model/psd_projection.h"
+#include "src/derivatives/psd_projection.h"
 
 #include <Eigen/Eigenvalues>
 

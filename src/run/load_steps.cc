@@ -1,10 +1,10 @@
-#include "src/solvers/load_steps.h"
+#include "src/run/load_steps.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 
 namespace drape {
 namespace {

@@ -1,19 +1,19 @@
 // A solve and what drape concludes from it, each computed once, for every command that reports
 // it (drape solve's files and stdout line, drape compare): the solver's result with its
-// certificate, stability and contact report (src/solvers/run.h), the drape analysis of a scene
+// certificate, stability and contact report (src/run/run.h), the drape analysis of a scene
 // with a drape coefficient, and the per-level figures of a `solver.levels` run.
-#ifndef DRAPE_SRC_ANALYSIS_SOLVE_REPORT_H_
-#define DRAPE_SRC_ANALYSIS_SOLVE_REPORT_H_
+#ifndef DRAPE_SRC_RUN_SOLVE_REPORT_H_
+#define DRAPE_SRC_RUN_SOLVE_REPORT_H_
 
 #include <functional>
 #include <optional>
 #include <string>
 
 #include "src/analysis/drape_analysis.h"
-#include "src/analysis/levels.h"
 #include "src/model/model.h"
+#include "src/run/run.h"
+#include "src/run/run_levels.h"
 #include "src/scene/scene.h"
-#include "src/solvers/run.h"
 
 namespace drape {
 
@@ -48,4 +48,4 @@ double ReportedDrapeCoefficient(const SolveReport& report);
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_ANALYSIS_SOLVE_REPORT_H_
+#endif  // DRAPE_SRC_RUN_SOLVE_REPORT_H_

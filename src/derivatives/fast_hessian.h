@@ -49,10 +49,10 @@
 // header is read by nearly every file (through term.h), and their second-order numbers, were they
 // inline here, would be instantiated again in each (about a minute per file in the sanitized
 // build).
-#ifndef DRAPE_SRC_MODEL_FAST_HESSIAN_H_
-#define DRAPE_SRC_MODEL_FAST_HESSIAN_H_
+#ifndef DRAPE_SRC_DERIVATIVES_FAST_HESSIAN_H_
+#define DRAPE_SRC_DERIVATIVES_FAST_HESSIAN_H_
 
-#include "src/model/psd_projection.h"
+#include "src/derivatives/psd_projection.h"
 
 namespace drape {
 
@@ -111,4 +111,4 @@ struct FastHessian<FvMembrane> {
 }  // namespace internal
 }  // namespace drape
 
-#endif  // DRAPE_SRC_MODEL_FAST_HESSIAN_H_
+#endif  // DRAPE_SRC_DERIVATIVES_FAST_HESSIAN_H_

@@ -5,8 +5,8 @@
 // energy (1e-16 |E| in double, 1e-19 |E| even in long double), so line searches that compare
 // energies stall around a relative residual of 1e-7. Differences of this local energy carry the
 // roundoff of the step instead. Used by the L-BFGS-type solvers (ceres-lbfgs, nlopt-*).
-#ifndef DRAPE_SRC_MODEL_LOCAL_ENERGY_H_
-#define DRAPE_SRC_MODEL_LOCAL_ENERGY_H_
+#ifndef DRAPE_SRC_DERIVATIVES_LOCAL_ENERGY_H_
+#define DRAPE_SRC_DERIVATIVES_LOCAL_ENERGY_H_
 
 #include <cassert>
 #include <vector>
@@ -43,4 +43,4 @@ class LocalEnergy {
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_MODEL_LOCAL_ENERGY_H_
+#endif  // DRAPE_SRC_DERIVATIVES_LOCAL_ENERGY_H_

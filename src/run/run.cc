@@ -1,4 +1,4 @@
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 
 #include <algorithm>
 #include <cassert>
@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "src/run/load_steps.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
 #include "src/scene/solver_methods.h"
-#include "src/solvers/load_steps.h"
 
 namespace drape {
 namespace {

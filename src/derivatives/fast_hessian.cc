@@ -1,6 +1,6 @@
 // The finite-volume functors' fast exact derivatives, by their stages (fast_hessian.h explains
 // the method and the projection).
-#include "src/model/fast_hessian.h"
+#include "src/derivatives/fast_hessian.h"
 
 #include <ceres/jet.h>
 
@@ -9,10 +9,10 @@
 
 #include "costs/fv_bending.h"
 #include "costs/fv_membrane.h"
-#include "src/model/psd_projection.h"
-#include "src/model/second_order.h"
-#include "src/model/small_product.h"
-#include "src/model/stage_derivatives.h"
+#include "src/derivatives/psd_projection.h"
+#include "src/derivatives/second_order.h"
+#include "src/derivatives/small_product.h"
+#include "src/derivatives/stage_derivatives.h"
 
 namespace drape {
 namespace internal {

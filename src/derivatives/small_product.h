@@ -1,6 +1,6 @@
 // Products of small fixed-size matrices, coefficient by coefficient.
-#ifndef DRAPE_SRC_MODEL_SMALL_PRODUCT_H_
-#define DRAPE_SRC_MODEL_SMALL_PRODUCT_H_
+#ifndef DRAPE_SRC_DERIVATIVES_SMALL_PRODUCT_H_
+#define DRAPE_SRC_DERIVATIVES_SMALL_PRODUCT_H_
 
 #include <Eigen/Core>
 
@@ -38,4 +38,4 @@ auto SymmetricCongruence(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_MODEL_SMALL_PRODUCT_H_
+#endif  // DRAPE_SRC_DERIVATIVES_SMALL_PRODUCT_H_

@@ -1,7 +1,7 @@
 // Closed-form first and second derivatives of the bending functors' small stages
 // (costs/fv_bending.h): the curvature binormal (3 nodes), the unit tangent (2 nodes) and
-// FvBending's section (a binormal and a tangent). src/model/fast_hessian.h chains them into each
-// term's gradient and Hessian.
+// FvBending's section (a binormal and a tangent). src/derivatives/fast_hessian.h chains them into
+// each term's gradient and Hessian.
 //
 // Each stage's value is the functor's own stage function evaluated in doubles; only its
 // derivatives are written here, as the formulas below. Every derivative is checked against
@@ -14,8 +14,8 @@
 //
 // A weighted Hessian Σ_i w_i ∇²q_i (the stage's outputs q weighted by w) is what the chain rule
 // needs (fast_hessian.h), so each stage gives that and never its outputs' Hessians one by one.
-#ifndef DRAPE_SRC_MODEL_STAGE_DERIVATIVES_H_
-#define DRAPE_SRC_MODEL_STAGE_DERIVATIVES_H_
+#ifndef DRAPE_SRC_DERIVATIVES_STAGE_DERIVATIVES_H_
+#define DRAPE_SRC_DERIVATIVES_STAGE_DERIVATIVES_H_
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -157,4 +157,4 @@ class SectionDerivatives {
 
 }  // namespace drape::internal
 
-#endif  // DRAPE_SRC_MODEL_STAGE_DERIVATIVES_H_
+#endif  // DRAPE_SRC_DERIVATIVES_STAGE_DERIVATIVES_H_

@@ -1,11 +1,11 @@
 // What the certificate says of a run's final state, in words: drape solve's result line and
 // drape sweep's `certificate` column.
-#ifndef DRAPE_SRC_SOLVERS_STATE_TEXT_H_
-#define DRAPE_SRC_SOLVERS_STATE_TEXT_H_
+#ifndef DRAPE_SRC_RUN_STATE_TEXT_H_
+#define DRAPE_SRC_RUN_STATE_TEXT_H_
 
 #include <string>
 
-#include "src/solvers/run.h"
+#include "src/run/run.h"
 
 namespace drape {
 
@@ -19,4 +19,4 @@ std::string StateText(const RunResult& result);
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_SOLVERS_STATE_TEXT_H_
+#endif  // DRAPE_SRC_RUN_STATE_TEXT_H_

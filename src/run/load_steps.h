@@ -1,8 +1,8 @@
 // The incremental form of the fabric's frictions (FiniteVolumeSpec::friction_load_steps,
 // costs/fv_bending_friction_step.h): the loads ramped in N equal steps from the flat state, each
 // step a minimisation whose frictions' kinks sit at the previous step's state.
-#ifndef DRAPE_SRC_SOLVERS_LOAD_STEPS_H_
-#define DRAPE_SRC_SOLVERS_LOAD_STEPS_H_
+#ifndef DRAPE_SRC_RUN_LOAD_STEPS_H_
+#define DRAPE_SRC_RUN_LOAD_STEPS_H_
 
 #include <functional>
 #include <string>
@@ -45,4 +45,4 @@ LoadPathSummary RunLoadPath(const Scene& scene, Model& model, const std::string&
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_SOLVERS_LOAD_STEPS_H_
+#endif  // DRAPE_SRC_RUN_LOAD_STEPS_H_

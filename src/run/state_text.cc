@@ -1,4 +1,4 @@
-#include "src/solvers/state_text.h"
+#include "src/run/state_text.h"
 
 #include <cstdio>
 #include <string>
