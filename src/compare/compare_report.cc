@@ -25,6 +25,7 @@
 #include "src/output/command_output.h"
 #include "src/output/csv_field.h"
 #include "src/output/json.h"
+#include "src/output/provenance.h"
 
 namespace drape {
 
@@ -98,7 +99,7 @@ void WriteRunsCsv(const std::vector<SceneComparison>& comparisons, std::ostream&
           << FormatNumber(run.error.max_m) << ',' << FormatNumber(run.error.rms_m) << ','
           << FormatNumber(run.error.max_m / run.size) << ',' << FormatNumber(RelativeError(run))
           << ',' << FormatNumber(run.drape_coefficient_gap) << ','
-          << (run.stability_computed ? (run.stable ? "yes" : "no") : "unknown") << ','
+          << (run.stability_computed ? JsonBool(run.stable) : "") << ','
           << FormatNumber(run.peak_memory_mb);
       for (double level : AccuracyLevels()) {
         const double t = HasPositions(run) ? TimeToReach(run, level) : -1.0;
@@ -131,12 +132,11 @@ void WriteReferencesCsv(const std::vector<SceneComparison>& comparisons, std::os
   for (const SceneComparison& c : comparisons) {
     const SceneReference& r = c.reference;
     out << CsvField(c.name) << ',' << CsvField(c.file) << ',' << r.method << ','
-        << FormatNumber(r.tolerance) << ',' << (r.converged ? "yes" : "no") << ','
+        << FormatNumber(r.tolerance) << ',' << JsonBool(r.converged) << ','
         << CsvField(r.termination) << ',' << r.iterations << ',' << FormatNumber(r.time_s) << ','
         << FormatNumber(r.energy) << ',' << FormatNumber(r.relative_residual) << ','
-        << FormatNumber(r.max_node_force) << ','
-        << (r.stability_computed ? (r.stable ? "yes" : "no") : "unknown") << ','
-        << FormatNumber(r.energy_tolerance) << ',' << FormatNumber(c.size) << '\n';
+        << FormatNumber(r.max_node_force) << ',' << (r.stability_computed ? JsonBool(r.stable) : "")
+        << ',' << FormatNumber(r.energy_tolerance) << ',' << FormatNumber(c.size) << '\n';
   }
 }
 
@@ -429,6 +429,30 @@ std::vector<Block> SceneBlocks(const SceneComparison& c, Plotter& plotter) {
   return blocks;
 }
 
+// compare.json: how the report was made (ProvenanceMembers) and what was asked, beside the CSV
+// files (which carry no comment line, so that pandas reads them as they are).
+void WriteCompareJson(const CompareOptions& options, double total_time_s, std::ostream& out) {
+  std::string scenes, solvers;
+  for (const std::string& scene : options.scenes) {
+    scenes += (scenes.empty() ? "" : ", ") + JsonString(scene);
+  }
+  for (const std::string& solver : options.solvers) {
+    solvers += (solvers.empty() ? "" : ", ") + JsonString(solver);
+  }
+  out << "{\n  \"scenes\": [" << scenes << "],\n  \"solvers\": [" << solvers
+      << "],\n  \"repeat\": " << options.repeat
+      << ",\n  \"time_limit_s\": " << JsonNumber(options.time_limit)
+      << ",\n  \"reference_tolerance\": " << JsonNumber(options.reference_tolerance)
+      << ",\n  \"total_time_s\": " << JsonNumber(total_time_s)
+      << ",\n  \"files\": [\"runs.csv\", \"curves.csv\", \"references.csv\", \"report.md\", "
+         "\"report.html\"]";
+  for (const auto& [key, value] :
+       ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
+    out << ",\n  " << JsonString(key) << ": " << value;
+  }
+  out << "\n}\n";
+}
+
 std::vector<Block> HeaderBlocks(const CompareOptions& options, double total_time_s) {
   const LibraryThreads threads = RunLibrariesOnOneThread();
   std::ostringstream machine;
@@ -453,8 +477,9 @@ std::vector<Block> HeaderBlocks(const CompareOptions& options, double total_time
             "each run, minus the resident size (VmRSS) at its start. Total time of this "
             "comparison: "
          << Seconds(total_time_s) << '.';
-  return {Text("drape solver comparison", Block::Kind::kHeading), Text(machine.str()),
-          Text(method.str())};
+  return {Text("drape solver comparison", Block::Kind::kHeading),
+          Text(ProvenanceLine(Provenance{options.command_line, options.overrides}) + "."),
+          Text(machine.str()), Text(method.str())};
 }
 
 // ---- Markdown and HTML --------------------------------------------------------------------------
@@ -597,6 +622,8 @@ void WriteCompareReport(const std::vector<SceneComparison>& comparisons,
   WriteAtomically(out_dir / "curves.csv", [&](std::ostream& o) { WriteCurvesCsv(comparisons, o); });
   WriteAtomically(out_dir / "references.csv",
                   [&](std::ostream& o) { WriteReferencesCsv(comparisons, o); });
+  WriteAtomically(out_dir / "compare.json",
+                  [&](std::ostream& o) { WriteCompareJson(options, total_time_s, o); });
 
   Plotter plotter(options, out_dir, log);
   std::vector<Block> blocks = HeaderBlocks(options, total_time_s);
@@ -611,7 +638,8 @@ void WriteCompareReport(const std::vector<SceneComparison>& comparisons,
   }
   blocks.push_back(
       Text("Raw numbers: runs.csv (one row per run), curves.csv (one row per "
-           "iteration per run), references.csv (one row per scene)."));
+           "iteration per run), references.csv (one row per scene); how they were made: "
+           "compare.json."));
   WriteAtomically(out_dir / "report.md", [&](std::ostream& o) { WriteMarkdown(blocks, o); });
   WriteAtomically(out_dir / "report.html", [&](std::ostream& o) { WriteHtml(blocks, out_dir, o); });
 }

@@ -10,6 +10,7 @@
 
 #include "src/fit/fit_problem.h"
 #include "src/fit/fit_solver.h"
+#include "src/output/provenance.h"
 
 namespace drape {
 
@@ -38,8 +39,9 @@ FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result);
 // step of 1, 2 or 5 × 10^k that is at least a fifth of the range (2 to 6 ticks).
 std::vector<double> AxisTicks(double low, double high);
 
+// `provenance` (src/output/provenance.h) goes into fit.json and report.md.
 void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
-                     const std::string& directory);
+                     const std::string& directory, const Provenance& provenance = {});
 
 }  // namespace drape
 

@@ -275,7 +275,7 @@ std::vector<Figure> HeatMap(const SweepSpec& spec, const Table& table, Plotter& 
 }
 
 void WriteHtml(const SweepSpec& spec, const Table& table, const std::vector<Figure>& figures,
-               std::ostream& out) {
+               const Provenance& provenance, std::ostream& out) {
   out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>drape sweep "
       << HtmlText(fs::path(spec.file).filename().string())
       << "</title>\n<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse;"
@@ -284,7 +284,8 @@ void WriteHtml(const SweepSpec& spec, const Table& table, const std::vector<Figu
   out << "<h1>drape sweep: " << HtmlText(spec.file) << "</h1>\n<p>base scene "
       << HtmlText(spec.scene_file) << "; design " << HtmlText(spec.design) << ", "
       << spec.tasks.size() << " tasks, " << table.rows.size()
-      << " finished (sweep.csv); an empty cell is a value the task does not have.</p>\n";
+      << " finished (sweep.csv); an empty cell is a value the task does not have.</p>\n<p>"
+      << HtmlText(ProvenanceLine(provenance)) << " (sweep.json)</p>\n";
   for (const Figure& figure : figures) {
     out << "<figure><img alt=\"" << HtmlText(figure.caption) << "\" src=\""
         << HtmlText(figure.image) << "\"><figcaption>" << HtmlText(figure.caption)
@@ -303,13 +304,14 @@ void WriteHtml(const SweepSpec& spec, const Table& table, const std::vector<Figu
 
 }  // namespace
 
-void WriteSweepReport(const SweepSpec& spec, const std::string& directory, std::ostream& log) {
+void WriteSweepReport(const SweepSpec& spec, const std::string& directory,
+                      const Provenance& provenance, std::ostream& log) {
   const Table table = ReadTable(fs::path(directory) / "sweep.csv");
   Plotter plotter(directory, log);
   std::vector<Figure> figures = HeatMap(spec, table, plotter);
   for (Figure& figure : ScalarPlots(spec, table, plotter)) figures.push_back(std::move(figure));
   WriteAtomically(fs::path(directory) / "sweep.html",
-                  [&](std::ostream& out) { WriteHtml(spec, table, figures, out); });
+                  [&](std::ostream& out) { WriteHtml(spec, table, figures, provenance, out); });
 }
 
 }  // namespace drape
