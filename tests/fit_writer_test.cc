@@ -36,7 +36,8 @@ TEST(FitWriterTest, FitCommandWritesEveryOutput) {
       RunCommand({"fit", folder + "/fit_cli.yaml", "--out", out, "--method", "implicit-lm"},
                  stdout_text, stderr_text);
   EXPECT_EQ(status, kExitConverged) << stderr_text.str();
-  for (const char* name : {"fit.json", "history.csv", "sensitivity.csv", "fit.png", "report.md"}) {
+  for (const char* name :
+       {"fit.json", "history.csv", "sensitivity.csv", "fit.png", "report.md", "report.html"}) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + name)) << name;
   }
   const std::string json = ReadText(out + "/fit.json");
@@ -57,6 +58,12 @@ TEST(FitWriterTest, FitCommandWritesEveryOutput) {
   EXPECT_EQ(static_cast<int>(std::count(progress.begin(), progress.end(), '\n')), rows);
   EXPECT_NE(history.find("evaluation,time_s,objective"), std::string::npos);
   EXPECT_NE(ReadText(out + "/report.md").find("## Identifiability"), std::string::npos);
+  // The same report as one page that stands alone: fit.png inside it, the provenance under its
+  // title.
+  const std::string html = ReadText(out + "/report.html");
+  EXPECT_NE(html.find("<h2>Identifiability</h2>"), std::string::npos);
+  EXPECT_NE(html.find("src=\"data:image/png;base64,iVBOR"), std::string::npos);
+  EXPECT_NE(html.find("<p>drape " + DrapeVersion()), std::string::npos);
 }
 
 // A scalar measurement that is linear in a linear parameter: a drape coefficient-like residual is

@@ -18,6 +18,7 @@
 #include "src/output/atomic_file.h"
 #include "src/output/csv_field.h"
 #include "src/output/json.h"
+#include "src/output/report_page.h"
 #include "src/output/writers.h"
 
 namespace drape {
@@ -170,48 +171,65 @@ void WriteSensitivity(const std::vector<Sensitivity>& table, std::ostream& out) 
   }
 }
 
-void WriteReport(const FitProblem& problem, const FitResult& result,
-                 const std::vector<Sensitivity>& table, const Provenance& provenance,
-                 std::ostream& out) {
+// report.md and report.html: the outcome, fit.png, the parameters (with their units), the
+// measurements at the optimum, the sensitivities and the identifiability.
+std::vector<ReportBlock> ReportBlocks(const FitProblem& problem, const FitResult& result,
+                                      const std::vector<Sensitivity>& table,
+                                      const Provenance& provenance) {
   const auto& parameters = problem.spec().parameters;
-  out << "# Fit report: " << problem.spec().name << "\n\n";
-  out << ProvenanceLine(provenance) << ".\n\n";
-  out << "Fit file `" << problem.spec().file << "`, method `" << problem.spec().method
-      << "`: " << (result.converged ? "converged" : "NOT converged") << " (" << result.termination
-      << ") after " << result.evaluations << " evaluations (" << result.jacobian_evaluations
-      << " with Jacobian), " << Shown(result.wall_time_s)
-      << " s. Objective ½Σr² = " << Shown(result.objective) << ", residual variance "
-      << Shown(result.residual_variance)
-      << ".\n\n## Parameters\n\n| key | initial | fitted | standard error | identifiable |\n"
-      << "|---|---|---|---|---|\n";
+  std::ostringstream outcome;
+  outcome << "Fit file `" << problem.spec().file << "`, method `" << problem.spec().method
+          << "`: " << (result.converged ? "converged" : "NOT converged") << " ("
+          << result.termination << ") after " << result.evaluations << " evaluations ("
+          << result.jacobian_evaluations << " with Jacobian), " << Shown(result.wall_time_s)
+          << " s. Objective ½Σr² = " << Shown(result.objective) << ", residual variance "
+          << Shown(result.residual_variance) << ".";
+  std::vector<ReportBlock> blocks = {
+      HeadingBlock("Fit report: " + problem.spec().name), TextBlock(ProvenanceLine(provenance)),
+      TextBlock(outcome.str()),
+      ImageBlock("fit.png", "The fitted shape (blue) and the measured points (red)"),
+      HeadingBlock("Parameters")};
+  const std::vector<std::string> units = ParameterUnits(problem);
+  std::vector<std::vector<std::string>> rows = {
+      {"key", "initial", "fitted", "unit", "standard error", "identifiable"}};
   for (size_t j = 0; j < parameters.size(); ++j) {
-    out << "| " << parameters[j].key << " | " << Shown(parameters[j].initial) << " | "
-        << Shown(result.parameters[j]) << " | "
-        << (std::isfinite(result.standard_errors[j]) ? Shown(result.standard_errors[j]) : "—")
-        << " | " << (result.identifiability.identifiable[j] ? "yes" : "**no**") << " |\n";
+    rows.push_back(
+        {parameters[j].key, Shown(parameters[j].initial), Shown(result.parameters[j]), units[j],
+         std::isfinite(result.standard_errors[j]) ? Shown(result.standard_errors[j]) : "—",
+         result.identifiability.identifiable[j] ? "yes" : "NO"});
   }
-  out << "\n## Measurements at the optimum\n\n| measurement | measured | model | unit |\n"
-      << "|---|---|---|---|\n";
-  const auto& blocks = problem.blocks();
-  for (size_t b = 0; b < blocks.size(); ++b) {
-    const FitMeasurement& measurement = MeasurementOf(problem, blocks[b]);
-    out << "| " << blocks[b].label << " | "
-        << (IsScalar(measurement) ? Shown(measurement.value) : "rms difference") << " | "
-        << Shown(result.final_evaluation.model_values[b]) << " | " << UnitOf(measurement) << " |\n";
+  blocks.push_back(TableBlock(std::move(rows)));
+  blocks.push_back(HeadingBlock("Measurements at the optimum"));
+  rows = {{"measurement", "measured", "model", "unit"}};
+  const auto& residual_blocks = problem.blocks();
+  for (size_t b = 0; b < residual_blocks.size(); ++b) {
+    const FitMeasurement& measurement = MeasurementOf(problem, residual_blocks[b]);
+    rows.push_back({residual_blocks[b].label,
+                    IsScalar(measurement) ? Shown(measurement.value) : "rms difference",
+                    Shown(result.final_evaluation.model_values[b]), UnitOf(measurement)});
   }
-  out << "\n## Sensitivity (∂measurement/∂parameter at the optimum)\n\n"
-      << "Vector measurements: root-mean-square over their components.\n\n"
-      << "| measurement | parameter | ∂m/∂θ | ∂m/∂ln θ | unit of m |\n|---|---|---|---|---|\n";
+  blocks.push_back(TableBlock(std::move(rows)));
+  blocks.push_back(HeadingBlock("Sensitivity (∂measurement/∂parameter at the optimum)"));
+  blocks.push_back(TextBlock("Vector measurements: root-mean-square over their components."));
+  rows = {{"measurement", "parameter", "∂m/∂θ", "∂m/∂ln θ", "unit of m"}};
   for (const auto& row : table) {
-    out << "| " << row.measurement << " | " << row.parameter << " | " << Shown(row.per_parameter)
-        << " | " << Shown(row.per_log_parameter) << " | " << row.unit << " |\n";
+    rows.push_back({row.measurement, row.parameter, Shown(row.per_parameter),
+                    Shown(row.per_log_parameter), row.unit});
   }
-  out << "\n## Identifiability\n\nSingular values of the Jacobian of the normalised residuals "
-         "(residual / measurement uncertainty) with respect to the (log-)parameters:";
-  for (double s : result.identifiability.singular_values) out << " " << Shown(s);
-  out << ". A direction whose singular value is below 1 changes the fit by less than one "
-         "measurement uncertainty per unit step (a factor e of a log parameter).\n\n";
-  for (const auto& statement : result.identifiability.statements) out << "- " << statement << "\n";
+  blocks.push_back(TableBlock(std::move(rows)));
+  blocks.push_back(HeadingBlock("Identifiability"));
+  std::string singular;
+  for (double s : result.identifiability.singular_values) singular += " " + Shown(s);
+  blocks.push_back(TextBlock(
+      "Singular values of the Jacobian of the normalised residuals (residual / measurement "
+      "uncertainty) with respect to the (log-)parameters:" +
+      singular +
+      ". A direction whose singular value is below 1 changes the fit by less than one "
+      "measurement uncertainty per unit step (a factor e of a log parameter)."));
+  for (const auto& statement : result.identifiability.statements) {
+    blocks.push_back(TextBlock(statement));
+  }
+  return blocks;
 }
 
 const FitEquilibrium& PlottedEquilibrium(const FitProblem& problem) {
@@ -462,10 +480,13 @@ void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
                   [&](std::ostream& out) { WriteHistory(problem, result, out); });
   WriteAtomically(folder / "sensitivity.csv",
                   [&](std::ostream& out) { WriteSensitivity(table, out); });
-  WriteAtomically(folder / "report.md",
-                  [&](std::ostream& out) { WriteReport(problem, result, table, provenance, out); });
   WriteFileAtomically(folder / "fit.png",
                       [&](const fs::path& path) { WritePng(problem, result, path); });
+  const std::vector<ReportBlock> report = ReportBlocks(problem, result, table, provenance);
+  WriteAtomically(folder / "report.md",
+                  [&](std::ostream& out) { WriteMarkdownReport(report, out); });
+  WriteAtomically(folder / "report.html",
+                  [&](std::ostream& out) { WriteHtmlReport(report, folder, out); });
 }
 
 }  // namespace drape

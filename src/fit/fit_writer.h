@@ -1,5 +1,6 @@
-// The outputs of `drape fit`: fit.json, history.csv, sensitivity.csv, fit.png and report.md, each
-// written to a temporary name and renamed (no half-written file is left).
+// The outputs of `drape fit`: fit.json, history.csv, sensitivity.csv, fit.png, report.md and
+// report.html (the same report, fit.png embedded), each written to a temporary name and renamed
+// (no half-written file is left).
 #ifndef DRAPE_SRC_FIT_FIT_WRITER_H_
 #define DRAPE_SRC_FIT_FIT_WRITER_H_
 
@@ -39,7 +40,7 @@ FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result);
 // step of 1, 2 or 5 × 10^k that is at least a fifth of the range (2 to 6 ticks).
 std::vector<double> AxisTicks(double low, double high);
 
-// `provenance` (src/output/provenance.h) goes into fit.json and report.md.
+// `provenance` (src/output/provenance.h) goes into fit.json and the reports.
 void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
                      const std::string& directory, const Provenance& provenance = {});
 
