@@ -12,6 +12,7 @@
 
 #include "src/cli/cli.h"
 #include "src/output/json.h"
+#include "src/output/png_text.h"
 #include "src/output/version.h"
 #include "tests/fit_test_support.h"
 #include "tests/run_program.h"
@@ -64,6 +65,7 @@ TEST(FitWriterTest, FitCommandWritesEveryOutput) {
   EXPECT_NE(html.find("<h2>Identifiability</h2>"), std::string::npos);
   EXPECT_NE(html.find("src=\"data:image/png;base64,iVBOR"), std::string::npos);
   EXPECT_NE(html.find("<p>drape " + DrapeVersion()), std::string::npos);
+  EXPECT_EQ(PngTexts(ReadText(out + "/fit.png")).at("Software"), "drape " + DrapeVersion());
 }
 
 // A scalar measurement that is linear in a linear parameter: a drape coefficient-like residual is

@@ -21,6 +21,8 @@
 #include "costs/constant_force_potential.h"
 #include "costs/spring_stretch.h"
 #include "src/model/equilibrium.h"
+#include "src/output/atomic_file.h"
+#include "src/output/png_text.h"
 #include "src/output/version.h"
 #include "tests/folded_skirt.h"
 
@@ -509,9 +511,10 @@ TEST_F(WritersTest, EveryFileThatCanSayItCarriesTheProvenance) {
   const Model model = SmallSheet();
   const Provenance provenance{"drape solve small.yaml --set solver.tolerance=1e-9",
                               {"solver.tolerance=1e-9"}};
-  const Scene scene = SceneWriting({"summary", "nodes", "history", "vtk", "obj"});
+  const Scene scene = SceneWriting({"summary", "nodes", "history", "vtk", "obj", "png"});
   WriteOutputs(scene, model, ReportOf(scene, model, ResultOf(model)), directory_.string(),
                provenance);
+  EXPECT_EQ(PngTexts(ReadWholeFile(Path("drape.png"))).at("Software"), "drape " + DrapeVersion());
   const std::string line = ProvenanceLine(provenance);
   EXPECT_EQ(Lines(Path("mesh.vtk"))[1].rfind(line, 0), 0u) << Lines(Path("mesh.vtk"))[1];
   EXPECT_EQ(Lines(Path("mesh.obj"))[0], "# " + line);

@@ -18,6 +18,7 @@
 #include "src/output/atomic_file.h"
 #include "src/output/csv_field.h"
 #include "src/output/json.h"
+#include "src/output/png_text.h"
 #include "src/output/report_page.h"
 #include "src/output/writers.h"
 
@@ -388,6 +389,7 @@ void WritePng(const FitProblem& problem, const FitResult& result, const fs::path
   const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error("cannot write " + path.string());
+  AddDrapeVersionToPngFile(path);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "src/output/atomic_file.h"
 #include "src/output/plot_scripts.h"
+#include "src/output/png_text.h"
 
 namespace drape {
 
@@ -60,6 +61,7 @@ std::string GnuplotPlots::Draw(const std::string& script, const std::string& png
     failed_ = true;
     return "";
   }
+  AddDrapeVersionToPngFile(out_dir_ / relative);
   return relative;
 }
 

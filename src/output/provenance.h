@@ -2,8 +2,9 @@
 // OpenBLAS kernels (the iterates' rounding depends on them), the command as run and its `--set`
 // overrides. As JSON members in summary.json, fit.json, sweep.json, compare.json and a drops
 // run's summary.json; as one line of text in mesh.vtk's title, mesh.obj's and scene.yaml's first
-// comment, report.md and the HTML reports. CSV files carry none: each is read beside its folder's
-// JSON file, which does (pandas reads a CSV with a comment line only when told to skip it).
+// comment, report.md and the HTML reports; the PNG pictures carry the version (png_text.h). CSV
+// files carry none: each is read beside its folder's JSON file, which does (pandas reads a CSV
+// with a comment line only when told to skip it).
 #ifndef DRAPE_SRC_OUTPUT_PROVENANCE_H_
 #define DRAPE_SRC_OUTPUT_PROVENANCE_H_
 
