@@ -221,7 +221,7 @@ py::dict Fit(const std::string& path, const std::vector<std::string>& overrides,
   }
   if (result.parameters.empty()) throw std::runtime_error("drape fit: " + result.termination);
   CheckOutputWritable(directory);
-  WriteFitOutputs(problem, result, directory);
+  WriteFitOutputs(problem, result, directory, Provenance{"python: drape.fit", overrides});
   py::dict outcome;
   outcome["converged"] = result.converged;
   outcome["interrupted"] = interrupted;

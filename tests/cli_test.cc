@@ -21,6 +21,7 @@
 
 #include "src/output/json.h"
 #include "src/output/version.h"
+#include "src/output/writers.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/solvers/solver.h"
 #include "tests/run_program.h"
@@ -253,7 +254,7 @@ TEST_F(CliTest, ResultFolderRecordsItsProvenance) {
       Drape({"solve", scene, "--set", "mesh.nodes=7", "--set", "material.springs.structural=60"});
   ASSERT_EQ(outcome.exit_status, 0) << outcome.err;
   const YAML::Node summary = Summary(out_);
-  EXPECT_EQ(summary["format_version"].as<int>(), 2);
+  EXPECT_EQ(summary["format_version"].as<int>(), kResultFormatVersion);
   EXPECT_EQ(summary["drape_version"].as<std::string>(), DrapeVersion());
   // The drape binary names its OpenBLAS kernels, and never runs OpenBLAS's generic fallback where
   // the processor has faster ones and the user did not choose (RestartWithFasterBlasKernels).
@@ -289,10 +290,10 @@ TEST_F(CliTest, KesInputsAreReportedInSiUnits) {
   const ProgramOutcome check =
       Drape({"check", scene, "--set", "material.finite_volume.kes.B_warp=0.2"});
   ASSERT_EQ(check.exit_status, 0) << check.err;
-  EXPECT_NE(check.out.find("D_warp " + FormatNumber(KesBendingRigidity(0.2), 6) + " N*m"),
+  EXPECT_NE(check.out.find("D_warp " + RoundedNumber(KesBendingRigidity(0.2), 6) + " N*m"),
             std::string::npos)
       << check.out;
-  EXPECT_NE(check.out.find("density " + FormatNumber(KesArealDensity(12.0), 6) + " kg/m^2"),
+  EXPECT_NE(check.out.find("density " + RoundedNumber(KesArealDensity(12.0), 6) + " kg/m^2"),
             std::string::npos)
       << check.out;
   const ProgramOutcome solve = Drape({"solve", scene, "--out", out_.string(), "--set",

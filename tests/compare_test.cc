@@ -4,12 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "src/analysis/drape_analysis.h"
+#include "src/output/json.h"
+#include "src/output/provenance.h"
+#include "src/output/version.h"
 #include "src/scene/scene_loader.h"
 #include "tests/run_program.h"
 #include "tests/test_paths.h"
@@ -109,6 +113,7 @@ TEST(RunCompare, ReportKeepsRefusedAndUnconvergedRuns) {
   options.out_dir = out.string();
   options.time_limit = 30.0;
   options.tools_dir = SourcePath("tools");
+  options.command_line = "drape compare hanging_sheet.yaml";
   std::ostringstream log;
   ASSERT_EQ(RunCompare(options, log), 0) << log.str();
   const std::string report = ReadText(out / "report.md");
@@ -122,6 +127,19 @@ TEST(RunCompare, ReportKeepsRefusedAndUnconvergedRuns) {
   EXPECT_EQ(html.find('`'), std::string::npos) << "Markdown's backticks leak into the HTML";
   EXPECT_NE(html.find("<code>"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "curves.csv"));
+  // How the report was made: compare.json and the pages; pictures inside the page, not linked.
+  const std::string json = ReadText(out / "compare.json");
+  EXPECT_NE(json.find("\"drape_version\": " + JsonString(DrapeVersion())), std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"command_line\": \"drape compare hanging_sheet.yaml\""), std::string::npos)
+      << json;
+  EXPECT_NE(report.find(ProvenanceLine({options.command_line, options.overrides})),
+            std::string::npos);
+  EXPECT_EQ(html.find("src=\"plots/"), std::string::npos);
+  if (std::system("gnuplot --version >/dev/null 2>&1") == 0) {
+    EXPECT_NE(html.find("src=\"data:image/png;base64,"), std::string::npos);
+  }
+  EXPECT_EQ(runs.find(",yes,"), std::string::npos) << runs;
 }
 
 TEST(RunCompare, UnknownSolverIsBadUsage) {

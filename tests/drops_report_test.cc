@@ -67,7 +67,7 @@ DropsSummary HandMadeSummary(double dc) {
 TEST(DropsReport, ItsPicturesAreThereAndLabelled) {
   const Scene scene = DrapeTestScene();
   std::ostringstream html;
-  WriteDropsReport(scene, HandMadeSummary(0.5), html);
+  WriteDropsReport(scene, HandMadeSummary(0.5), {}, html);
   const std::string page = html.str();
   EXPECT_EQ(Occurrences(page, "<svg "), 4) << page;  // outlines, two histograms, profiles
   EXPECT_EQ(Occurrences(page, "<title>"), 5);        // the page's and each picture's
@@ -100,7 +100,7 @@ TEST(DropsReport, SpecimenSizeAdviceFollowsTheStandard) {
   EXPECT_NE(stiff->find("36 cm"), std::string::npos) << *stiff;
 
   std::ostringstream html;
-  WriteDropsReport(DrapeTestScene(), HandMadeSummary(0.2), html);
+  WriteDropsReport(DrapeTestScene(), HandMadeSummary(0.2), {}, html);
   EXPECT_NE(html.str().find("Specimen size: the drape coefficient 0.205 is below 0.30"),
             std::string::npos);
 }

@@ -58,13 +58,16 @@ std::string ThreeHammocksFit(const std::string& folder) {
   return folder + "/fit.yaml";
 }
 
-// The output files with what may differ between runs left out: fit.json's wall time,
-// history.csv's time column (report.md has the time in its text, and repeats fit.json).
+// The output files with what may differ between runs left out: fit.json's wall time and command
+// line, history.csv's time column (report.md has the time in its text, and repeats fit.json).
 std::string ComparableOutputs(const fs::path& folder) {
   std::string text;
   std::istringstream json(ReadText(folder / "fit.json"));
   for (std::string line; std::getline(json, line);) {
-    if (line.find("\"wall_time_s\"") == std::string::npos) text += line + "\n";
+    if (line.find("\"wall_time_s\"") == std::string::npos &&
+        line.find("\"command_line\"") == std::string::npos) {
+      text += line + "\n";
+    }
   }
   std::istringstream history(ReadText(folder / "history.csv"));
   for (std::string line; std::getline(history, line);) {

@@ -4,6 +4,7 @@
 
 #include <cairo.h>
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,8 @@
 
 #include "src/cli/cli.h"
 #include "src/output/json.h"
+#include "src/output/png_text.h"
+#include "src/output/version.h"
 #include "tests/fit_test_support.h"
 #include "tests/run_program.h"
 
@@ -34,15 +37,21 @@ TEST(FitWriterTest, FitCommandWritesEveryOutput) {
       RunCommand({"fit", folder + "/fit_cli.yaml", "--out", out, "--method", "implicit-lm"},
                  stdout_text, stderr_text);
   EXPECT_EQ(status, kExitConverged) << stderr_text.str();
-  for (const char* name : {"fit.json", "history.csv", "sensitivity.csv", "fit.png", "report.md"}) {
+  for (const char* name :
+       {"fit.json", "history.csv", "sensitivity.csv", "fit.png", "report.md", "report.html"}) {
     EXPECT_TRUE(std::filesystem::exists(out + "/" + name)) << name;
   }
   const std::string json = ReadText(out + "/fit.json");
-  for (const char* key :
-       {"\"parameters\"", "\"standard_errors\"", "\"correlation\"", "\"objective\"",
-        "\"converged\": true", "\"evaluations\"", "\"material.springs.structural\": 35"}) {
+  for (const char* key : {"\"parameters\"", "\"standard_errors\"", "\"correlation\"",
+                          "\"objective\"", "\"converged\": true", "\"evaluations\""}) {
     EXPECT_NE(json.find(key), std::string::npos) << key << "\n" << json;
   }
+  // The fitted value exact, with its unit beside it, and how the fit was made.
+  const YAML::Node table = YAML::Load(json);
+  EXPECT_NEAR(table["parameters"]["material.springs.structural"].as<double>(), 35.0, 1e-6);
+  EXPECT_EQ(table["units"]["material.springs.structural"].as<std::string>(), "N/m");
+  EXPECT_EQ(table["drape_version"].as<std::string>(), DrapeVersion());
+  EXPECT_NE(table["command_line"].as<std::string>().find("fit_cli.yaml"), std::string::npos);
   // One history row per evaluation, one progress line per evaluation.
   const std::string history = ReadText(out + "/history.csv");
   const int rows = static_cast<int>(std::count(history.begin(), history.end(), '\n')) - 1;
@@ -50,6 +59,13 @@ TEST(FitWriterTest, FitCommandWritesEveryOutput) {
   EXPECT_EQ(static_cast<int>(std::count(progress.begin(), progress.end(), '\n')), rows);
   EXPECT_NE(history.find("evaluation,time_s,objective"), std::string::npos);
   EXPECT_NE(ReadText(out + "/report.md").find("## Identifiability"), std::string::npos);
+  // The same report as one page that stands alone: fit.png inside it, the provenance under its
+  // title.
+  const std::string html = ReadText(out + "/report.html");
+  EXPECT_NE(html.find("<h2>Identifiability</h2>"), std::string::npos);
+  EXPECT_NE(html.find("src=\"data:image/png;base64,iVBOR"), std::string::npos);
+  EXPECT_NE(html.find("<p>drape " + DrapeVersion()), std::string::npos);
+  EXPECT_EQ(PngTexts(ReadText(out + "/fit.png")).at("Software"), "drape " + DrapeVersion());
 }
 
 // A scalar measurement that is linear in a linear parameter: a drape coefficient-like residual is
@@ -107,13 +123,14 @@ TEST(FitWriterTest, FitPngShowsTheFittedValuesAndTheResidual) {
   EXPECT_EQ(text.axis_labels[0], "x (m)");
   EXPECT_EQ(text.axis_labels[2], "z (m)");
   ASSERT_EQ(text.caption.size(), 3u);
-  EXPECT_EQ(text.caption[0].rfind("material.springs.structural = " +
-                                      JsonNumber(result.parameters[0], 6) + " N/m (standard error ",
-                                  0),
+  EXPECT_EQ(text.caption[0].rfind(
+                "material.springs.structural = " + RoundedNumber(result.parameters[0], 6) +
+                    " N/m (standard error ",
+                0),
             0u)
       << text.caption[0];
   EXPECT_NEAR(result.parameters[0], 35.0, 1e-3);
-  EXPECT_NE(text.caption[1].find("objective 1/2 sum r^2 = " + JsonNumber(result.objective, 6)),
+  EXPECT_NE(text.caption[1].find("objective 1/2 sum r^2 = " + RoundedNumber(result.objective, 6)),
             std::string::npos)
       << text.caption[1];
   EXPECT_NE(text.caption[2].find("converged yes"), std::string::npos) << text.caption[2];

@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "src/cli/cli.h"
+#include "src/output/json.h"
+#include "src/output/version.h"
 #include "src/solvers/solver.h"
 #include "tests/sweep_test_support.h"
 
@@ -72,13 +74,13 @@ TEST(Sweep, RowsAreTheScenesSolvedOneByOneWithSet) {
     const int status = RunCommand(args, out, err);
     ASSERT_TRUE(status == 0 || status == 3) << status << err.str();
     const std::string json = ReadText(folder + "/one/" + std::to_string(task) + "/summary.json");
-    EXPECT_EQ(row[ColumnOf(header, "converged")], "yes");
+    EXPECT_EQ(row[ColumnOf(header, "converged")], "true");
     EXPECT_EQ(Number(row[ColumnOf(header, "iterations")]), JsonField(json, "iterations"));
     EXPECT_EQ(Number(row[ColumnOf(header, "energy_J")]), JsonField(json, "total"));
     EXPECT_EQ(Number(row[ColumnOf(header, "relative_residual")]), JsonField(json, "relative"));
     EXPECT_EQ(Number(row[ColumnOf(header, "drape_coefficient")]), JsonField(json, "cusick"));
     EXPECT_EQ(Number(row[ColumnOf(header, "folds")]), JsonField(json, "folds"));
-    EXPECT_EQ(row[ColumnOf(header, "stable")], "yes");
+    EXPECT_EQ(row[ColumnOf(header, "stable")], "true");
     const size_t state = json.find("\"state\": \"");
     ASSERT_NE(state, std::string::npos);
     const std::string state_text = json.substr(state + 10, json.find('"', state + 10) - state - 10);
@@ -92,6 +94,11 @@ TEST(Sweep, RowsAreTheScenesSolvedOneByOneWithSet) {
     ASSERT_EQ(own.size(), 2u);
     EXPECT_EQ(own[1], row);
   }
+  // sweep.json beside sweep.csv: what the sweep is and how it was made.
+  const std::string sweep_json = ReadText(folder + "/out/sweep.json");
+  EXPECT_NE(sweep_json.find("\"rows\": 4"), std::string::npos) << sweep_json;
+  EXPECT_NE(sweep_json.find("\"drape_version\": " + JsonString(DrapeVersion())), std::string::npos)
+      << sweep_json;
   // No NaN or infinity anywhere.
   const std::string csv = ReadText(folder + "/out/sweep.csv");
   EXPECT_EQ(csv.find("nan"), std::string::npos);
@@ -198,15 +205,15 @@ grid:
   const auto& header = rows[0];
   const int converged = ColumnOf(header, "converged"), reason = ColumnOf(header, "stop_reason");
   // puiseux-fixed-point refuses a finite-volume fabric: a failed row, with empty results.
-  EXPECT_EQ(rows[1][converged], "no");
+  EXPECT_EQ(rows[1][converged], "false");
   EXPECT_EQ(rows[1][reason].rfind("failed: ", 0), 0u) << rows[1][reason];
   EXPECT_EQ(rows[1][ColumnOf(header, "energy_J")], "");
   EXPECT_EQ(rows[1][ColumnOf(header, "drape_coefficient")], "");
   // newton stopped after 3 iterations: not converged, with its results.
-  EXPECT_EQ(rows[3][converged], "no");
+  EXPECT_EQ(rows[3][converged], "false");
   EXPECT_EQ(rows[3][ColumnOf(header, "iterations")], "3");
   EXPECT_NE(rows[3][ColumnOf(header, "drape_coefficient")], "");
-  EXPECT_EQ(rows[4][converged], "yes");
+  EXPECT_EQ(rows[4][converged], "true");
   // The failures are finished rows: a rerun keeps them.
   EXPECT_EQ(SweepInto(spec, folder + "/out").solved, 0);
   const std::string csv = ReadText(folder + "/out/sweep.csv");

@@ -21,6 +21,9 @@
 #include "costs/constant_force_potential.h"
 #include "costs/spring_stretch.h"
 #include "src/model/equilibrium.h"
+#include "src/output/atomic_file.h"
+#include "src/output/png_text.h"
+#include "src/output/version.h"
 #include "tests/folded_skirt.h"
 
 namespace drape {
@@ -219,7 +222,7 @@ TEST_F(WritersTest, HistoryCsvHasOneRowPerRecordedIteration) {
 
   const auto lines = Lines(Path("history.csv"));
   ASSERT_EQ(lines.size(), 1 + result.summary.history.size());
-  EXPECT_EQ(lines[0], "iteration,time_s,energy,residual");
+  EXPECT_EQ(lines[0], "iteration,time_s,energy_J,relative_residual");
   for (size_t k = 0; k < result.summary.history.size(); ++k) {
     const auto fields = Fields(lines[k + 1]);
     ASSERT_EQ(fields.size(), 4u);
@@ -279,7 +282,10 @@ TEST_F(WritersTest, VtkAndObjDescribeTheSameMesh) {
   ASSERT_GE(types, 0);
   EXPECT_EQ(vtk[types + 1], "5");  // VTK_TRIANGLE
   EXPECT_EQ(vtk[types + 3], "3");  // VTK_LINE
-  EXPECT_GE(find("POINT_DATA 4"), 0);
+  const int point_data = find("POINT_DATA 4");
+  ASSERT_GE(point_data, 0);
+  EXPECT_EQ(vtk[point_data + 1], "SCALARS height double 1");  // a viewer's default field
+  EXPECT_EQ(std::strtod(vtk[point_data + 4].c_str(), nullptr), model.positions[5]);
   const int ids = find("SCALARS id int 1");
   ASSERT_GE(ids, 0);
   EXPECT_EQ(vtk[ids + 3], "1");
@@ -425,7 +431,7 @@ assert mesh.points.shape == (4, 3), mesh.points.shape
 kinds = sorted(block.type for block in mesh.cells)
 assert kinds == ["line", "triangle"], kinds
 shapes = {name: data.reshape(len(data), -1).shape for name, data in mesh.point_data.items()}
-expected = {"id": (4, 1), "displacement": (4, 3), "reaction": (4, 3), "residual": (4, 3),
+expected = {"height": (4, 1), "id": (4, 1), "displacement": (4, 3), "reaction": (4, 3), "residual": (4, 3),
             "contact_force": (4, 3), "fixed": (4, 3), "in_contact": (4, 1)}
 for name, shape in expected.items():
     assert shapes.get(name) == shape, (name, shapes)
@@ -455,7 +461,9 @@ grid = reader.GetOutput()
 assert grid.GetNumberOfPoints() == 4, grid.GetNumberOfPoints()
 assert grid.GetNumberOfCells() == 3, grid.GetNumberOfCells()
 data = grid.GetPointData()
-for name, components in [("id", 1), ("displacement", 3), ("reaction", 3), ("residual", 3),
+assert data.GetScalars().GetName() == "height", data.GetScalars().GetName()
+assert data.GetVectors().GetName() == "displacement", data.GetVectors().GetName()
+for name, components in [("height", 1), ("id", 1), ("displacement", 3), ("reaction", 3), ("residual", 3),
                          ("contact_force", 3), ("fixed", 3), ("in_contact", 1)]:
     array = data.GetArray(name)
     assert array is not None, name
@@ -494,6 +502,32 @@ TEST_F(WritersTest, AStaleDrapePngIsRemoved) {
   ASSERT_TRUE(fs::exists(Path("drape.png")));
   WriteReported(SceneWriting({"summary"}), model, ResultOf(model), directory_.string());
   EXPECT_EQ(Files(), (std::set<std::string>{"summary.json", "scene.yaml"}));
+}
+
+// Every text file of the folder that can hold a comment or a field says how it was made, in the
+// one form of ProvenanceLine / ProvenanceMembers; the CSV files hold none (summary.json beside them
+// does) so that pandas reads them without options.
+TEST_F(WritersTest, EveryFileThatCanSayItCarriesTheProvenance) {
+  const Model model = SmallSheet();
+  const Provenance provenance{"drape solve small.yaml --set solver.tolerance=1e-9",
+                              {"solver.tolerance=1e-9"}};
+  const Scene scene = SceneWriting({"summary", "nodes", "history", "vtk", "obj", "png"});
+  WriteOutputs(scene, model, ReportOf(scene, model, ResultOf(model)), directory_.string(),
+               provenance);
+  EXPECT_EQ(PngTexts(ReadWholeFile(Path("drape.png"))).at("Software"), "drape " + DrapeVersion());
+  const std::string line = ProvenanceLine(provenance);
+  EXPECT_EQ(Lines(Path("mesh.vtk"))[1].rfind(line, 0), 0u) << Lines(Path("mesh.vtk"))[1];
+  EXPECT_EQ(Lines(Path("mesh.obj"))[0], "# " + line);
+  EXPECT_EQ(Lines(Path("scene.yaml"))[0], "# " + line);
+  const YAML::Node summary = YAML::LoadFile(Path("summary.json"));
+  EXPECT_EQ(summary["drape_version"].as<std::string>(), DrapeVersion());
+  EXPECT_EQ(summary["command_line"].as<std::string>(), provenance.command_line);
+  EXPECT_EQ(summary["overrides"][0].as<std::string>(), "solver.tolerance=1e-9");
+  EXPECT_EQ(summary["units"]["energy"].as<std::string>(), "J");
+  EXPECT_EQ(summary["units"]["residual.max_node_force"].as<std::string>(), "N");
+  for (const char* csv : {"nodes.csv", "history.csv"}) {
+    EXPECT_NE(Lines(Path(csv))[0][0], '#') << csv;
+  }
 }
 
 TEST_F(WritersTest, CreatesTheFolderAndLeavesNoTemporaryFile) {

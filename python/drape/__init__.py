@@ -152,6 +152,8 @@ def solve(scene, solver=None, set=None, start=None):
 
 
 def _number(text):
+    if text in ("true", "false"):  # drape's CSV booleans, as pandas reads them
+        return text == "true"
     try:
         return int(text)
     except ValueError:

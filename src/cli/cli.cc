@@ -303,7 +303,7 @@ int Check(const Arguments& arguments, std::ostream& out) {
                                  : " + " + std::to_string(material.lines.size()) + " spring lines")
       << " (SI):";
   for (const MaterialValue& value : MaterialSiValues(scene.material)) {
-    out << " " << value.key << " " << FormatNumber(value.value, 6)
+    out << " " << value.key << " " << RoundedNumber(value.value, 6)
         << (value.unit == "1" ? "" : " " + value.unit) << ";";
   }
   out << "\n";
@@ -364,7 +364,8 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
   }
   if (!coordinator) return result.converged ? kExitConverged : kExitNotConverged;
   try {
-    WriteFitOutputs(problem, result, spec.output_directory);
+    WriteFitOutputs(problem, result, spec.output_directory,
+                    Provenance{arguments.command_line, arguments.overrides});
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;
@@ -718,6 +719,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (app.got_subcommand("solvers")) return ListSolvers(out);
     if (compare->parsed()) {
       compare_options.plots = !no_plots;
+      compare_options.command_line = arguments.command_line;
       return RunCompare(compare_options, err, &out);
     }
     if (fit->parsed()) return Fit(arguments, out, err);

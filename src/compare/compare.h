@@ -24,6 +24,7 @@ struct CompareOptions {
   bool plots = true;                   // run gnuplot (the report is written without it too)
   std::string
       tools_dir;  // where compare_*.gp live; empty: $DRAPE_TOOLS_DIR, else the embedded copies
+  std::string command_line;  // the command as run (compare.json, report.md, report.html)
 };
 
 // Distance of every node from the reference positions (3 doubles per node).

@@ -14,32 +14,26 @@
 #include <functional>
 #include <iterator>
 #include <nlopt.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
 
-#include "src/compare/plot_scripts.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
 #include "src/output/command_output.h"
 #include "src/output/csv_field.h"
+#include "src/output/gnuplot_plots.h"
 #include "src/output/json.h"
+#include "src/output/provenance.h"
+#include "src/output/report_page.h"
 
 namespace drape {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// The report as a list of blocks, written once as Markdown and once as HTML.
-struct Block {
-  enum class Kind { kHeading, kText, kTable, kImage };
-  Kind kind = Kind::kText;
-  std::string text;                            // heading, paragraph or image caption
-  std::vector<std::vector<std::string>> rows;  // table: header row first
-  std::string image;                           // image path relative to the report
-};
 
 std::string Format(const char* format, double value) {
   char text[64];
@@ -98,7 +92,7 @@ void WriteRunsCsv(const std::vector<SceneComparison>& comparisons, std::ostream&
           << FormatNumber(run.error.max_m) << ',' << FormatNumber(run.error.rms_m) << ','
           << FormatNumber(run.error.max_m / run.size) << ',' << FormatNumber(RelativeError(run))
           << ',' << FormatNumber(run.drape_coefficient_gap) << ','
-          << (run.stability_computed ? (run.stable ? "yes" : "no") : "unknown") << ','
+          << (run.stability_computed ? JsonBool(run.stable) : "") << ','
           << FormatNumber(run.peak_memory_mb);
       for (double level : AccuracyLevels()) {
         const double t = HasPositions(run) ? TimeToReach(run, level) : -1.0;
@@ -131,92 +125,20 @@ void WriteReferencesCsv(const std::vector<SceneComparison>& comparisons, std::os
   for (const SceneComparison& c : comparisons) {
     const SceneReference& r = c.reference;
     out << CsvField(c.name) << ',' << CsvField(c.file) << ',' << r.method << ','
-        << FormatNumber(r.tolerance) << ',' << (r.converged ? "yes" : "no") << ','
+        << FormatNumber(r.tolerance) << ',' << JsonBool(r.converged) << ','
         << CsvField(r.termination) << ',' << r.iterations << ',' << FormatNumber(r.time_s) << ','
         << FormatNumber(r.energy) << ',' << FormatNumber(r.relative_residual) << ','
-        << FormatNumber(r.max_node_force) << ','
-        << (r.stability_computed ? (r.stable ? "yes" : "no") : "unknown") << ','
-        << FormatNumber(r.energy_tolerance) << ',' << FormatNumber(c.size) << '\n';
+        << FormatNumber(r.max_node_force) << ',' << (r.stability_computed ? JsonBool(r.stable) : "")
+        << ',' << FormatNumber(r.energy_tolerance) << ',' << FormatNumber(c.size) << '\n';
   }
 }
 
 // ---- plots --------------------------------------------------------------------------------------
 
-// Where the scripts are read from: options.tools_dir, else $DRAPE_TOOLS_DIR, else "" (the copies
-// embedded in the binary, src/compare/plot_scripts.h).
-std::string FindToolsDir(const CompareOptions& options) {
-  if (!options.tools_dir.empty()) return options.tools_dir;
-  if (const char* dir = std::getenv("DRAPE_TOOLS_DIR")) return dir;
-  return "";
-}
-
-// A shell word: single quotes, with '\'' for a quote inside.
-std::string ShellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-// A gnuplot string literal: single quotes, with '' for a quote inside.
-std::string Quoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
-  return quoted + "'";
-}
-
-class Plotter {
- public:
-  Plotter(const CompareOptions& options, const fs::path& out_dir, std::ostream& log)
-      : out_dir_(out_dir), log_(log) {
-    if (!options.plots) return;
-    enabled_ = true;
-    tools_dir_ = FindToolsDir(options);
-    fs::create_directories(out_dir_ / "plots" / "data");
-  }
-  bool enabled() const { return enabled_; }
-
-  // Writes a data file under plots/data; returns its path relative to the report.
-  std::string Data(const std::string& name, const std::function<void(std::ostream&)>& write) {
-    const std::string relative = "plots/data/" + name;
-    WriteAtomically(out_dir_ / relative, write);
-    return relative;
-  }
-
-  // Runs tools/<script> in the report folder with the given variables; returns the PNG's path
-  // relative to the report, or "" when gnuplot failed (logged).
-  std::string Draw(const std::string& script, const std::string& png,
-                   const std::vector<std::pair<std::string, std::string>>& variables) {
-    if (!enabled()) return "";
-    const std::string relative = "plots/" + png;
-    fs::path script_path = fs::path(tools_dir_) / script;
-    if (tools_dir_.empty()) {  // the embedded copy, written beside the plot's data
-      script_path = out_dir_ / "plots" / "data" / script;
-      WriteAtomically(script_path,
-                      [&script](std::ostream& out) { out << EmbeddedPlotScript(script); });
-    }
-    std::string settings = "output=" + Quoted(relative) + ";";
-    for (const auto& [name, value] : variables) settings += name + "=" + Quoted(value) + ";";
-    const std::string command =
-        "cd " + ShellQuoted(out_dir_.string()) + " && gnuplot -e " + ShellQuoted(settings) + " " +
-        ShellQuoted(fs::absolute(script_path).string()) + " >/dev/null 2>>plots/gnuplot.log";
-    if (std::system(command.c_str()) != 0 || !fs::exists(out_dir_ / relative)) {
-      log_ << "plot " << relative << " failed (see plots/gnuplot.log)\n";
-      return "";
-    }
-    return relative;
-  }
-
- private:
-  fs::path out_dir_;
-  std::ostream& log_;
-  bool enabled_ = false;
-  std::string tools_dir_;  // empty: the embedded scripts
-};
-
 // Log axes drop zeros: times and errors are floored for the plot only (the CSVs keep them).
 double Floor(double value, double floor) { return std::max(value, floor); }
 
-std::string CurvesPlot(const SceneComparison& comparison, Plotter& plotter) {
+std::string CurvesPlot(const SceneComparison& comparison, GnuplotPlots& plotter) {
   std::string files, titles;
   for (const RunRecord& run : comparison.runs) {
     if (run.curve.empty() || !run.curve_positions_valid) continue;
@@ -241,7 +163,7 @@ std::string CurvesPlot(const SceneComparison& comparison, Plotter& plotter) {
 // solver's). compare_pareto.gp draws the same types in its legend of scenes.
 int ScenePointType(size_t k) { return static_cast<int>(k % 13) + 1; }
 
-std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, Plotter& plotter) {
+std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, GnuplotPlots& plotter) {
   std::vector<std::string> solvers;
   for (const SceneComparison& c : comparisons) {
     for (const RunRecord& run : c.runs) {
@@ -276,7 +198,7 @@ std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, Plotter&
 
 std::string DrapePlot(const SceneComparison& comparison, const std::vector<double>& positions,
                       bool colour_by_distance, const std::string& name, const std::string& title,
-                      Plotter& plotter) {
+                      GnuplotPlots& plotter) {
   const std::vector<double>& reference = comparison.reference.positions;
   const std::string file =
       plotter.Data(Slug(comparison.name) + "__" + name + ".dat", [&](std::ostream& out) {
@@ -305,26 +227,6 @@ std::string Seconds(double t) {
   return t < 0 ? "—" : Format("%.3g s", t);
 }
 
-Block Table(std::vector<std::vector<std::string>> rows) {
-  Block block;
-  block.kind = Block::Kind::kTable;
-  block.rows = std::move(rows);
-  return block;
-}
-Block Text(const std::string& text, Block::Kind kind = Block::Kind::kText) {
-  Block block;
-  block.kind = kind;
-  block.text = text;
-  return block;
-}
-Block Image(const std::string& path, const std::string& caption) {
-  Block block;
-  block.kind = Block::Kind::kImage;
-  block.image = path;
-  block.text = caption;
-  return block;
-}
-
 std::string ReferenceText(const SceneComparison& c) {
   const SceneReference& r = c.reference;
   std::ostringstream text;
@@ -344,7 +246,7 @@ std::string ReferenceText(const SceneComparison& c) {
   return text.str();
 }
 
-Block FinalTable(const SceneComparison& c) {
+ReportBlock FinalTable(const SceneComparison& c) {
   std::vector<std::vector<std::string>> rows = {
       {"solver", "status", "iterations", "time", "residual", "energy gap (J)", "max dist (m)",
        "RMS dist / size", "DC gap", "peak memory (MB)", "reason"}};
@@ -359,10 +261,10 @@ Block FinalTable(const SceneComparison& c) {
          has_dc ? Number(run.drape_coefficient_gap) : "—",
          measured ? Number(run.peak_memory_mb) : "—", run.reason});
   }
-  return Table(std::move(rows));
+  return TableBlock(std::move(rows));
 }
 
-Block SpeedTable(const SceneComparison& c) {
+ReportBlock SpeedTable(const SceneComparison& c) {
   std::vector<std::vector<std::string>> rows(1, {"solver"});
   for (double level : AccuracyLevels()) rows[0].push_back("to " + Format("%.0e", level));
   for (const RunRecord& run : c.runs) {
@@ -372,7 +274,7 @@ Block SpeedTable(const SceneComparison& c) {
     }
     rows.push_back(std::move(row));
   }
-  return Table(std::move(rows));
+  return TableBlock(std::move(rows));
 }
 
 const RunRecord* LargestDeviation(const SceneComparison& c) {
@@ -384,52 +286,77 @@ const RunRecord* LargestDeviation(const SceneComparison& c) {
   return largest;
 }
 
-std::vector<Block> SceneBlocks(const SceneComparison& c, Plotter& plotter) {
-  std::vector<Block> blocks = {Text(c.name, Block::Kind::kHeading)};
+std::vector<ReportBlock> SceneBlocks(const SceneComparison& c, GnuplotPlots* plots) {
+  std::vector<ReportBlock> blocks = {HeadingBlock(c.name)};
   if (!c.error.empty()) {
-    blocks.push_back(Text("Scene `" + c.file + "` not compared: " + c.error));
+    blocks.push_back(TextBlock("Scene `" + c.file + "` not compared: " + c.error));
     return blocks;
   }
-  blocks.push_back(Text(ReferenceText(c)));
+  blocks.push_back(TextBlock(ReferenceText(c)));
   blocks.push_back(
-      Text("Final state of every run (time: median of the repeats, without the "
-           "time spent measuring in the iteration callback):"));
+      TextBlock("Final state of every run (time: median of the repeats, without the "
+                "time spent measuring in the iteration callback):"));
   blocks.push_back(FinalTable(c));
   blocks.push_back(
-      Text("Time to reach a relative position error (RMS node distance to the "
-           "reference / size):"));
+      TextBlock("Time to reach a relative position error (RMS node distance to the "
+                "reference / size):"));
   blocks.push_back(SpeedTable(c));
   std::string blind;
   for (const RunRecord& run : c.runs) {
     if (!run.curve_positions_valid) blind += (blind.empty() ? "" : ", ") + run.solver;
   }
   if (!blind.empty()) {
-    blocks.push_back(Text("n/a: " + blind +
-                          " did not expose the current iterate in model.positions during the "
-                          "iteration callback, so their intermediate position errors are "
-                          "unknown (their final state above is measured)."));
+    blocks.push_back(TextBlock("n/a: " + blind +
+                               " did not expose the current iterate in model.positions during the "
+                               "iteration callback, so their intermediate position errors are "
+                               "unknown (their final state above is measured)."));
   }
-  if (!plotter.enabled()) return blocks;
+  if (!plots) return blocks;
+  GnuplotPlots& plotter = *plots;
   if (std::string png = CurvesPlot(c, plotter); !png.empty()) {
-    blocks.push_back(Image(png, "Position error against time, " + c.name));
+    blocks.push_back(ImageBlock(png, "Position error against time, " + c.name));
   }
   if (std::string png = DrapePlot(c, c.reference.positions, false, "reference",
                                   c.name + ": reference (" + c.reference.method + ")", plotter);
       !png.empty()) {
-    blocks.push_back(Image(png, "Reference drape, " + c.name));
+    blocks.push_back(ImageBlock(png, "Reference drape, " + c.name));
   }
   if (const RunRecord* run = LargestDeviation(c)) {
     const std::string title =
         c.name + ": " + run->solver + ", largest distance " + Number(run->error.max_m) + " m";
     if (std::string png = DrapePlot(c, run->positions, true, "deviation", title, plotter);
         !png.empty()) {
-      blocks.push_back(Image(png, "Largest deviation: " + run->solver + " on " + c.name));
+      blocks.push_back(ImageBlock(png, "Largest deviation: " + run->solver + " on " + c.name));
     }
   }
   return blocks;
 }
 
-std::vector<Block> HeaderBlocks(const CompareOptions& options, double total_time_s) {
+// compare.json: how the report was made (ProvenanceMembers) and what was asked, beside the CSV
+// files (which carry no comment line, so that pandas reads them as they are).
+void WriteCompareJson(const CompareOptions& options, double total_time_s, std::ostream& out) {
+  std::string scenes, solvers;
+  for (const std::string& scene : options.scenes) {
+    scenes += (scenes.empty() ? "" : ", ") + JsonString(scene);
+  }
+  for (const std::string& solver : options.solvers) {
+    solvers += (solvers.empty() ? "" : ", ") + JsonString(solver);
+  }
+  out << "{\n  \"scenes\": [" << scenes << "],\n  \"solvers\": [" << solvers
+      << "],\n  \"repeat\": " << options.repeat
+      << ",\n  \"time_limit_s\": " << JsonNumber(options.time_limit)
+      << ",\n  \"reference_tolerance\": " << JsonNumber(options.reference_tolerance)
+      << ",\n  \"total_time_s\": " << JsonNumber(total_time_s)
+      << ",\n  \"files\": [\"runs.csv\", \"curves.csv\", \"references.csv\", \"report.md\", "
+         "\"report.html\"]";
+  for (const auto& [key, value] :
+       ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
+    out << ",\n  " << JsonString(key) << ": " << value;
+  }
+  out << "\n}\n";
+}
+
+std::vector<ReportBlock> HeaderBlocks(const CompareOptions& options, double total_time_s) {
   const LibraryThreads threads = RunLibrariesOnOneThread();
   std::ostringstream machine;
   machine << "Machine: " << CpuModel() << ", " << std::thread::hardware_concurrency()
@@ -453,138 +380,9 @@ std::vector<Block> HeaderBlocks(const CompareOptions& options, double total_time
             "each run, minus the resident size (VmRSS) at its start. Total time of this "
             "comparison: "
          << Seconds(total_time_s) << '.';
-  return {Text("drape solver comparison", Block::Kind::kHeading), Text(machine.str()),
-          Text(method.str())};
-}
-
-// ---- Markdown and HTML --------------------------------------------------------------------------
-
-// Text for Markdown (`|` escaped) or HTML (`<`, `>`, `&` escaped, and Markdown's `code` spans
-// turned into <code> elements, so no backtick shows).
-std::string Escaped(const std::string& text, bool html) {
-  std::string escaped;
-  bool code = false;
-  for (char c : text) {
-    if (html && c == '`') {
-      escaped += code ? "</code>" : "<code>";
-      code = !code;
-    } else if (html && c == '<')
-      escaped += "&lt;";
-    else if (html && c == '>')
-      escaped += "&gt;";
-    else if (html && c == '&')
-      escaped += "&amp;";
-    else if (!html && c == '|')
-      escaped += "\\|";
-    else
-      escaped += c;
-  }
-  return code ? escaped + "</code>" : escaped;
-}
-
-// Text for an HTML attribute: escaped, without Markdown's backticks.
-std::string AttributeText(const std::string& text) {
-  std::string plain;
-  for (char c : text) {
-    if (c == '"') {
-      plain += "&quot;";
-    } else if (c != '`') {
-      plain += c;
-    }
-  }
-  return Escaped(plain, true);
-}
-
-void WriteMarkdown(const std::vector<Block>& blocks, std::ostream& out) {
-  bool first_heading = true;
-  for (const Block& block : blocks) {
-    switch (block.kind) {
-      case Block::Kind::kHeading:
-        out << (first_heading ? "# " : "## ") << block.text << "\n\n";
-        first_heading = false;
-        break;
-      case Block::Kind::kText:
-        out << block.text << "\n\n";
-        break;
-      case Block::Kind::kImage:
-        out << "![" << block.text << "](" << block.image << ")\n\n";
-        break;
-      case Block::Kind::kTable:
-        for (size_t r = 0; r < block.rows.size(); ++r) {
-          out << '|';
-          for (const std::string& cell : block.rows[r]) out << ' ' << Escaped(cell, false) << " |";
-          out << '\n';
-          if (r == 0) {
-            out << '|';
-            for (size_t k = 0; k < block.rows[0].size(); ++k)
-              out << (k == 0 || block.rows[0][k] == "reason" ? "---|" : "--:|");
-            out << '\n';
-          }
-        }
-        out << '\n';
-        break;
-    }
-  }
-}
-
-std::string Base64(const std::string& bytes) {
-  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string encoded;
-  size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned value = (static_cast<unsigned char>(bytes[i]) << 16) |
-                           (static_cast<unsigned char>(bytes[i + 1]) << 8) |
-                           static_cast<unsigned char>(bytes[i + 2]);
-    for (int shift = 18; shift >= 0; shift -= 6) encoded += alphabet[(value >> shift) & 63];
-  }
-  if (i < bytes.size()) {
-    unsigned value = static_cast<unsigned char>(bytes[i]) << 16;
-    if (i + 1 < bytes.size()) value |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-    encoded += alphabet[(value >> 18) & 63];
-    encoded += alphabet[(value >> 12) & 63];
-    encoded += i + 1 < bytes.size() ? alphabet[(value >> 6) & 63] : '=';
-    encoded += '=';
-  }
-  return encoded;
-}
-
-void WriteHtml(const std::vector<Block>& blocks, const fs::path& out_dir, std::ostream& out) {
-  out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>drape solver comparison"
-         "</title><style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
-         "table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #bbb;padding:2px "
-         "6px}td{text-align:right}td:first-child,td:last-child{text-align:left}img{max-width:100%"
-         "}</style></head><body>\n";
-  bool first_heading = true;
-  for (const Block& block : blocks) {
-    switch (block.kind) {
-      case Block::Kind::kHeading:
-        out << (first_heading ? "<h1>" : "<h2>") << Escaped(block.text, true)
-            << (first_heading ? "</h1>\n" : "</h2>\n");
-        first_heading = false;
-        break;
-      case Block::Kind::kText:
-        out << "<p>" << Escaped(block.text, true) << "</p>\n";
-        break;
-      case Block::Kind::kImage:
-        out << "<figure><img alt=\"" << AttributeText(block.text)
-            << "\" src=\"data:image/png;base64," << Base64(ReadWholeFile(out_dir / block.image))
-            << "\"><figcaption>" << Escaped(block.text, true) << "</figcaption></figure>\n";
-        break;
-      case Block::Kind::kTable:
-        out << "<table>\n";
-        for (size_t r = 0; r < block.rows.size(); ++r) {
-          out << "<tr>";
-          for (const std::string& cell : block.rows[r]) {
-            out << (r == 0 ? "<th>" : "<td>") << Escaped(cell, true)
-                << (r == 0 ? "</th>" : "</td>");
-          }
-          out << "</tr>\n";
-        }
-        out << "</table>\n";
-        break;
-    }
-  }
-  out << "</body></html>\n";
+  return {HeadingBlock("drape solver comparison"),
+          TextBlock(ProvenanceLine(Provenance{options.command_line, options.overrides}) + "."),
+          TextBlock(machine.str()), TextBlock(method.str())};
 }
 
 }  // namespace
@@ -597,23 +395,29 @@ void WriteCompareReport(const std::vector<SceneComparison>& comparisons,
   WriteAtomically(out_dir / "curves.csv", [&](std::ostream& o) { WriteCurvesCsv(comparisons, o); });
   WriteAtomically(out_dir / "references.csv",
                   [&](std::ostream& o) { WriteReferencesCsv(comparisons, o); });
+  WriteAtomically(out_dir / "compare.json",
+                  [&](std::ostream& o) { WriteCompareJson(options, total_time_s, o); });
 
-  Plotter plotter(options, out_dir, log);
-  std::vector<Block> blocks = HeaderBlocks(options, total_time_s);
-  if (plotter.enabled()) {
-    if (std::string png = ParetoPlot(comparisons, plotter); !png.empty()) {
-      blocks.push_back(Image(png, "Time against final position error, every solver and scene"));
+  std::optional<GnuplotPlots> plots;
+  if (options.plots) plots.emplace(out_dir, options.tools_dir, log);
+  std::vector<ReportBlock> blocks = HeaderBlocks(options, total_time_s);
+  if (plots) {
+    if (std::string png = ParetoPlot(comparisons, *plots); !png.empty()) {
+      blocks.push_back(
+          ImageBlock(png, "Time against final position error, every solver and scene"));
     }
   }
   for (const SceneComparison& comparison : comparisons) {
-    std::vector<Block> scene_blocks = SceneBlocks(comparison, plotter);
+    std::vector<ReportBlock> scene_blocks = SceneBlocks(comparison, plots ? &*plots : nullptr);
     blocks.insert(blocks.end(), scene_blocks.begin(), scene_blocks.end());
   }
   blocks.push_back(
-      Text("Raw numbers: runs.csv (one row per run), curves.csv (one row per "
-           "iteration per run), references.csv (one row per scene)."));
-  WriteAtomically(out_dir / "report.md", [&](std::ostream& o) { WriteMarkdown(blocks, o); });
-  WriteAtomically(out_dir / "report.html", [&](std::ostream& o) { WriteHtml(blocks, out_dir, o); });
+      TextBlock("Raw numbers: runs.csv (one row per run), curves.csv (one row per "
+                "iteration per run), references.csv (one row per scene); how they were made: "
+                "compare.json."));
+  WriteAtomically(out_dir / "report.md", [&](std::ostream& o) { WriteMarkdownReport(blocks, o); });
+  WriteAtomically(out_dir / "report.html",
+                  [&](std::ostream& o) { WriteHtmlReport(blocks, out_dir, o); });
 }
 
 }  // namespace drape

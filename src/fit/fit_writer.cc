@@ -16,7 +16,10 @@
 
 #include "src/fit/fit_measurements.h"
 #include "src/output/atomic_file.h"
+#include "src/output/csv_field.h"
 #include "src/output/json.h"
+#include "src/output/png_text.h"
+#include "src/output/report_page.h"
 #include "src/output/writers.h"
 
 namespace drape {
@@ -24,8 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// fit.json's numbers carry 10 significant digits.
-std::string Number(double value) { return JsonNumber(value, 10); }
+// fit.json's numbers read back exactly (null where not finite); report.md shows 6 digits.
+std::string Number(double value) { return JsonNumber(value); }
+std::string Shown(double value) { return RoundedNumber(value, 6); }
 
 const FitMeasurement& MeasurementOf(const FitProblem& problem, const ResidualBlock& block) {
   return problem.spec().specimens[block.specimen].measurements[block.measurement];
@@ -47,7 +51,43 @@ bool IsScalar(const FitMeasurement& measurement) {
          measurement.kind == FitMeasurement::Kind::kBendingLength;
 }
 
-void WriteJson(const FitProblem& problem, const FitResult& result, std::ostream& out) {
+// The unit of a fitted scene key, from the material registry of summary.json's material_si
+// (src/output/writers.h): the value the key names (material.finite_volume.D_warp → D_warp), or
+// the family it sets as a whole (material.springs.structural → structural.warp and .weft, one
+// unit); "" for a key that is not a material value.
+std::string ParameterUnit(const std::string& key, const Scene& scene) {
+  const std::string prefix = "material.";
+  if (key.rfind(prefix, 0) != 0) return "";
+  const std::string rest = key.substr(prefix.size());
+  const std::string last = rest.substr(rest.find_last_of('.') + 1);
+  auto ends_with = [&rest](const std::string& name) {
+    return rest == name ||
+           (rest.size() > name.size() && rest[rest.size() - name.size() - 1] == '.' &&
+            rest.compare(rest.size() - name.size(), name.size(), name) == 0);
+  };
+  for (const MaterialValue& value : MaterialSiValues(scene.material)) {
+    if (ends_with(value.key) || value.key.rfind(last + ".", 0) == 0) return value.unit;
+  }
+  return "";
+}
+
+// The unit of each fitted parameter (ParameterUnit on the scene of a solved specimen; "" where
+// there is none).
+std::vector<std::string> ParameterUnits(const FitProblem& problem) {
+  const auto& parameters = problem.spec().parameters;
+  const auto& equilibria = problem.equilibria();
+  const auto solved = std::find_if(equilibria.begin(), equilibria.end(),
+                                   [](const FitEquilibrium& e) { return e.model != nullptr; });
+  std::vector<std::string> units;
+  units.reserve(parameters.size());
+  for (const auto& parameter : parameters) {
+    units.push_back(solved == equilibria.end() ? "" : ParameterUnit(parameter.key, solved->scene));
+  }
+  return units;
+}
+
+void WriteJson(const FitProblem& problem, const FitResult& result, const Provenance& provenance,
+               std::ostream& out) {
   const auto& parameters = problem.spec().parameters;
   const int p = static_cast<int>(parameters.size());
   out << "{\n  \"fit_file\": " << JsonString(problem.spec().file) << ",\n";
@@ -71,6 +111,8 @@ void WriteJson(const FitProblem& problem, const FitResult& result, std::ostream&
   by_key("parameters", [&](int j) { return Number(result.parameters[j]); });
   by_key("initial", [&](int j) { return Number(parameters[j].initial); });
   by_key("standard_errors", [&](int j) { return Number(result.standard_errors[j]); });
+  const std::vector<std::string> units = ParameterUnits(problem);
+  by_key("units", [&](int j) { return JsonString(units[j]); });
   by_key("identifiable", [&](int j) {
     return std::string(result.identifiability.identifiable[j] ? "true" : "false");
   });
@@ -101,7 +143,11 @@ void WriteJson(const FitProblem& problem, const FitResult& result, std::ostream&
     }
     out << ", \"unit\": " << JsonString(UnitOf(measurement)) << "}";
   }
-  out << "\n  ]\n}\n";
+  out << "\n  ]";
+  for (const auto& [key, value] : ProvenanceMembers(provenance)) {
+    out << ",\n  " << JsonString(key) << ": " << value;
+  }
+  out << "\n}\n";
 }
 
 void WriteHistory(const FitProblem& problem, const FitResult& result, std::ostream& out) {
@@ -109,10 +155,11 @@ void WriteHistory(const FitProblem& problem, const FitResult& result, std::ostre
   for (const auto& parameter : problem.spec().parameters) out << "," << parameter.key;
   out << "\n";
   for (const auto& record : result.history) {
-    out << record.evaluation << "," << Number(record.time_s) << "," << Number(record.objective)
-        << "," << Number(record.best_objective) << "," << record.inner_iterations << ","
-        << (record.inner_converged ? 1 : 0) << "," << (record.with_jacobian ? 1 : 0);
-    for (double value : record.parameters) out << "," << Number(value);
+    out << record.evaluation << "," << CsvNumber(record.time_s) << ","
+        << CsvNumber(record.objective) << "," << CsvNumber(record.best_objective) << ","
+        << record.inner_iterations << "," << (record.inner_converged ? 1 : 0) << ","
+        << (record.with_jacobian ? 1 : 0);
+    for (double value : record.parameters) out << "," << CsvNumber(value);
     out << "\n";
   }
 }
@@ -121,71 +168,69 @@ void WriteSensitivity(const std::vector<Sensitivity>& table, std::ostream& out) 
   out << "measurement,parameter,unit,d_measurement_d_parameter,d_measurement_d_ln_parameter\n";
   for (const auto& row : table) {
     out << JsonString(row.measurement) << "," << row.parameter << "," << row.unit << ","
-        << Number(row.per_parameter) << "," << Number(row.per_log_parameter) << "\n";
+        << CsvNumber(row.per_parameter) << "," << CsvNumber(row.per_log_parameter) << "\n";
   }
 }
 
-void WriteReport(const FitProblem& problem, const FitResult& result,
-                 const std::vector<Sensitivity>& table, std::ostream& out) {
+// report.md and report.html: the outcome, fit.png, the parameters (with their units), the
+// measurements at the optimum, the sensitivities and the identifiability.
+std::vector<ReportBlock> ReportBlocks(const FitProblem& problem, const FitResult& result,
+                                      const std::vector<Sensitivity>& table,
+                                      const Provenance& provenance) {
   const auto& parameters = problem.spec().parameters;
-  out << "# Fit report: " << problem.spec().name << "\n\n";
-  out << "Fit file `" << problem.spec().file << "`, method `" << problem.spec().method
-      << "`: " << (result.converged ? "converged" : "NOT converged") << " (" << result.termination
-      << ") after " << result.evaluations << " evaluations (" << result.jacobian_evaluations
-      << " with Jacobian), " << Number(result.wall_time_s)
-      << " s. Objective ½Σr² = " << Number(result.objective) << ", residual variance "
-      << Number(result.residual_variance)
-      << ".\n\n## Parameters\n\n| key | initial | fitted | standard error | identifiable |\n"
-      << "|---|---|---|---|---|\n";
+  std::ostringstream outcome;
+  outcome << "Fit file `" << problem.spec().file << "`, method `" << problem.spec().method
+          << "`: " << (result.converged ? "converged" : "NOT converged") << " ("
+          << result.termination << ") after " << result.evaluations << " evaluations ("
+          << result.jacobian_evaluations << " with Jacobian), " << Shown(result.wall_time_s)
+          << " s. Objective ½Σr² = " << Shown(result.objective) << ", residual variance "
+          << Shown(result.residual_variance) << ".";
+  std::vector<ReportBlock> blocks = {
+      HeadingBlock("Fit report: " + problem.spec().name), TextBlock(ProvenanceLine(provenance)),
+      TextBlock(outcome.str()),
+      ImageBlock("fit.png", "The fitted shape (blue) and the measured points (red)"),
+      HeadingBlock("Parameters")};
+  const std::vector<std::string> units = ParameterUnits(problem);
+  std::vector<std::vector<std::string>> rows = {
+      {"key", "initial", "fitted", "unit", "standard error", "identifiable"}};
   for (size_t j = 0; j < parameters.size(); ++j) {
-    out << "| " << parameters[j].key << " | " << Number(parameters[j].initial) << " | "
-        << Number(result.parameters[j]) << " | "
-        << (std::isfinite(result.standard_errors[j]) ? Number(result.standard_errors[j]) : "—")
-        << " | " << (result.identifiability.identifiable[j] ? "yes" : "**no**") << " |\n";
+    rows.push_back(
+        {parameters[j].key, Shown(parameters[j].initial), Shown(result.parameters[j]), units[j],
+         std::isfinite(result.standard_errors[j]) ? Shown(result.standard_errors[j]) : "—",
+         result.identifiability.identifiable[j] ? "yes" : "NO"});
   }
-  out << "\n## Measurements at the optimum\n\n| measurement | measured | model | unit |\n"
-      << "|---|---|---|---|\n";
-  const auto& blocks = problem.blocks();
-  for (size_t b = 0; b < blocks.size(); ++b) {
-    const FitMeasurement& measurement = MeasurementOf(problem, blocks[b]);
-    out << "| " << blocks[b].label << " | "
-        << (IsScalar(measurement) ? Number(measurement.value) : "rms difference") << " | "
-        << Number(result.final_evaluation.model_values[b]) << " | " << UnitOf(measurement)
-        << " |\n";
+  blocks.push_back(TableBlock(std::move(rows)));
+  blocks.push_back(HeadingBlock("Measurements at the optimum"));
+  rows = {{"measurement", "measured", "model", "unit"}};
+  const auto& residual_blocks = problem.blocks();
+  for (size_t b = 0; b < residual_blocks.size(); ++b) {
+    const FitMeasurement& measurement = MeasurementOf(problem, residual_blocks[b]);
+    rows.push_back({residual_blocks[b].label,
+                    IsScalar(measurement) ? Shown(measurement.value) : "rms difference",
+                    Shown(result.final_evaluation.model_values[b]), UnitOf(measurement)});
   }
-  out << "\n## Sensitivity (∂measurement/∂parameter at the optimum)\n\n"
-      << "Vector measurements: root-mean-square over their components.\n\n"
-      << "| measurement | parameter | ∂m/∂θ | ∂m/∂ln θ | unit of m |\n|---|---|---|---|---|\n";
+  blocks.push_back(TableBlock(std::move(rows)));
+  blocks.push_back(HeadingBlock("Sensitivity (∂measurement/∂parameter at the optimum)"));
+  blocks.push_back(TextBlock("Vector measurements: root-mean-square over their components."));
+  rows = {{"measurement", "parameter", "∂m/∂θ", "∂m/∂ln θ", "unit of m"}};
   for (const auto& row : table) {
-    out << "| " << row.measurement << " | " << row.parameter << " | " << Number(row.per_parameter)
-        << " | " << Number(row.per_log_parameter) << " | " << row.unit << " |\n";
+    rows.push_back({row.measurement, row.parameter, Shown(row.per_parameter),
+                    Shown(row.per_log_parameter), row.unit});
   }
-  out << "\n## Identifiability\n\nSingular values of the Jacobian of the normalised residuals "
-         "(residual / measurement uncertainty) with respect to the (log-)parameters:";
-  for (double s : result.identifiability.singular_values) out << " " << Number(s);
-  out << ". A direction whose singular value is below 1 changes the fit by less than one "
-         "measurement uncertainty per unit step (a factor e of a log parameter).\n\n";
-  for (const auto& statement : result.identifiability.statements) out << "- " << statement << "\n";
-}
-
-// The unit of a fitted scene key, from the material registry of summary.json's material_si
-// (src/output/writers.h): the value the key names (material.finite_volume.D_warp → D_warp), or
-// the family it sets as a whole (material.springs.structural → structural.warp and .weft, one
-// unit); "" for a key that is not a material value.
-std::string ParameterUnit(const std::string& key, const Scene& scene) {
-  const std::string prefix = "material.";
-  if (key.rfind(prefix, 0) != 0) return "";
-  const std::string rest = key.substr(prefix.size());
-  const std::string last = rest.substr(rest.find_last_of('.') + 1);
-  auto ends_with = [&rest](const std::string& name) {
-    return rest == name ||
-           (rest.size() > name.size() && rest[rest.size() - name.size() - 1] == '.' &&
-            rest.compare(rest.size() - name.size(), name.size(), name) == 0);
-  };
-  for (const MaterialValue& value : MaterialSiValues(scene.material)) {
-    if (ends_with(value.key) || value.key.rfind(last + ".", 0) == 0) return value.unit;
+  blocks.push_back(TableBlock(std::move(rows)));
+  blocks.push_back(HeadingBlock("Identifiability"));
+  std::string singular;
+  for (double s : result.identifiability.singular_values) singular += " " + Shown(s);
+  blocks.push_back(TextBlock(
+      "Singular values of the Jacobian of the normalised residuals (residual / measurement "
+      "uncertainty) with respect to the (log-)parameters:" +
+      singular +
+      ". A direction whose singular value is below 1 changes the fit by less than one "
+      "measurement uncertainty per unit step (a factor e of a log parameter)."));
+  for (const auto& statement : result.identifiability.statements) {
+    blocks.push_back(TextBlock(statement));
   }
-  return "";
+  return blocks;
 }
 
 const FitEquilibrium& PlottedEquilibrium(const FitProblem& problem) {
@@ -247,7 +292,7 @@ void DrawAxes(cairo_t* cr, const ViewFrame& view, const std::array<std::string, 
     const int axis = view.axes[a];
     for (double tick : AxisTicks(view.low[axis], view.low[axis] + view.span)) {
       const double at = (tick - view.low[axis]) / view.span * view.size;
-      const std::string label = JsonNumber(tick, 4);
+      const std::string label = RoundedNumber(tick, 4);
       if (a == 0) {
         const double px = view.left + at, py = view.top + view.size;
         cairo_move_to(cr, px, py);
@@ -344,6 +389,7 @@ void WritePng(const FitProblem& problem, const FitResult& result, const fs::path
   const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error("cannot write " + path.string());
+  AddDrapeVersionToPngFile(path);
 }
 
 }  // namespace
@@ -396,29 +442,27 @@ FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result) {
   text.titles = {"side view: fitted shape (blue), measured points (red)", "top view"};
   text.axis_labels = {"x (m)", "y (m)", "z (m)"};
   const auto& parameters = problem.spec().parameters;
-  const auto& equilibria = problem.equilibria();
-  const auto solved = std::find_if(equilibria.begin(), equilibria.end(),
-                                   [](const FitEquilibrium& e) { return e.model != nullptr; });
+  const std::vector<std::string> units = ParameterUnits(problem);
   for (size_t j = 0; j < parameters.size() && j < result.parameters.size(); ++j) {
-    const std::string unit =
-        solved == equilibria.end() ? "" : ParameterUnit(parameters[j].key, solved->scene);
-    std::string line = parameters[j].key + " = " + JsonNumber(result.parameters[j], 6);
+    const std::string& unit = units[j];
+    std::string line = parameters[j].key + " = " + RoundedNumber(result.parameters[j], 6);
     if (!unit.empty() && unit != "1") line += " " + unit;
     if (j < result.standard_errors.size()) {
       const double error = result.standard_errors[j];
-      line += std::isfinite(error) ? " (standard error " + JsonNumber(error, 3) + ")"
+      line += std::isfinite(error) ? " (standard error " + RoundedNumber(error, 3) + ")"
                                    : " (not identifiable)";
     }
     text.caption.push_back(line);
   }
   const Eigen::Index residuals = result.jacobian.rows();
   std::string residual =
-      "final residual: objective 1/2 sum r^2 = " + JsonNumber(result.objective, 6) +
+      "final residual: objective 1/2 sum r^2 = " + RoundedNumber(result.objective, 6) +
       " (r = (model - measured) / sigma)";
   if (residuals > 0) {
-    residual += ", RMS r = " +
-                JsonNumber(std::sqrt(2.0 * result.objective / static_cast<double>(residuals)), 4) +
-                " over " + std::to_string(residuals) + " residuals";
+    residual +=
+        ", RMS r = " +
+        RoundedNumber(std::sqrt(2.0 * result.objective / static_cast<double>(residuals)), 4) +
+        " over " + std::to_string(residuals) + " residuals";
   }
   text.caption.push_back(residual);
   text.caption.push_back(std::string("converged ") + (result.converged ? "yes" : "no") + ", " +
@@ -428,19 +472,23 @@ FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result) {
 }
 
 void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
-                     const std::string& directory) {
+                     const std::string& directory, const Provenance& provenance) {
   const fs::path folder(directory);
   fs::create_directories(folder);
   const std::vector<Sensitivity> table = SensitivityTable(problem, result);
-  WriteAtomically(folder / "fit.json", [&](std::ostream& out) { WriteJson(problem, result, out); });
+  WriteAtomically(folder / "fit.json",
+                  [&](std::ostream& out) { WriteJson(problem, result, provenance, out); });
   WriteAtomically(folder / "history.csv",
                   [&](std::ostream& out) { WriteHistory(problem, result, out); });
   WriteAtomically(folder / "sensitivity.csv",
                   [&](std::ostream& out) { WriteSensitivity(table, out); });
-  WriteAtomically(folder / "report.md",
-                  [&](std::ostream& out) { WriteReport(problem, result, table, out); });
   WriteFileAtomically(folder / "fit.png",
                       [&](const fs::path& path) { WritePng(problem, result, path); });
+  const std::vector<ReportBlock> report = ReportBlocks(problem, result, table, provenance);
+  WriteAtomically(folder / "report.md",
+                  [&](std::ostream& out) { WriteMarkdownReport(report, out); });
+  WriteAtomically(folder / "report.html",
+                  [&](std::ostream& out) { WriteHtmlReport(report, folder, out); });
 }
 
 }  // namespace drape

@@ -1,5 +1,6 @@
-// The outputs of `drape fit`: fit.json, history.csv, sensitivity.csv, fit.png and report.md, each
-// written to a temporary name and renamed (no half-written file is left).
+// The outputs of `drape fit`: fit.json, history.csv, sensitivity.csv, fit.png, report.md and
+// report.html (the same report, fit.png embedded), each written to a temporary name and renamed
+// (no half-written file is left).
 #ifndef DRAPE_SRC_FIT_FIT_WRITER_H_
 #define DRAPE_SRC_FIT_FIT_WRITER_H_
 
@@ -10,6 +11,7 @@
 
 #include "src/fit/fit_problem.h"
 #include "src/fit/fit_solver.h"
+#include "src/output/provenance.h"
 
 namespace drape {
 
@@ -38,8 +40,9 @@ FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result);
 // step of 1, 2 or 5 × 10^k that is at least a fifth of the range (2 to 6 ticks).
 std::vector<double> AxisTicks(double low, double high);
 
+// `provenance` (src/output/provenance.h) goes into fit.json and the reports.
 void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
-                     const std::string& directory);
+                     const std::string& directory, const Provenance& provenance = {});
 
 }  // namespace drape
 

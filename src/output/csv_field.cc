@@ -15,8 +15,6 @@ std::string CsvField(const std::string& text) {
   return quoted + "\"";
 }
 
-std::string CsvNumber(double value, int digits) {
-  return std::isfinite(value) ? FormatNumber(value, digits) : "";
-}
+std::string CsvNumber(double value) { return std::isfinite(value) ? FormatNumber(value) : ""; }
 
 }  // namespace drape

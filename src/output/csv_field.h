@@ -11,9 +11,9 @@ namespace drape {
 // quote doubled and each line break turned into a space (one record per line).
 std::string CsvField(const std::string& text);
 
-// A number in a CSV cell: FormatNumber's text (`digits` significant digits; 17 round-trips), or an
-// empty cell when it is NaN or infinite (no NaN in any output).
-std::string CsvNumber(double value, int digits = 17);
+// A number in a CSV cell: FormatNumber's text (the shortest that reads back exactly), or an empty
+// cell when it is NaN or infinite (no NaN in any output).
+std::string CsvNumber(double value);
 
 }  // namespace drape
 

@@ -1,7 +1,6 @@
-// Numbers and strings as written into result files: the one number formatter and the one JSON
-// string writer used by summary.json (src/output/writers.cc), fit.json (src/fit/fit_writer.cc),
-// the comparison tables (src/compare/compare_report.cc) and the values substituted into scenes by
-// `--set` (src/fit/).
+// Numbers and strings as written into result files: the one number format and the one JSON
+// string writer of every output (summary.json, nodes.csv, mesh.vtk, scene.yaml, fit.json, the
+// comparison and sweep tables, ...) and of the values substituted into scenes by `--set`.
 #ifndef DRAPE_SRC_OUTPUT_JSON_H_
 #define DRAPE_SRC_OUTPUT_JSON_H_
 
@@ -9,12 +8,18 @@
 
 namespace drape {
 
-// `value` with `digits` significant digits (%.*g); the default 17 reads back exactly.
-// Non-finite values are written as printf writes them (nan, inf).
-std::string FormatNumber(double value, int digits = 17);
+// The shortest text that reads back as exactly `value` (std::to_chars), in the notation of %.17g
+// (fixed for decimal exponents -4 to 16, else scientific): 0.1 (not 0.10000000000000001), 100000,
+// 1e-05, 0.3333333333333333. The number format of every data file. Non-finite values are written
+// as nan, inf and -inf.
+std::string FormatNumber(double value);
+
+// `value` rounded to `digits` significant digits (%.*g): for text people read (captions, HTML and
+// Markdown tables, log lines), never for a data file.
+std::string RoundedNumber(double value, int digits);
 
 // A JSON number: FormatNumber, or null for NaN and infinities (JSON has neither).
-std::string JsonNumber(double value, int digits = 17);
+std::string JsonNumber(double value);
 
 // A JSON string literal: quotes, backslashes and control characters escaped.
 std::string JsonString(const std::string& text);

@@ -9,9 +9,11 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 
 #include "src/model/obstacle_kinds.h"
+#include "src/output/png_text.h"
 
 namespace drape {
 
@@ -29,12 +31,15 @@ cairo_status_t WriteToStream(void* closure, const unsigned char* data, unsigned 
   return *out ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
+// The picture as PNG, with drape's version in it (src/output/png_text.h).
 void WritePng(cairo_surface_t* surface, std::ostream& png) {
   cairo_surface_flush(surface);
-  const cairo_status_t status = cairo_surface_write_to_png_stream(surface, WriteToStream, &png);
+  std::ostringstream bytes;
+  const cairo_status_t status = cairo_surface_write_to_png_stream(surface, WriteToStream, &bytes);
   if (status != CAIRO_STATUS_SUCCESS) {
     throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(status));
   }
+  png << PngWithDrapeVersion(bytes.str());
 }
 
 void Text(cairo_t* cr, double x, double y, const std::string& text, double size, bool bold = false,

@@ -19,23 +19,14 @@ namespace drape {
 
 namespace {
 
-// The shortest of 15, 16 or 17 significant digits that reads back as exactly `value`.
-std::string Exact(double value) {
-  for (int digits = 15; digits < 17; ++digits) {
-    const std::string text = FormatNumber(value, digits);
-    if (std::strtod(text.c_str(), nullptr) == value) return text;
-  }
-  return FormatNumber(value);
-}
-
-// Numbers that read back exactly, lists in flow style.
-void Number(YAML::Emitter& out, double value) { out << YAML::Value << Exact(value); }
+// Numbers that read back exactly (FormatNumber), lists in flow style.
+void Number(YAML::Emitter& out, double value) { out << YAML::Value << FormatNumber(value); }
 
 void Key(YAML::Emitter& out, const std::string& key) { out << YAML::Key << key; }
 
 void Numbers(YAML::Emitter& out, const double* values, int count) {
   out << YAML::Value << YAML::Flow << YAML::BeginSeq;
-  for (int k = 0; k < count; ++k) out << Exact(values[k]);
+  for (int k = 0; k < count; ++k) out << FormatNumber(values[k]);
   out << YAML::EndSeq;
 }
 
@@ -73,8 +64,8 @@ void WriteChainMesh(const MeshSpec& mesh, YAML::Emitter& out) {
     Key(out, "points");
     out << YAML::Value << YAML::BeginSeq;
     for (const auto& point : mesh.points) {
-      out << YAML::Flow << YAML::BeginSeq << Exact(point.x()) << Exact(point.y())
-          << Exact(point.z()) << YAML::EndSeq;
+      out << YAML::Flow << YAML::BeginSeq << FormatNumber(point.x()) << FormatNumber(point.y())
+          << FormatNumber(point.z()) << YAML::EndSeq;
     }
     out << YAML::EndSeq;
     return;
@@ -328,8 +319,8 @@ void WriteForce(const ForceSpec& force, YAML::Emitter& out) {
       Key(out, "values");
       out << YAML::Value << YAML::BeginSeq;
       for (const auto& value : force.values) {
-        out << YAML::Flow << YAML::BeginSeq << Exact(value.x()) << Exact(value.y())
-            << Exact(value.z()) << YAML::EndSeq;
+        out << YAML::Flow << YAML::BeginSeq << FormatNumber(value.x()) << FormatNumber(value.y())
+            << FormatNumber(value.z()) << YAML::EndSeq;
       }
       out << YAML::EndSeq;
       break;

@@ -22,13 +22,11 @@
 #include "src/analysis/drape_analysis.h"
 #include "src/analysis/mesh_rule.h"
 #include "src/model/contact.h"
-#include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
 #include "src/output/json.h"
 #include "src/output/render.h"
 #include "src/output/result_folder.h"
 #include "src/output/scene_yaml.h"
-#include "src/output/version.h"
 #include "src/run/state_text.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
@@ -192,20 +190,13 @@ std::string BalanceObject(const Certificate& certificate) {
                     1);
 }
 
-// summary.json's provenance: the format, drape's version, the OpenBLAS kernels (the iterates'
-// rounding depends on them), the command line, its --set overrides and the material parameters in
-// SI units (with their units).
+// summary.json's provenance: the format, ProvenanceMembers (drape's version, the OpenBLAS kernels,
+// the command line, its --set overrides) and the material parameters in SI units (with their
+// units).
 void AddProvenanceMembers(const Scene& scene, const Provenance& provenance,
                           std::vector<std::pair<std::string, std::string>>* members) {
   members->emplace_back("format_version", std::to_string(kResultFormatVersion));
-  members->emplace_back("drape_version", JsonString(DrapeVersion()));
-  members->emplace_back("blas_kernels", JsonString(BlasKernelsText()));
-  members->emplace_back("command_line", JsonString(provenance.command_line));
-  std::string overrides = "[";
-  for (size_t k = 0; k < provenance.overrides.size(); ++k) {
-    overrides += (k ? ", " : "") + JsonString(provenance.overrides[k]);
-  }
-  members->emplace_back("overrides", overrides + "]");
+  for (auto& member : ProvenanceMembers(provenance)) members->push_back(std::move(member));
   std::vector<std::pair<std::string, std::string>> values = {
       {"model", JsonString(MaterialModelName(scene.material.model))}};
   std::vector<std::pair<std::string, std::string>> units;
@@ -215,6 +206,45 @@ void AddProvenanceMembers(const Scene& scene, const Provenance& provenance,
   }
   values.emplace_back("units", JsonObject(units, 2));
   members->emplace_back("material_si", JsonObject(values, 1));
+}
+
+// summary.json's `units`: the unit of each member whose name carries none (a path through the
+// objects, `levels[]` for every level; "1" for a ratio). A member the run does not write is not
+// in the file, its unit is listed all the same. `statistics` are the method's own, in its units.
+std::string UnitsObject() {
+  static const std::vector<std::pair<std::string, std::string>> units = {
+      {"energy", "J"},
+      {"residual.max_node_force", "N"},
+      {"residual.relative", "1"},
+      {"residual.round_off_floor", "1"},
+      {"reactions.sum", "N"},
+      {"balance.reactions", "N"},
+      {"balance.contact", "N"},
+      {"balance.constraint", "N"},
+      {"balance.weight_and_loads", "N"},
+      {"balance.relative_error", "1"},
+      {"min_eigenvalue", "N/m"},
+      {"drape_coefficient", "1"},
+      {"drape.cusick", "1"},
+      {"drape.ratio", "1"},
+      {"mesh_rule.expected_drape_coefficient_error", "1"},
+      {"contact.thickness", "m"},
+      {"contact.stiffness", "N/m^2"},
+      {"contact.max_penetration", "m"},
+      {"contact.max_penetration_fraction", "1"},
+      {"contact.allowed_fraction", "1"},
+      {"contact.force_sum", "N"},
+      {"contact.force_by_obstacle", "N"},
+      {"tolerance", "1"},
+      {"levels[].energy", "J"},
+      {"levels[].drape_coefficient", "1"},
+      {"extrapolation.energy", "J"},
+      {"extrapolation.drape_coefficient", "1"},
+      {"drape_coefficient_error.estimate", "1"}};
+  std::vector<std::pair<std::string, std::string>> members;
+  members.reserve(units.size());
+  for (const auto& [path, unit] : units) members.emplace_back(path, JsonString(unit));
+  return JsonObject(members, 1);
 }
 
 void WriteSummary(const Scene& scene, const Model& model, const RunResult& result,
@@ -273,6 +303,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   members.emplace_back("statistics",
                        JsonMap(summary.statistics, 1, [](double v) { return JsonNumber(v); }));
   if (levels) AddLevelsMembers(*levels, &members);
+  members.emplace_back("units", UnitsObject());
   AddProvenanceMembers(scene, provenance, &members);
   out << JsonObject(members, 0) << "\n";
 }
@@ -369,7 +400,7 @@ void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) 
 }
 
 void WriteHistory(const SolverSummary& summary, std::ostream& out) {
-  out << "iteration,time_s,energy,residual\n";
+  out << "iteration,time_s,energy_J,relative_residual\n";
   for (const IterationRecord& record : summary.history) {
     out << record.iteration << ',' << FormatNumber(record.time_s) << ','
         << FormatNumber(record.energy) << ',' << FormatNumber(record.relative_residual) << '\n';
@@ -486,12 +517,14 @@ void WriteCellScalars(const std::string& name, const std::vector<double>& values
   for (double value : values) out << FormatNumber(value) << '\n';
 }
 
-// Legacy ASCII VTK unstructured grid: triangles (VTK_TRIANGLE) and line elements (VTK_LINE); per
-// node its id, displacement from the start, reaction, residual and contact force (N), the
-// per-coordinate fixed mask (0/1 × 3) and in_contact (0/1); per cell the strain (CellStrains) and,
-// on a woven lattice, the yarn strains and shear angle (CellYarnMeasures).
-void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, std::ostream& out) {
-  std::string title = "drape " + scene.name;
+// Legacy ASCII VTK unstructured grid, titled with drape's provenance and the scene: triangles
+// (VTK_TRIANGLE) and line elements (VTK_LINE); per node its height (z, m: the first field, which a
+// viewer shows by default), displacement from the start (m), reaction, residual and contact force
+// (N), the per-coordinate fixed mask (0/1 × 3), in_contact (0/1) and its id; per cell the strain
+// (CellStrains) and, on a woven lattice, the yarn strains and shear angle (CellYarnMeasures).
+void WriteVtk(const Scene& scene, const Model& model, const RunResult& result,
+              const Provenance& provenance, std::ostream& out) {
+  std::string title = ProvenanceLine(provenance) + "; scene: " + scene.name;
   std::replace(title.begin(), title.end(), '\n', ' ');
   out << "# vtk DataFile Version 3.0\n"
       << title.substr(0, 250) << "\nASCII\nDATASET UNSTRUCTURED_GRID\n";
@@ -507,8 +540,10 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
   out << "CELL_TYPES " << cells << '\n';
   for (size_t k = 0; k < cells; ++k) out << (k < model.triangles.size() ? 5 : 3) << '\n';
   out << "POINT_DATA " << model.num_nodes << '\n';
-  out << "SCALARS id int 1\nLOOKUP_TABLE default\n";
-  for (int node = 0; node < model.num_nodes; ++node) out << node << '\n';
+  out << "SCALARS height double 1\nLOOKUP_TABLE default\n";
+  for (int node = 0; node < model.num_nodes; ++node) {
+    out << FormatNumber(model.positions[3 * node + 2]) << '\n';
+  }
   WriteVectors(
       "displacement",
       [&model](int k) {
@@ -529,6 +564,8 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result, s
   }
   out << "SCALARS in_contact int 1\nLOOKUP_TABLE default\n";
   for (int node = 0; node < model.num_nodes; ++node) out << InContact(result, node) << '\n';
+  out << "SCALARS id int 1\nLOOKUP_TABLE default\n";
+  for (int node = 0; node < model.num_nodes; ++node) out << node << '\n';
   if (cells == 0) return;
   out << "CELL_DATA " << cells << '\n';
   WriteCellScalars("strain", CellStrains(model), out);
@@ -588,11 +625,13 @@ Eigen::Vector3d ObjAxes(const Eigen::Vector3d& v, const std::string& up) {
   return {v.x(), v.z(), -v.y()};
 }
 
-// Wavefront OBJ: vertices (z up as solved, or y up with output.obj_up: y), and for a surface the
-// vertex normals and the flat pattern as texture coordinates (f v/vt/vn), then line elements
-// (1-based).
-void WriteObj(const Scene& scene, const Model& model, std::ostream& out) {
+// Wavefront OBJ: a comment with drape's provenance, vertices (z up as solved, or y up with
+// output.obj_up: y), and for a surface the vertex normals and the flat pattern as texture
+// coordinates (f v/vt/vn), then line elements (1-based).
+void WriteObj(const Scene& scene, const Model& model, const Provenance& provenance,
+              std::ostream& out) {
   const std::string& up = scene.output.obj_up;
+  out << "# " << ProvenanceLine(provenance) << "\n";
   out << "# drape: " << scene.name << " (" << up << " up, m)\n";
   for (int node = 0; node < model.num_nodes; ++node) {
     const Eigen::Vector3d p = ObjAxes(model.position(node), up);
@@ -737,12 +776,14 @@ const std::vector<OutputFileWriter>& OutputFileWriters() {
        {Kind::kVtk},
        nullptr,
        [](const OutputContext& c, std::ostream& out) {
-         WriteVtk(c.scene, c.model, c.report.result, out);
+         WriteVtk(c.scene, c.model, c.report.result, c.provenance, out);
        }},
       {"mesh.obj",
        {Kind::kObj},
        nullptr,
-       [](const OutputContext& c, std::ostream& out) { WriteObj(c.scene, c.model, out); }},
+       [](const OutputContext& c, std::ostream& out) {
+         WriteObj(c.scene, c.model, c.provenance, out);
+       }},
       {"profile.csv",
        {Kind::kProfile},
        HasDrape,
@@ -777,8 +818,10 @@ void WriteOutputs(const Scene& scene, const Model& model, const SolveReport& rep
     WriteAtomically(folder / OutputFileName(writer.file, report.result.summary.solver),
                     [&](std::ostream& out) { writer.write(context, out); });
   }
-  WriteAtomically(folder / kSolvedSceneFile,
-                  [&](std::ostream& out) { WriteSceneYaml(scene, out); });
+  WriteAtomically(folder / kSolvedSceneFile, [&](std::ostream& out) {
+    out << "# " << ProvenanceLine(provenance) << "\n";
+    WriteSceneYaml(scene, out);
+  });
   result_folder.Commit();
 }
 

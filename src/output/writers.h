@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "src/model/model.h"
+#include "src/output/provenance.h"
 #include "src/run/solve_report.h"
 #include "src/scene/scene.h"
 
@@ -21,15 +22,9 @@ namespace drape {
 // that an unwritable folder costs no solving). Throws std::runtime_error saying why not.
 void CheckOutputWritable(const std::string& directory);
 
-// The version of the result files' layout (summary.json's `format_version`, the `# format` line
-// of nodes.csv); raised whenever a file changes its columns or keys.
-constexpr int kResultFormatVersion = 2;
-
-// How a result was made, recorded in summary.json.
-struct Provenance {
-  std::string command_line;            // the command as run, shell-quoted
-  std::vector<std::string> overrides;  // the --set key.path=value overrides, in order
-};
+// The version of the result files' layout (summary.json's `format_version`, for every file of the
+// folder); raised whenever a file changes its columns or keys.
+constexpr int kResultFormatVersion = 3;
 
 // One material parameter in SI units, as the model uses it (after any KES or Peirce conversion).
 struct MaterialValue {

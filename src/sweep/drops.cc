@@ -13,8 +13,8 @@
 #include "src/output/atomic_file.h"
 #include "src/output/csv_field.h"
 #include "src/output/json.h"
+#include "src/output/provenance.h"
 #include "src/output/result_folder.h"
-#include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
@@ -98,9 +98,9 @@ AngularWave DrawWave(const DrapeTestSpec& test, int drop) {
 
 // A farm task's result: the drops.csv row, then a line with the outline (centre, radii).
 std::string TaskResult(const DropRecord& record, const DropOutline& outline) {
-  std::string text = DropCsvRow(record) + "\n" + FormatNumber(outline.centre.x(), 10) + " " +
-                     FormatNumber(outline.centre.y(), 10);
-  for (double r : outline.radius) text += " " + FormatNumber(r, 10);
+  std::string text = DropCsvRow(record) + "\n" + FormatNumber(outline.centre.x()) + " " +
+                     FormatNumber(outline.centre.y());
+  for (double r : outline.radius) text += " " + FormatNumber(r);
   return text;
 }
 
@@ -179,9 +179,7 @@ void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const Dr
   }
   for (int folds : s.modal_folds) modal += (modal.empty() ? "" : ", ") + std::to_string(folds);
   const bool any = s.counted > 0;
-  out << "{\n  \"drape_version\": " << JsonString(DrapeVersion())
-      << ",\n  \"command_line\": " << JsonString(options.command_line)
-      << ",\n  \"scene\": " << JsonString(scene.name) << ",\n  \"drops\": " << s.drops
+  out << "{\n  \"scene\": " << JsonString(scene.name) << ",\n  \"drops\": " << s.drops
       << ",\n  \"drops_counted\": " << s.counted
       << ",\n  \"perturbation\": {\"seed\": " << test.seed
       << ", \"placement_m\": " << JsonNumber(test.placement)
@@ -195,7 +193,12 @@ void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const Dr
       << ",\n  \"most_frequent_folds_drape_coefficient_mean\": "
       << (any ? JsonNumber(s.modal_mean) : "null");
   const auto advice = any ? SpecimenSizeAdvice(test.specimen_diameter, s.mean) : std::nullopt;
-  out << ",\n  \"specimen_size_advice\": " << (advice ? JsonString(*advice) : "null") << "\n}\n";
+  out << ",\n  \"specimen_size_advice\": " << (advice ? JsonString(*advice) : "null");
+  for (const auto& [key, value] :
+       ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
+    out << ",\n  " << JsonString(key) << ": " << value;
+  }
+  out << "\n}\n";
 }
 
 }  // namespace
@@ -340,8 +343,9 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   WriteAtomically(directory / "summary.json", [&](std::ostream& out) {
     WriteDropsSummary(scene, options, summary.statistics, out);
   });
-  WriteAtomically(directory / "report.html",
-                  [&](std::ostream& out) { WriteDropsReport(scene, summary, out); });
+  WriteAtomically(directory / "report.html", [&](std::ostream& out) {
+    WriteDropsReport(scene, summary, Provenance{options.command_line, options.overrides}, out);
+  });
   return summary;
 }
 

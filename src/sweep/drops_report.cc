@@ -8,7 +8,7 @@
 
 #include "src/output/html_text.h"
 #include "src/output/json.h"
-#include "src/output/version.h"
+#include "src/output/provenance.h"
 #include "src/output/writers.h"
 #include "src/scene/drape_test.h"
 #include "src/scene/material_models.h"
@@ -274,7 +274,7 @@ void WriteDropsTable(const DropsSummary& summary, std::ostream& html) {
     html << "<tr><td><span style=\"color:" << Colour(static_cast<int>(k)) << "\">&#9632;</span> "
          << d.drop << "</td><td>(" << Fixed(1e3 * d.offset.x(), 2) << ", "
          << Fixed(1e3 * d.offset.y(), 2) << ")</td><td>" << Fixed(d.drape_coefficient, 3)
-         << "</td><td>" << d.folds << "</td><td>" << FormatNumber(d.energy, 6) << "</td><td>"
+         << "</td><td>" << d.folds << "</td><td>" << RoundedNumber(d.energy, 6) << "</td><td>"
          << (d.counted ? "yes" : "no") << "</td><td>" << HtmlText(d.state) << "</td><td><a href=\""
          << folder << "/\">" << folder << "</a></td></tr>\n";
   }
@@ -286,7 +286,7 @@ void WriteFabric(const Scene& scene, std::ostream& html) {
        << "</pre>\n<table>\n<tr><th>material." << HtmlText(MaterialModelName(scene.material.model))
        << "</th><th>SI</th></tr>\n";
   for (const MaterialValue& value : MaterialSiValues(scene.material)) {
-    html << "<tr><td>" << HtmlText(value.key) << "</td><td>" << FormatNumber(value.value, 6)
+    html << "<tr><td>" << HtmlText(value.key) << "</td><td>" << RoundedNumber(value.value, 6)
          << (value.unit == "1" ? "" : " " + HtmlText(value.unit)) << "</td></tr>\n";
   }
   html << "</table>\n";
@@ -306,7 +306,8 @@ std::optional<std::string> SpecimenSizeAdvice(double specimen_diameter, double d
   return std::nullopt;
 }
 
-void WriteDropsReport(const Scene& scene, const DropsSummary& summary, std::ostream& html) {
+void WriteDropsReport(const Scene& scene, const DropsSummary& summary, const Provenance& provenance,
+                      std::ostream& html) {
   const DropStatistics& s = summary.statistics;
   html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>drape: "
        << HtmlText(scene.name) << ", " << s.drops << " drops</title>\n<style>"
@@ -332,7 +333,8 @@ void WriteDropsReport(const Scene& scene, const DropsSummary& summary, std::ostr
        << "<h2>The drops</h2>\n";
   WriteDropsTable(summary, html);
   WriteFabric(scene, html);
-  html << "<p>drape " << HtmlText(DrapeVersion()) << "; drops.csv and summary.json hold these "
+  html << "<p>" << HtmlText(ProvenanceLine(provenance))
+       << ". drops.csv and summary.json hold these "
        << "figures; each drop's folder holds its solve.</p>\n</body></html>\n";
 }
 

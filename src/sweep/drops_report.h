@@ -10,6 +10,7 @@
 #include <ostream>
 #include <string>
 
+#include "src/output/provenance.h"
 #include "src/scene/scene.h"
 #include "src/sweep/drops.h"
 
@@ -20,7 +21,9 @@ namespace drape {
 // `specimen_diameter` (m) with mean drape coefficient `dc`, or nothing.
 std::optional<std::string> SpecimenSizeAdvice(double specimen_diameter, double dc);
 
-void WriteDropsReport(const Scene& scene, const DropsSummary& summary, std::ostream& html);
+// report.html: the statistics, figures and table of a drops run, `provenance` at its foot.
+void WriteDropsReport(const Scene& scene, const DropsSummary& summary, const Provenance& provenance,
+                      std::ostream& html);
 
 }  // namespace drape
 

@@ -15,6 +15,7 @@
 #include "src/output/atomic_file.h"
 #include "src/output/csv_field.h"
 #include "src/output/json.h"
+#include "src/output/provenance.h"
 #include "src/output/result_folder.h"
 #include "src/output/writers.h"
 #include "src/parallel/task_farm.h"
@@ -73,11 +74,10 @@ std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveR
   const bool stable_known = stability.computed && result.certificate.unsound.empty();
   cells.insert(
       cells.end(),
-      {result.converged ? "yes" : "no", result.summary.termination,
-       std::to_string(result.summary.iterations), CsvNumber(result.summary.wall_time_s, 4),
+      {JsonBool(result.converged), result.summary.termination,
+       std::to_string(result.summary.iterations), CsvNumber(result.summary.wall_time_s),
        CsvNumber(result.certificate.energy), CsvNumber(result.certificate.relative_residual),
-       CsvNumber(result.certificate.max_node_force),
-       stable_known ? (stability.stable ? "yes" : "no") : "",
+       CsvNumber(result.certificate.max_node_force), stable_known ? JsonBool(stability.stable) : "",
        report.drape ? CsvNumber(ReportedDrapeCoefficient(report)) : "",
        report.drape ? std::to_string(report.drape->folds.count) : "", StateText(result),
        warm_from >= 0 ? std::to_string(warm_from) : ""});
@@ -86,7 +86,8 @@ std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveR
 
 std::vector<std::string> FailedRow(const SweepSpec& spec, int task, const std::string& why) {
   std::vector<std::string> cells = TaskCells(spec, task);
-  cells.insert(cells.end(), {"no", "failed: " + why, "", "", "", "", "", "", "", "", "", ""});
+  cells.insert(cells.end(),
+               {JsonBool(false), "failed: " + why, "", "", "", "", "", "", "", "", "", ""});
   return cells;
 }
 
@@ -100,13 +101,23 @@ struct Context {
   std::vector<std::string> identities;
 };
 
+// Whether a row's `converged` cell is true or false (a row of an older drape says yes or no: its
+// task is solved again, so that sweep.csv has one spelling of booleans).
+bool HasBooleanCells(const std::string& line) {
+  const std::vector<std::string> cells = SplitCsvLine(line);
+  if (cells.size() < kResultColumns.size()) return false;
+  const std::string& converged = cells[cells.size() - kResultColumns.size()];
+  return converged == JsonBool(true) || converged == JsonBool(false);
+}
+
 // The row of a finished task (its folder holds a row for the same variant), else nothing.
 std::optional<std::string> FinishedRow(const Context& context, int task) {
   const fs::path folder = TaskFolder(context.directory, context.spec, task);
   if (ReadWholeFile(folder / kVariantFile) != context.identities[task]) return std::nullopt;
   std::istringstream row(ReadWholeFile(folder / kRowFile));
   std::string header, line;
-  if (!std::getline(row, header) || header != context.header || !std::getline(row, line)) {
+  if (!std::getline(row, header) || header != context.header || !std::getline(row, line) ||
+      !HasBooleanCells(line)) {
     return std::nullopt;
   }
   return line;
@@ -118,7 +129,7 @@ void WritePositions(const fs::path& path, const std::vector<double>& positions) 
   });
 }
 
-// The final positions a finished task saved (17 digits: they read back exactly); empty if none.
+// The final positions a finished task saved (FormatNumber: they read back exactly); empty if none.
 std::vector<double> ReadPositions(const fs::path& path) {
   std::ifstream in(path);
   std::vector<double> positions;
@@ -285,14 +296,14 @@ class SweepTable {
       }
       return std::string();
     };
-    log_ << "sweep: task " << task << " (" << done_
-         << " done this run): " << (cell("converged") == "yes" ? "converged" : "not converged")
-         << ", " << (cell("iterations").empty() ? "" : cell("iterations") + " iterations, ")
+    log_ << "sweep: task " << task << " (" << done_ << " done this run): "
+         << (cell("converged") == JsonBool(true) ? "converged" : "not converged") << ", "
+         << (cell("iterations").empty() ? "" : cell("iterations") + " iterations, ")
          << (cell("time_s").empty() ? "" : cell("time_s") + " s, ")
          << (cell("drape_coefficient").empty()
                  ? ""
                  : "DC " +
-                       FormatNumber(std::strtod(cell("drape_coefficient").c_str(), nullptr), 4) +
+                       RoundedNumber(std::strtod(cell("drape_coefficient").c_str(), nullptr), 4) +
                        ", ")
          << cell("stop_reason")
          << (cell("warm_start_from").empty() ? "" : ", warm from task " + cell("warm_start_from"))
@@ -313,11 +324,26 @@ std::vector<int> FarmTasks(const SweepSpec& spec, const SweepOptions& options) {
   return chains;
 }
 
+// sweep.json: what the sweep is, how many rows sweep.csv has, and how it was made
+// (ProvenanceMembers): the sidecar of sweep.csv, which carries no comment line so that pandas
+// reads it as it is.
+void WriteSweepJson(const SweepSpec& spec, const SweepSummary& summary,
+                    const Provenance& provenance, std::ostream& out) {
+  out << "{\n  \"sweep_file\": " << JsonString(spec.file)
+      << ",\n  \"scene_file\": " << JsonString(spec.scene_file)
+      << ",\n  \"design\": " << JsonString(spec.design) << ",\n  \"tasks\": " << spec.tasks.size()
+      << ",\n  \"rows\": " << summary.rows << ",\n  \"rows_converged\": " << summary.converged;
+  for (const auto& [key, value] : ProvenanceMembers(provenance)) {
+    out << ",\n  " << JsonString(key) << ": " << value;
+  }
+  out << "\n}\n";
+}
+
 void CountRows(const SweepTable& table, SweepSummary* summary) {
   summary->rows = static_cast<int>(table.rows().size());
   for (const auto& [task, row] : table.rows()) {
     const auto cells = SplitCsvLine(row);
-    if (cells[cells.size() - kResultColumns.size()] == "yes") {
+    if (cells[cells.size() - kResultColumns.size()] == JsonBool(true)) {
       ++summary->converged;
       summary->converged_tasks.insert(task);
     }
@@ -408,7 +434,10 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   WriteAtomically(fs::path(summary.directory) / "sweep.yaml",
                   [&](std::ostream& out) { out << ReadWholeFile(spec.file); });
   CountRows(table, &summary);
-  if (options.plots && !options.only) WriteSweepReport(spec, summary.directory, log);
+  const Provenance provenance{options.command_line, {}};
+  WriteAtomically(fs::path(summary.directory) / "sweep.json",
+                  [&](std::ostream& out) { WriteSweepJson(spec, summary, provenance, out); });
+  if (options.plots && !options.only) WriteSweepReport(spec, summary.directory, provenance, log);
   return summary;
 }
 

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "src/output/atomic_file.h"
+#include "src/output/gnuplot_plots.h"
 #include "src/output/html_text.h"
 #include "src/output/json.h"
 #include "src/sweep/sweep.h"
-#include "src/sweep/sweep_plot_scripts.h"
 
 namespace drape {
 
@@ -70,63 +70,6 @@ std::string Slug(const std::string& name) {
   return slug;
 }
 
-std::string ShellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::string GnuplotQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
-  return quoted + "'";
-}
-
-class Plotter {
- public:
-  Plotter(const fs::path& directory, std::ostream& log) : directory_(directory), log_(log) {
-    fs::create_directories(directory_ / "plots" / "data");
-    if (const char* dir = std::getenv("DRAPE_TOOLS_DIR")) tools_dir_ = dir;
-  }
-
-  std::string Data(const std::string& name, const std::function<void(std::ostream&)>& write) {
-    const std::string relative = "plots/data/" + name;
-    WriteAtomically(directory_ / relative, write);
-    return relative;
-  }
-
-  // Runs the script with the variables; the PNG's path relative to the report, or "" if it failed.
-  std::string Draw(const std::string& script, const std::string& png,
-                   const std::vector<std::pair<std::string, std::string>>& variables) {
-    if (failed_) return "";
-    const std::string relative = "plots/" + png;
-    fs::path script_path = fs::path(tools_dir_) / script;
-    if (tools_dir_.empty()) {
-      script_path = directory_ / "plots" / "data" / script;
-      WriteAtomically(script_path,
-                      [&](std::ostream& out) { out << EmbeddedSweepPlotScript(script); });
-    }
-    std::string settings = "output=" + GnuplotQuoted(relative) + ";";
-    for (const auto& [name, value] : variables) settings += name + "=" + GnuplotQuoted(value) + ";";
-    const std::string command =
-        "cd " + ShellQuoted(directory_.string()) + " && gnuplot -e " + ShellQuoted(settings) + " " +
-        ShellQuoted(fs::absolute(script_path).string()) + " >/dev/null 2>>plots/gnuplot.log";
-    if (std::system(command.c_str()) != 0 || !fs::exists(directory_ / relative)) {
-      log_ << "sweep: gnuplot could not draw " << relative
-           << " (see plots/gnuplot.log); sweep.html has no plots from here on\n";
-      failed_ = true;
-      return "";
-    }
-    return relative;
-  }
-
- private:
-  fs::path directory_;
-  std::ostream& log_;
-  std::string tools_dir_;
-  bool failed_ = false;
-};
-
 // The varied keys with at least two distinct numbers in the table (the x axes of the plots).
 std::vector<int> NumericKeyColumns(const SweepSpec& spec, const Table& table) {
   std::vector<int> columns;
@@ -154,7 +97,7 @@ bool WideAndPositive(const Table& table, int c) {
 }
 
 // The rows as whitespace-separated numbers, '?' where missing: the columns `columns`, in order.
-std::string ScalarData(Plotter& plotter, const Table& table, const std::vector<int>& columns) {
+std::string ScalarData(GnuplotPlots& plotter, const Table& table, const std::vector<int>& columns) {
   return plotter.Data("rows.dat", [&](std::ostream& out) {
     for (size_t r = 0; r < table.rows.size(); ++r) {
       for (size_t k = 0; k < columns.size(); ++k) {
@@ -171,7 +114,7 @@ struct Figure {
   std::string caption;
 };
 
-std::vector<Figure> ScalarPlots(const SweepSpec& spec, const Table& table, Plotter& plotter) {
+std::vector<Figure> ScalarPlots(const SweepSpec& spec, const Table& table, GnuplotPlots& plotter) {
   std::vector<Figure> figures;
   const std::vector<int> keys = NumericKeyColumns(spec, table);
   std::vector<int> columns = keys;
@@ -238,7 +181,7 @@ std::vector<int> VaryingAxes(const SweepSpec& spec) {
   return axes;
 }
 
-std::vector<Figure> HeatMap(const SweepSpec& spec, const Table& table, Plotter& plotter) {
+std::vector<Figure> HeatMap(const SweepSpec& spec, const Table& table, GnuplotPlots& plotter) {
   const std::vector<int> axes = VaryingAxes(spec);
   if (axes.size() != 2) return {};
   const int x_axis = axes[1], y_axis = axes[0];
@@ -275,7 +218,7 @@ std::vector<Figure> HeatMap(const SweepSpec& spec, const Table& table, Plotter& 
 }
 
 void WriteHtml(const SweepSpec& spec, const Table& table, const std::vector<Figure>& figures,
-               std::ostream& out) {
+               const Provenance& provenance, const fs::path& directory, std::ostream& out) {
   out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>drape sweep "
       << HtmlText(fs::path(spec.file).filename().string())
       << "</title>\n<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse;"
@@ -284,11 +227,11 @@ void WriteHtml(const SweepSpec& spec, const Table& table, const std::vector<Figu
   out << "<h1>drape sweep: " << HtmlText(spec.file) << "</h1>\n<p>base scene "
       << HtmlText(spec.scene_file) << "; design " << HtmlText(spec.design) << ", "
       << spec.tasks.size() << " tasks, " << table.rows.size()
-      << " finished (sweep.csv); an empty cell is a value the task does not have.</p>\n";
+      << " finished (sweep.csv); an empty cell is a value the task does not have.</p>\n<p>"
+      << HtmlText(ProvenanceLine(provenance)) << " (sweep.json)</p>\n";
   for (const Figure& figure : figures) {
-    out << "<figure><img alt=\"" << HtmlText(figure.caption) << "\" src=\""
-        << HtmlText(figure.image) << "\"><figcaption>" << HtmlText(figure.caption)
-        << "</figcaption></figure>\n";
+    out << "<figure>" << HtmlPngImage(directory / figure.image, figure.caption) << "<figcaption>"
+        << HtmlText(figure.caption) << "</figcaption></figure>\n";
   }
   out << "<h2>Tasks</h2>\n<table><tr>";
   for (const std::string& name : table.header) out << "<th>" << HtmlText(name) << "</th>";
@@ -303,13 +246,15 @@ void WriteHtml(const SweepSpec& spec, const Table& table, const std::vector<Figu
 
 }  // namespace
 
-void WriteSweepReport(const SweepSpec& spec, const std::string& directory, std::ostream& log) {
+void WriteSweepReport(const SweepSpec& spec, const std::string& directory,
+                      const Provenance& provenance, std::ostream& log) {
   const Table table = ReadTable(fs::path(directory) / "sweep.csv");
-  Plotter plotter(directory, log);
+  GnuplotPlots plotter(directory, "", log);
   std::vector<Figure> figures = HeatMap(spec, table, plotter);
   for (Figure& figure : ScalarPlots(spec, table, plotter)) figures.push_back(std::move(figure));
-  WriteAtomically(fs::path(directory) / "sweep.html",
-                  [&](std::ostream& out) { WriteHtml(spec, table, figures, out); });
+  WriteAtomically(fs::path(directory) / "sweep.html", [&](std::ostream& out) {
+    WriteHtml(spec, table, figures, provenance, directory, out);
+  });
 }
 
 }  // namespace drape

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <string>
 
+#include "src/output/provenance.h"
 #include "src/sweep/sweep_file.h"
 
 namespace drape {
@@ -15,7 +16,9 @@ namespace drape {
 // Writes sweep.html and its plots into `directory` (which holds sweep.csv). A plot gnuplot cannot
 // draw is left out, once said on `log`. The scripts are tools/sweep_*.gp, from $DRAPE_TOOLS_DIR
 // if set, else the copies embedded in the binary.
-void WriteSweepReport(const SweepSpec& spec, const std::string& directory, std::ostream& log);
+// `provenance` heads the page.
+void WriteSweepReport(const SweepSpec& spec, const std::string& directory,
+                      const Provenance& provenance, std::ostream& log);
 
 }  // namespace drape
 

@@ -1,0 +1,147 @@
+#include "src/output/report_page.h"
+
+#include "src/output/html_text.h"
+
+namespace drape {
+
+namespace {
+
+// Text for Markdown (`|` escaped) or HTML (HtmlText, and Markdown's `code` spans turned into
+// <code> elements, so no backtick shows).
+std::string Escaped(const std::string& text, bool html) {
+  if (!html) {
+    std::string escaped;
+    for (char c : text) escaped += c == '|' ? std::string("\\|") : std::string(1, c);
+    return escaped;
+  }
+  std::string escaped;
+  bool code = false;
+  size_t start = 0;
+  for (size_t tick = text.find('`'); tick != std::string::npos; tick = text.find('`', start)) {
+    escaped += HtmlText(text.substr(start, tick - start)) + (code ? "</code>" : "<code>");
+    code = !code;
+    start = tick + 1;
+  }
+  escaped += HtmlText(text.substr(start));
+  return code ? escaped + "</code>" : escaped;
+}
+
+// Text without Markdown's backticks (an attribute).
+std::string Plain(const std::string& text) {
+  std::string plain;
+  for (char c : text) {
+    if (c != '`') plain += c;
+  }
+  return plain;
+}
+
+void WriteMarkdownTable(const std::vector<std::vector<std::string>>& rows, std::ostream& out) {
+  for (size_t r = 0; r < rows.size(); ++r) {
+    out << '|';
+    for (const std::string& cell : rows[r]) out << ' ' << Escaped(cell, false) << " |";
+    out << '\n';
+    if (r > 0) continue;
+    out << '|';
+    for (size_t k = 0; k < rows[0].size(); ++k) {
+      out << (k == 0 || k + 1 == rows[0].size() ? "---|" : "--:|");
+    }
+    out << '\n';
+  }
+  out << '\n';
+}
+
+void WriteHtmlTable(const std::vector<std::vector<std::string>>& rows, std::ostream& out) {
+  out << "<table>\n";
+  for (size_t r = 0; r < rows.size(); ++r) {
+    out << "<tr>";
+    for (const std::string& cell : rows[r]) {
+      out << (r == 0 ? "<th>" : "<td>") << Escaped(cell, true) << (r == 0 ? "</th>" : "</td>");
+    }
+    out << "</tr>\n";
+  }
+  out << "</table>\n";
+}
+
+ReportBlock Block(ReportBlock::Kind kind, const std::string& text) {
+  ReportBlock block;
+  block.kind = kind;
+  block.text = text;
+  return block;
+}
+
+}  // namespace
+
+ReportBlock HeadingBlock(const std::string& text) {
+  return Block(ReportBlock::Kind::kHeading, text);
+}
+ReportBlock TextBlock(const std::string& text) { return Block(ReportBlock::Kind::kText, text); }
+ReportBlock TableBlock(std::vector<std::vector<std::string>> rows) {
+  ReportBlock block = Block(ReportBlock::Kind::kTable, "");
+  block.rows = std::move(rows);
+  return block;
+}
+ReportBlock ImageBlock(const std::string& path, const std::string& caption) {
+  ReportBlock block = Block(ReportBlock::Kind::kImage, caption);
+  block.image = path;
+  return block;
+}
+
+void WriteMarkdownReport(const std::vector<ReportBlock>& blocks, std::ostream& out) {
+  bool first_heading = true;
+  for (const ReportBlock& block : blocks) {
+    switch (block.kind) {
+      case ReportBlock::Kind::kHeading:
+        out << (first_heading ? "# " : "## ") << block.text << "\n\n";
+        first_heading = false;
+        break;
+      case ReportBlock::Kind::kText:
+        out << block.text << "\n\n";
+        break;
+      case ReportBlock::Kind::kImage:
+        out << "![" << block.text << "](" << block.image << ")\n\n";
+        break;
+      case ReportBlock::Kind::kTable:
+        WriteMarkdownTable(block.rows, out);
+        break;
+    }
+  }
+}
+
+void WriteHtmlReport(const std::vector<ReportBlock>& blocks, const std::filesystem::path& folder,
+                     std::ostream& out) {
+  std::string title = "drape report";
+  for (const ReportBlock& block : blocks) {
+    if (block.kind == ReportBlock::Kind::kHeading) {
+      title = Plain(block.text);
+      break;
+    }
+  }
+  out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << HtmlText(title)
+      << "</title><style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
+         "table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #bbb;padding:2px "
+         "6px}td{text-align:right}td:first-child,td:last-child{text-align:left}img{max-width:100%"
+         "}</style></head><body>\n";
+  bool first_heading = true;
+  for (const ReportBlock& block : blocks) {
+    switch (block.kind) {
+      case ReportBlock::Kind::kHeading:
+        out << (first_heading ? "<h1>" : "<h2>") << Escaped(block.text, true)
+            << (first_heading ? "</h1>\n" : "</h2>\n");
+        first_heading = false;
+        break;
+      case ReportBlock::Kind::kText:
+        out << "<p>" << Escaped(block.text, true) << "</p>\n";
+        break;
+      case ReportBlock::Kind::kImage:
+        out << "<figure>" << HtmlPngImage(folder / block.image, Plain(block.text)) << "<figcaption>"
+            << Escaped(block.text, true) << "</figcaption></figure>\n";
+        break;
+      case ReportBlock::Kind::kTable:
+        WriteHtmlTable(block.rows, out);
+        break;
+    }
+  }
+  out << "</body></html>\n";
+}
+
+}  // namespace drape
