@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "src/scene/registry_row.h"
 #include "src/scene/scene.h"
 
 namespace drape {
@@ -42,11 +43,7 @@ const std::vector<MaterialModelRow>& MaterialModels() {
 }
 
 const MaterialModelRow& MaterialModelOf(MaterialModel model) {
-  for (const MaterialModelRow& row : MaterialModels()) {
-    if (row.model == model) return row;
-  }
-  assert(false && "a MaterialModel without its row in MaterialModels()");
-  return MaterialModels().front();
+  return RegistryRow(MaterialModels(), &MaterialModelRow::model, model);
 }
 
 const std::string& MaterialModelName(MaterialModel model) { return MaterialModelOf(model).name; }

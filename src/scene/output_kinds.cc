@@ -1,7 +1,7 @@
 // The output kinds (see output_kinds.h).
 #include "src/scene/output_kinds.h"
 
-#include <cassert>
+#include "src/scene/registry_row.h"
 
 namespace drape {
 
@@ -46,11 +46,7 @@ const std::vector<OutputKindRow>& OutputKinds() {
 }
 
 const OutputKindRow& OutputKindOf(OutputKind kind) {
-  for (const OutputKindRow& row : OutputKinds()) {
-    if (row.kind == kind) return row;
-  }
-  assert(false && "an OutputKind without its row in OutputKinds()");
-  return OutputKinds().front();
+  return RegistryRow(OutputKinds(), &OutputKindRow::kind, kind);
 }
 
 const OutputKindRow* FindOutputKind(const std::string& name) {
