@@ -4,6 +4,8 @@
 
 #include <cstdlib>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "src/output/json.h"
 #include "src/output/scene_yaml.h"
@@ -46,11 +48,23 @@ std::string JsonValue(const YAML::Node& node) {
   return text + "]";
 }
 
+// The schema's unit as summary.json writes units: ASCII ("kg/m^2", "N*m"), not the reference's
+// typography ("kg/m²", "N·m").
+std::string AsciiUnit(std::string unit) {
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"²", "^2"}, {"³", "^3"}, {"·", "*"}}) {
+    for (size_t at = unit.find(from); at != std::string::npos; at = unit.find(from, at)) {
+      unit.replace(at, from.size(), to);
+    }
+  }
+  return unit;
+}
+
 void Write(const YAML::Node& node, const std::string& path, const std::string& indent,
            std::ostream& out) {
   if (IsLeaf(node)) {
-    out << "{\"value\": " << JsonValue(node) << ", \"unit\": " << JsonString(SchemaUnit(path))
-        << "}";
+    out << "{\"value\": " << JsonValue(node)
+        << ", \"unit\": " << JsonString(AsciiUnit(SchemaUnit(path))) << "}";
     return;
   }
   const std::string inner = indent + "  ";
