@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "src/scene/output_kinds.h"
 #include "tests/sweep_test_support.h"
 
 namespace drape::testing {
@@ -176,6 +177,18 @@ TEST(SweepFile, EveryMistakeIsLocated) {
   ExpectError(head + "grid: {material.finite_volume.kes.W: [8]}\nkeep: [summary, pictres]\n", 4, 17,
               "did you mean 'pictures'");
   ExpectError(head + "grid: {material.finite_volume.kes.W: [8]}\nrepeat: 0\n", 4, 9, "");
+}
+
+// `keep` stands for output kinds by name: each of its names for at least one, each a row of the
+// output-kind registry (a kind renamed there fails here, not in a sweep's first task).
+TEST(SweepFile, KeepStandsForRegisteredOutputKinds) {
+  for (const std::string& keep : SweepKeepKinds()) {
+    const auto kinds = OutputKindsOf({keep});
+    EXPECT_FALSE(kinds.empty()) << "keep: " << keep << " stands for nothing";
+    for (const std::string& kind : kinds) {
+      EXPECT_NE(FindOutputKind(kind), nullptr) << "keep: " << keep << " -> " << kind;
+    }
+  }
 }
 
 TEST(SweepFile, EveryExampleLoads) {

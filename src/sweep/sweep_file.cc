@@ -22,7 +22,6 @@ namespace {
 
 const std::vector<std::string> kTopKeys = {"scene",  "set",        "grid", "zip",   "sample",
                                            "repeat", "warm_start", "keep", "output"};
-const std::vector<std::string> kKeepKinds = {"summary", "shape", "pictures", "history", "profile"};
 const std::vector<std::string> kSampleMethods = {"latin-hypercube", "sobol"};
 
 // A value as one line of YAML (flow style): what `--set key=...` takes back.
@@ -235,7 +234,7 @@ void ReadWarmStart(const YamlValue& value, SweepSpec* spec) {
 void ReadKeep(const YamlValue& value, SweepSpec* spec) {
   spec->keep.clear();
   for (const YamlValue& item : ReadList(value)) {
-    const std::string kind = ReadChoice(item, kKeepKinds);
+    const std::string kind = ReadChoice(item, SweepKeepKinds());
     if (std::count(spec->keep.begin(), spec->keep.end(), kind)) {
       Fail(item, "'" + kind + "' is listed twice");
     }
@@ -388,6 +387,12 @@ void CheckTask(const SweepSpec& spec, int task) {
 }
 
 }  // namespace
+
+const std::vector<std::string>& SweepKeepKinds() {
+  static const std::vector<std::string> kinds = {"summary", "shape", "pictures", "history",
+                                                 "profile"};
+  return kinds;
+}
 
 std::vector<std::string> OutputKindsOf(const std::vector<std::string>& keep) {
   std::vector<std::string> kinds;

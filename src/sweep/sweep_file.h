@@ -67,7 +67,10 @@ SweepSpec LoadSweepFile(const std::string& path);
 // from `keep`.
 std::vector<std::string> TaskOverrides(const SweepSpec& spec, int task);
 
-// The output.write kinds that `keep` stands for.
+// The names `keep` accepts: summary, shape, pictures, history, profile.
+const std::vector<std::string>& SweepKeepKinds();
+
+// The output.write kinds that `keep` stands for (each a row of src/scene/output_kinds.h).
 std::vector<std::string> OutputKindsOf(const std::vector<std::string>& keep);
 
 // The chain (index into spec.chains) holding task `task`, and the task before it in its chain
