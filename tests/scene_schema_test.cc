@@ -1,6 +1,7 @@
 // The scene schema (src/scene/scene_schema.h): docs/reference.md's scene tables are its rows, the
-// registries it shares keys with agree with it, and every row's key, given in a scene, is written
-// back by scene.yaml (src/output/scene_yaml.h) and read again to the same value.
+// registries it shares keys with agree with it, every row's key, given in a scene, is written
+// back by scene.yaml (src/output/scene_yaml.h) and read again to the same value, every literal
+// default is the loader's, and every numeric range is the loader's check.
 //
 // DRAPE_WRITE_SCHEMA_DOCS=1 drape_tests --gtest_filter='SceneSchema.*' writes the tables into
 // docs/reference.md (between `<!-- schema: TABLE -->` and `<!-- /schema -->`) instead of
@@ -16,6 +17,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -261,6 +263,288 @@ std::string RowName(const ::testing::TestParamInfo<size_t>& info) {
 
 INSTANTIATE_TEST_SUITE_P(SceneSchema, EveryRow, ::testing::Range<size_t>(0, SceneSchema().size()),
                          RowName);
+
+// ------------------------------------------------------------------------- the defaults
+
+// Where a list table's first item is given without the row's key, and the path of the key in it.
+struct ListItem {
+  std::string table, override_text, prefix;
+};
+const std::vector<ListItem>& ListItems() {
+  static const std::vector<ListItem> items = {
+      {"material.lines", "material.lines=[{nodes: {row: 1}, structural: 30}]",
+       "material.lines[0]."},
+      {"obstacles", "obstacles=[{pin: {position: [0, 0, -1]}}]", "obstacles[0].pin."},
+      {"fixed", "", "fixed[0]."},
+  };
+  return items;
+}
+
+// The scene a row's default is read from: the row's base; the mesh kind the row applies to; a
+// list table's item without the key; and the row's example but its last override (what the key
+// needs beside it, e.g. a friction for its smoothing).
+std::vector<std::string> DefaultContext(const SchemaRow& row, std::string* path) {
+  std::vector<std::string> overrides(row.example.begin(), row.example.end() - 1);
+  *path = row.Path();
+  if (row.table == "mesh" && !row.kinds.empty() && row.kinds.front() != "grid") {
+    overrides.push_back("mesh={kind: " + row.kinds.front() + "}");
+    overrides.push_back("fixed=[{nodes: {ids: [0]}}]");
+  }
+  for (const ListItem& item : ListItems()) {
+    if (item.table != row.table) continue;
+    if (!item.override_text.empty()) overrides.push_back(item.override_text);
+    *path = item.prefix + row.key;
+  }
+  return overrides;
+}
+
+std::string NumberText(double value) {
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
+}
+
+// The rule: a row's default is checked when it is one literal (SchemaRow::DefaultLiteral) and the
+// key is not converted to another one (the kes measurements, written as the SI keys). scene.yaml
+// shows the default where it writes the key; the keys it expands (a drape test's, into the mesh
+// and obstacles) or leaves out at their default (the frictions) are read from the loaded Scene.
+std::map<std::string, std::string (*)(const Scene&)> SceneDefaults() {
+  return {
+      {"material.finite_volume.bending_friction_warp",
+       [](const Scene& s) { return NumberText(s.material.finite_volume.bending_friction_warp); }},
+      {"material.finite_volume.bending_friction_weft",
+       [](const Scene& s) { return NumberText(s.material.finite_volume.bending_friction_weft); }},
+      {"material.finite_volume.shear_friction",
+       [](const Scene& s) { return NumberText(s.material.finite_volume.shear_friction); }},
+      {"material.finite_volume.friction_load_steps",
+       [](const Scene& s) { return std::to_string(s.material.finite_volume.friction_load_steps); }},
+      {"drape_test.specimen_diameter",
+       [](const Scene& s) { return NumberText(s.drape_test->specimen_diameter); }},
+      {"drape_test.disc_diameter",
+       [](const Scene& s) { return NumberText(s.drape_test->disc_diameter); }},
+      {"drape_test.offset",
+       [](const Scene& s) {
+         return "[" + NumberText(s.drape_test->offset.x()) + ", " +
+                NumberText(s.drape_test->offset.y()) + "]";
+       }},
+      {"drape_test.drops", [](const Scene& s) { return std::to_string(s.drape_test->drops); }},
+      {"drape_test.placement", [](const Scene& s) { return NumberText(s.drape_test->placement); }},
+      {"drape_test.waviness", [](const Scene& s) { return NumberText(s.drape_test->waviness); }},
+      {"drape_test.seed", [](const Scene& s) { return std::to_string(s.drape_test->seed); }},
+  };
+}
+
+bool WrittenElsewhere(const SchemaRow& row) {
+  return row.written_at == "-" ||
+         (!row.written_at.empty() && row.written_at.find('[') == std::string::npos &&
+          row.written_at != row.Path());
+}
+
+void RemoveAt(YAML::Node node, const std::vector<std::string>& parts, size_t k) {
+  if (!node.IsMap()) return;
+  if (k + 1 == parts.size()) {
+    node.remove(parts[k]);
+  } else if (node[parts[k]]) {
+    RemoveAt(node[parts[k]], parts, k + 1);
+  }
+}
+
+// The base scene without the row's key: the springs base, but for the keys only a finite-volume
+// material or a drape test has.
+std::string DefaultBase(const SchemaRow& row) {
+  const bool own_base = row.table.rfind("material.finite_volume", 0) == 0 ||
+                        row.table.rfind("drape_test", 0) == 0 || row.Path() == "drape_test";
+  YAML::Node base = YAML::Load(BaseScene(own_base ? row.base : SchemaRow::Base::kSprings));
+  std::vector<std::string> parts;
+  std::istringstream path(row.Path());
+  for (std::string part; std::getline(path, part, '.');) parts.push_back(part);
+  RemoveAt(base, parts, 0);
+  return YAML::Dump(base);
+}
+
+// Checks one row's default against the loaded scene; false when the rule skips the row.
+bool CheckDefault(const SchemaRow& row) {
+  const std::string literal = row.DefaultLiteral();
+  if (literal.empty()) return false;
+  std::string path;
+  const auto overrides = DefaultContext(row, &path);
+  const Scene scene = LoadSceneText(DefaultBase(row), "<default of " + row.Path() + ">",
+                                    drape_tests::kSourceDir, overrides);
+  const auto from_scene = SceneDefaults();
+  if (from_scene.count(row.Path()) == 1) {
+    const std::string loaded = from_scene.at(row.Path())(scene);
+    EXPECT_TRUE(Covers(YAML::Load(loaded), YAML::Load(literal)))
+        << row.Path() << ": the loader's default is " << loaded << ", the schema's " << literal;
+    return true;
+  }
+  if (WrittenElsewhere(row)) return false;
+  const std::string text = Written(scene);
+  const YAML::Node written = At(YAML::Load(text), path);
+  EXPECT_TRUE(written.IsDefined() && !written.IsNull() && Covers(written, YAML::Load(literal)))
+      << row.Path() << ": scene.yaml writes " << (written ? YAML::Dump(written) : "nothing")
+      << " at " << path << " when it is not given, the schema's default is " << literal << "\n"
+      << text;
+  return true;
+}
+
+TEST(SceneSchema, LiteralDefaultsAreTheLoadersDefaults) {
+  std::vector<std::string> checked, skipped;
+  for (const SchemaRow& row : SceneSchema()) {
+    (CheckDefault(row) ? checked : skipped).push_back(row.Path());
+  }
+  // Every row with a literal default but those converted to another key (the kes measurements)
+  // or that are patterns.
+  std::string list;
+  for (const std::string& path : checked) list += " " + path;
+  EXPECT_EQ(checked.size(), 42u) << "rows whose default is checked (a row added with a literal "
+                                    "default is checked too: update the count):"
+                                 << list;
+  for (const std::string& path : skipped) {
+    const auto row = std::find_if(SceneSchema().begin(), SceneSchema().end(),
+                                  [&](const SchemaRow& r) { return r.Path() == path; });
+    if (row->DefaultLiteral().empty()) continue;
+    EXPECT_EQ(row->table, "material.finite_volume.kes") << path << "'s default is not checked";
+  }
+}
+
+// ------------------------------------------------------------------------- the ranges
+
+bool NumericType(const std::string& type) {
+  return type.empty() || type == "integer" || type == "whole number" || type == "number" ||
+         type.rfind("number or", 0) == 0;
+}
+
+// Where the row's key stands in the scene its example gives: the written path for a list item.
+std::string RangeTarget(const SchemaRow& row) {
+  const std::string& at = row.written_at;
+  const std::string end = "." + row.key;
+  const bool item = at.find('[') != std::string::npos && at.size() > end.size() &&
+                    at.compare(at.size() - end.size(), end.size(), end) == 0;
+  return item ? at : row.Path();
+}
+
+// The values just outside the range: a bound itself when it is excluded, else one step beyond
+// (1 for whole numbers, a millionth of the bound's size otherwise).
+std::vector<double> OutsideValues(const SchemaRange& range) {
+  auto step = [&](double bound) {
+    return range.integer ? 1.0 : 1e-6 * std::max(1.0, std::abs(bound));
+  };
+  std::vector<double> values;
+  if (std::isfinite(range.lower)) {
+    values.push_back(range.lower_inclusive ? range.lower - step(range.lower) : range.lower);
+  }
+  if (std::isfinite(range.upper)) {
+    values.push_back(range.upper_inclusive ? range.upper + step(range.upper) : range.upper);
+  }
+  return values;
+}
+
+// The bounds the range includes.
+std::vector<double> IncludedBounds(const SchemaRange& range) {
+  std::vector<double> values;
+  if (std::isfinite(range.lower) && range.lower_inclusive) values.push_back(range.lower);
+  if (std::isfinite(range.upper) && range.upper_inclusive) values.push_back(range.upper);
+  return values;
+}
+
+// The error the loader raises for the row's example with `value` at the key, if any.
+std::optional<InputError> LoadWith(const SchemaRow& row, double value) {
+  std::vector<std::string> overrides = row.example;
+  overrides.push_back(RangeTarget(row) + "=" + NumberText(value));
+  try {
+    LoadSceneText(BaseScene(row.base), "<range of " + row.Path() + ">", drape_tests::kSourceDir,
+                  overrides);
+  } catch (const InputError& error) {
+    return error;
+  }
+  return std::nullopt;
+}
+
+class EveryRange : public ::testing::TestWithParam<size_t> {};
+
+// A value just outside the row's range is refused, located at the key; the range's own bounds are
+// not refused at the key (another key's check may still refuse the scene: mesh.max_nodes 2 under
+// a 3 × 3 grid is refused at `mesh`).
+TEST_P(EveryRange, IsTheLoadersCheck) {
+  const SchemaRow& row = SceneSchema()[GetParam()];
+  const auto range = row.Bounds();
+  ASSERT_TRUE(range.has_value());
+  const std::string target = RangeTarget(row);
+  for (const double value : OutsideValues(*range)) {
+    ASSERT_FALSE(range->Contains(value));
+    const auto error = LoadWith(row, value);
+    ASSERT_TRUE(error.has_value()) << target << " = " << NumberText(value) << " is accepted, "
+                                   << "outside the schema's range " << row.range;
+    EXPECT_EQ(error->where().key, target) << error->what();
+  }
+  for (const double value : IncludedBounds(*range)) {
+    const auto error = LoadWith(row, value);
+    EXPECT_TRUE(!error.has_value() || error->where().key != target)
+        << target << " = " << NumberText(value) << ", within " << row.range
+        << ", is refused: " << error->what();
+  }
+}
+
+// The rows with a numeric type and a structured range.
+std::vector<size_t> RangedRows() {
+  std::vector<size_t> rows;
+  for (size_t k = 0; k < SceneSchema().size(); ++k) {
+    if (SceneSchema()[k].Bounds() && NumericType(SceneSchema()[k].type)) rows.push_back(k);
+  }
+  return rows;
+}
+
+INSTANTIATE_TEST_SUITE_P(SceneSchema, EveryRange, ::testing::ValuesIn(RangedRows()), RowName);
+
+// A numeric row without a range takes any sign at its key: ±1e-9 and 0 (±1 for a whole number;
+// small, as D_12 is bounded by D_warp and D_weft) are not refused there.
+TEST(SceneSchema, NumericRowsWithoutARangeTakeAnyNumber) {
+  size_t checked = 0;
+  for (const SchemaRow& row : SceneSchema()) {
+    const bool any = row.range.empty() || row.range == "any sign";
+    if (!any || !NumericType(row.type) || row.example.empty()) continue;
+    ++checked;
+    const double size = row.type == "integer" || row.type == "whole number" ? 1.0 : 1e-9;
+    for (const double value : {-size, 0.0, size}) {
+      const auto error = LoadWith(row, value);
+      EXPECT_TRUE(!error.has_value() || error->where().key != RangeTarget(row))
+          << RangeTarget(row) << " = " << value
+          << " is refused, but the schema gives no range: " << error->what();
+    }
+  }
+  EXPECT_EQ(checked, 8u) << "numeric rows without a range: update the count";
+}
+
+TEST(SceneSchema, RangeTextsParse) {
+  const auto positive = ParseSchemaRange("> 0", false);
+  ASSERT_TRUE(positive.has_value());
+  EXPECT_FALSE(positive->Contains(0.0));
+  EXPECT_TRUE(positive->Contains(1e-300));
+  const auto levels = ParseSchemaRange("1–8", true);
+  ASSERT_TRUE(levels.has_value());
+  EXPECT_TRUE(levels->Contains(1) && levels->Contains(8));
+  EXPECT_FALSE(levels->Contains(0) || levels->Contains(9) || levels->Contains(1.5));
+  const auto max_nodes = ParseSchemaRange("in [2, 10⁸]", true);
+  ASSERT_TRUE(max_nodes.has_value());
+  EXPECT_EQ(max_nodes->upper, 1e8);
+  EXPECT_FALSE(ParseSchemaRange("strictly increasing", false).has_value());
+  EXPECT_FALSE(ParseSchemaRange("> min", false).has_value());
+  EXPECT_FALSE(ParseSchemaRange("each > 0 (≥ 0 along an axis of 1 node)", false).has_value());
+}
+
+// Every numeric row's range is a structured range (the test above checks it), but the prose ones
+// listed here.
+TEST(SceneSchema, NumericRangesAreChecked) {
+  size_t checked = 0;
+  for (const SchemaRow& row : SceneSchema()) {
+    if (row.range.empty() || !NumericType(row.type)) continue;
+    EXPECT_TRUE(row.Bounds().has_value() || row.range == "any sign")
+        << row.Path() << "'s range \"" << row.range << "\" is not a structured range";
+    if (row.Bounds()) ++checked;
+  }
+  EXPECT_EQ(checked, 67u) << "numeric rows whose range is checked: update the count";
+}
 
 }  // namespace scene_schema_test
 }  // namespace drape

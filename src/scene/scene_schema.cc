@@ -1,6 +1,8 @@
 #include "src/scene/scene_schema.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
@@ -882,7 +884,7 @@ std::vector<SchemaRow> Obstacles() {
           "the normal, towards the fabric's side (normalised)", plane, "[0, 0, 1]"),
       row("position", {"pin"}, "[3]", "", "the tip", "{position: [0, 0, -1]}", "[0, 0, -1]"),
       Row(t, "friction")
-          .Is("", "1", "0")
+          .Is("", "1", "≥ 0")
           .Default("`0`")
           .Doc("accepted by the format, but only 0 is supported (obstacles are frictionless)")
           .Example({"obstacles=[{pin: {position: [0, 0, -1], friction: 0}}]"},
@@ -1008,7 +1010,108 @@ std::string Joined(const std::vector<std::string>& names) {
   return text;
 }
 
+// A number of a range's text: "0", "1e-8", "-2.5", or a power of ten "10⁸"; none otherwise.
+std::optional<double> RangeNumber(const std::string& text) {
+  static const std::vector<std::string> superscripts = {"⁰", "¹", "²", "³", "⁴",
+                                                        "⁵", "⁶", "⁷", "⁸", "⁹"};
+  if (text.rfind("10", 0) == 0 && text.size() > 2) {
+    std::string exponent;
+    for (size_t at = 2; at < text.size();) {
+      const auto digit =
+          std::find_if(superscripts.begin(), superscripts.end(),
+                       [&](const std::string& s) { return text.compare(at, s.size(), s) == 0; });
+      if (digit == superscripts.end()) return std::nullopt;
+      exponent += static_cast<char>('0' + (digit - superscripts.begin()));
+      at += digit->size();
+    }
+    return std::pow(10.0, std::stoi(exponent));
+  }
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0') return std::nullopt;
+  return value;
+}
+
+// "a–b" or "in [a, b]": both bounds, inclusive.
+std::optional<SchemaRange> Interval(const std::string& text) {
+  std::string low, high;
+  const std::string dash = "–";
+  if (text.rfind("in [", 0) == 0 && text.back() == ']' && text.find(", ") != std::string::npos) {
+    const size_t comma = text.find(", ");
+    low = text.substr(4, comma - 4);
+    high = text.substr(comma + 2, text.size() - comma - 3);
+  } else if (text.find(dash) != std::string::npos) {
+    low = text.substr(0, text.find(dash));
+    high = text.substr(text.find(dash) + dash.size());
+  }
+  const auto lower = RangeNumber(low);
+  const auto upper = RangeNumber(high);
+  if (!lower || !upper) return std::nullopt;
+  SchemaRange range;
+  range.lower = *lower;
+  range.upper = *upper;
+  range.lower_inclusive = range.upper_inclusive = true;
+  return range;
+}
+
+// "> a", "≥ a", "< a", "≤ a", or "a" alone.
+std::optional<SchemaRange> OneSided(const std::string& text) {
+  struct Relation {
+    std::string sign;
+    bool lower, inclusive;
+  };
+  static const std::vector<Relation> relations = {
+      {"> ", true, false}, {"≥ ", true, true}, {"< ", false, false}, {"≤ ", false, true}};
+  SchemaRange range;
+  for (const Relation& relation : relations) {
+    if (text.rfind(relation.sign, 0) != 0) continue;
+    const auto bound = RangeNumber(text.substr(relation.sign.size()));
+    if (!bound) return std::nullopt;
+    (relation.lower ? range.lower : range.upper) = *bound;
+    (relation.lower ? range.lower_inclusive : range.upper_inclusive) = relation.inclusive;
+    return range;
+  }
+  const auto only = RangeNumber(text);
+  if (!only) return std::nullopt;
+  range.lower = range.upper = *only;
+  range.lower_inclusive = range.upper_inclusive = true;
+  return range;
+}
+
 }  // namespace
+
+bool SchemaRange::Contains(double value) const {
+  if (integer && value != std::floor(value)) return false;
+  const bool above = lower_inclusive ? value >= lower : value > lower;
+  const bool below = upper_inclusive ? value <= upper : value < upper;
+  return above && below;
+}
+
+std::optional<SchemaRange> ParseSchemaRange(const std::string& range, bool integer) {
+  if (range.empty()) return std::nullopt;
+  auto parsed = Interval(range);
+  if (!parsed) parsed = OneSided(range);
+  if (parsed) parsed->integer = integer;
+  return parsed;
+}
+
+std::optional<SchemaRange> SchemaRow::Bounds() const {
+  const bool integer =
+      type.find("integer") != std::string::npos || type.find("whole number") != std::string::npos;
+  return ParseSchemaRange(range, integer);
+}
+
+std::string SchemaRow::DefaultLiteral() const {
+  if (default_text.size() < 2 || default_text.front() != '`') return "";
+  const size_t close = default_text.find('`', 1);
+  if (close == std::string::npos) return "";
+  const std::string literal = default_text.substr(1, close - 1);
+  const std::string rest = default_text.substr(close + 1);
+  const bool remark = rest.empty() || (rest.rfind(" (", 0) == 0 && rest.back() == ')' &&
+                                       rest.find('`') == std::string::npos);
+  if (!remark || literal.find('<') != std::string::npos) return "";
+  return literal;
+}
 
 const std::vector<SchemaRow>& SceneSchema() {
   static const std::vector<SchemaRow> rows = AllRows();
