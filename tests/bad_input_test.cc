@@ -9,19 +9,20 @@
 // " ... " further along the same line).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "tests/run_program.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_paths.h"
 
 namespace drape {
@@ -85,16 +86,11 @@ bool HasLocatedLine(const std::string& text, const std::string& file) {
 class BadInputTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(test->name());
-    std::replace(name.begin(), name.end(), '/', '_');
-    scratch_ =
-        fs::temp_directory_path() / ("drape_bad_input_" + std::to_string(::getpid()) + "_" + name);
-    fs::remove_all(scratch_);
-    fs::create_directories(scratch_);
+    scratch_folder_.emplace("bad_input");
+    scratch_ = scratch_folder_->path();
     out_ = scratch_ / "out";  // must never be created
   }
-  void TearDown() override { fs::remove_all(scratch_); }
+  void TearDown() override { scratch_folder_.reset(); }
 
   ProgramOutcome Drape(const std::vector<std::string>& args) const {
     return RunProgram(DrapeCommand(args), scratch_);
@@ -120,6 +116,7 @@ class BadInputTest : public ::testing::Test {
     }
   }
 
+  std::optional<testing::ScratchFolder> scratch_folder_;
   fs::path scratch_;
   fs::path out_;
 };

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -25,6 +26,7 @@
 #include "src/scene/fabric_parameters.h"
 #include "src/solvers/solver.h"
 #include "tests/run_program.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_paths.h"
 
 namespace drape {
@@ -68,14 +70,11 @@ output:
 class CliTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 ("drape_cli_test_" + std::to_string(::getpid()) + "_" + test->name());
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
+    scratch_.emplace("cli_test");
+    directory_ = scratch_->path();
     out_ = directory_ / "out";
   }
-  void TearDown() override { fs::remove_all(directory_); }
+  void TearDown() override { scratch_.reset(); }
 
   // Writes the chain scene (output.directory = out_) with `replace` applied: pairs of
   // (text, replacement).
@@ -99,6 +98,7 @@ class CliTest : public ::testing::Test {
     return YAML::LoadFile((folder / "summary.json").string());
   }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path directory_;
   fs::path out_;
 };

@@ -1,7 +1,6 @@
 #include "src/model/contact.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cctype>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include "src/run/run.h"
 #include "src/scene/scene_loader.h"
 #include "tests/hand_built_models.h"
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
@@ -290,12 +290,8 @@ obstacles:
 contact: {thickness: 0.001}
 solver: {method: newton, tolerance: 1.0e-8, max_iterations: 3000}
 )";
-    const std::filesystem::path path =
-        std::filesystem::temp_directory_path() /
-        ("drape_small_limp_tester_" + std::to_string(::getpid()) + ".yaml");
-    std::ofstream(path) << text;
-    const Scene scene = LoadScene(path.string());
-    std::filesystem::remove(path);
+    const Scene scene =
+        LoadScene(testing::ScratchFile("small_limp_tester", "scene.yaml", text).path().string());
     Model model = BuildModel(scene);
     const RunResult result = RunSolve(scene, model, "newton");
     ASSERT_TRUE(result.converged) << result.summary.termination;
@@ -373,12 +369,7 @@ solver:
                            R"(
   time_limit: 900
 )";
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("drape_drop_" + method + ".yaml");
-  std::ofstream(path) << text;
-  Scene scene = LoadScene(path.string());
-  std::filesystem::remove(path);
-  return scene;
+  return LoadScene(testing::ScratchFile("drop_" + method, "scene.yaml", text).path().string());
 }
 
 TEST_P(DropOntoThinObstacle, RestsOnIt) {

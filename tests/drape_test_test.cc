@@ -4,16 +4,17 @@
 #include "src/scene/drape_test.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "src/model/model.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
@@ -45,13 +46,10 @@ mesh: {spacing: 0.02}
 class DrapeTestBlock : public ::testing::Test {
  protected:
   void SetUp() override {
-    folder_ = fs::temp_directory_path() /
-              ("drape_test_block_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
+    scratch_.emplace("test_block");
+    folder_ = scratch_->path();
   }
-  void TearDown() override { fs::remove_all(folder_); }
+  void TearDown() override { scratch_.reset(); }
 
   Scene Load(const std::string& text, const std::vector<std::string>& overrides = {}) const {
     const fs::path path = folder_ / "scene.yaml";
@@ -67,6 +65,7 @@ class DrapeTestBlock : public ::testing::Test {
     return "";
   }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path folder_;
 };
 

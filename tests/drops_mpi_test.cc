@@ -1,7 +1,6 @@
 // `drape solve --drops` across MPI ranks: `mpirun -np 2` writes the same drops.csv as the process
 // alone on one thread, and the same statistics line.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -9,6 +8,7 @@
 #include <string>
 
 #include "tests/mpi_run.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_paths.h"
 
 namespace drape {
@@ -34,10 +34,9 @@ TEST(DropsMpi, TheSameDropsCsvAloneAndOnTwoRanks) {
   if (!testing::MpiLauncherAvailable()) {
     GTEST_SKIP() << "drape was built without MPI (mpi-default-dev not found): no MPI test";
   }
-  const fs::path folder =
-      fs::temp_directory_path() / ("drape_drops_mpi_" + std::to_string(::getpid()));
-  fs::remove_all(folder);
-  fs::create_directories(folder);
+  // Made here, in the test process: every rank of mpirun works in it (cd below).
+  const testing::ScratchFolder scratch("drops_mpi");
+  const fs::path& folder = scratch.path();
   std::ofstream(folder / "scene.yaml") << kScene;
   const std::string drape = std::string(drape_tests::kDrapeBinary) + " solve scene.yaml --out ";
   const std::string cd = "cd '" + folder.string() + "' && ";
@@ -52,7 +51,6 @@ TEST(DropsMpi, TheSameDropsCsvAloneAndOnTwoRanks) {
   EXPECT_EQ(ranks.out.substr(0, ranks.out.find("; results in")),
             alone.out.substr(0, alone.out.find("; results in")));
   EXPECT_EQ(ranks.out.find("4 drops"), ranks.out.rfind("4 drops")) << ranks.out;
-  fs::remove_all(folder);
 }
 
 }  // namespace

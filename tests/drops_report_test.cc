@@ -4,7 +4,6 @@
 #include "src/sweep/drops_report.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,6 +12,7 @@
 #include <string>
 
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
@@ -28,16 +28,12 @@ int Occurrences(const std::string& text, const std::string& what) {
 }
 
 Scene DrapeTestScene() {
-  const fs::path path =
-      fs::temp_directory_path() / ("drape_drops_report_" + std::to_string(::getpid()) + ".yaml");
-  std::ofstream(path) << R"(name: report
+  const testing::ScratchFile file("drops_report", "scene.yaml", R"(name: report
 drape_test: {}
 material: {model: finite_volume, density: 0.1,
            finite_volume: {E_warp: 900, E_weft: 800, G: 20, D_warp: 2e-6, D_weft: 2e-6}}
-)";
-  Scene scene = LoadScene(path.string());
-  fs::remove(path);
-  return scene;
+)");
+  return LoadScene(file.path().string());
 }
 
 // Three drops with wavy outlines (n folds) whose drape coefficients are `dc`; the third failed.

@@ -4,18 +4,19 @@
 #include "src/sweep/drops.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "src/output/json.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
@@ -37,15 +38,12 @@ output: {write: [summary]}
 class Drops : public ::testing::Test {
  protected:
   void SetUp() override {
-    folder_ = fs::temp_directory_path() /
-              ("drape_drops_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
+    scratch_.emplace("drops");
+    folder_ = scratch_->path();
     std::ofstream(folder_ / "scene.yaml") << kScene;
     scene_ = LoadScene((folder_ / "scene.yaml").string());
   }
-  void TearDown() override { fs::remove_all(folder_); }
+  void TearDown() override { scratch_.reset(); }
 
   std::string ReadText(const fs::path& path) const {
     std::ifstream in(path);
@@ -54,6 +52,7 @@ class Drops : public ::testing::Test {
     return text.str();
   }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path folder_;
   Scene scene_;
 };

@@ -5,7 +5,6 @@
 #define DRAPE_TESTS_FIT_TEST_SUPPORT_H_
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -18,17 +17,14 @@
 #include "src/model/model.h"
 #include "src/run/run.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape::testing {
 
-// A fresh, empty temporary folder per test (removed and recreated).
+// A fresh, empty temporary folder per call, removed when the test process ends.
 inline std::string FitTempDir(const std::string& name) {
-  const std::string path =
-      ::testing::TempDir() + "drape_fit_" + name + "_" + std::to_string(::getpid());
-  std::filesystem::remove_all(path);
-  std::filesystem::create_directories(path);
-  return path;
+  return ScratchFolderUntilExit("fit_" + name).string();
 }
 
 inline void WriteTextFile(const std::string& path, const std::string& text) {

@@ -16,7 +16,6 @@
 #include "costs/fv_shear_friction.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -28,6 +27,7 @@
 #include "src/run/run.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 #include "tests/term_checks.h"
 #include "tests/test_scenes.h"
 
@@ -111,13 +111,7 @@ solver: {method: newton, tolerance: 1.0e-10, max_iterations: 500}
 }
 
 Scene LoadText(const std::string& text) {
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() /
-      ("drape_shear_friction_" + std::to_string(::getpid()) + ".yaml");
-  std::ofstream(path) << text;
-  Scene scene = LoadScene(path.string());
-  std::filesystem::remove(path);
-  return scene;
+  return LoadScene(testing::ScratchFile("shear_friction", "scene.yaml", text).path().string());
 }
 
 // The root of G γ + HG γ/√(γ² + δ²) = τ cos γ in (0, π/2).

@@ -6,7 +6,6 @@
 #include "src/run/load_steps.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -15,6 +14,7 @@
 
 #include "src/run/run.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -43,12 +43,8 @@ std::string CantileverText(int nodes_per_row) {
 }
 
 Scene LoadCantilever(const std::vector<std::string>& overrides, int nodes_per_row = 21) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                     ("drape_load_steps_" + std::to_string(::getpid()) + ".yaml");
-  std::ofstream(path) << CantileverText(nodes_per_row);
-  Scene scene = LoadScene(path.string(), overrides);
-  std::filesystem::remove(path);
-  return scene;
+  const testing::ScratchFile file("load_steps", "scene.yaml", CantileverText(nodes_per_row));
+  return LoadScene(file.path().string(), overrides);
 }
 
 // The solved tip (the first row's last node).

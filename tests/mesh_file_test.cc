@@ -16,11 +16,13 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "src/model/mesh.h"
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
@@ -165,13 +167,10 @@ std::string BinaryStl(const Sheet& sheet) {
 class MeshFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    folder_ = fs::temp_directory_path() /
-              ("drape_mesh_file_test_" + std::to_string(::getpid()) + "_" + test->name());
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
+    scratch_.emplace("mesh_file_test");
+    folder_ = scratch_->path();
   }
-  void TearDown() override { fs::remove_all(folder_); }
+  void TearDown() override { scratch_.reset(); }
 
   std::string Write(const std::string& name, const std::string& bytes) const {
     const std::string path = (folder_ / name).string();
@@ -189,6 +188,7 @@ class MeshFileTest : public ::testing::Test {
     return "";
   }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path folder_;
 };
 

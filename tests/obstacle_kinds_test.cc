@@ -4,7 +4,6 @@
 #include "src/model/obstacle_kinds.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,6 +12,7 @@
 
 #include "src/model/model.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -80,8 +80,8 @@ class ObstacleKindErrors : public ::testing::Test {
  protected:
   // The message of the InputError that loading and building the model throws ("" if none).
   std::string Error(const std::string& obstacles) {
-    const fs::path path = fs::temp_directory_path() /
-                          ("drape_obstacle_kinds_" + std::to_string(::getpid()) + ".yaml");
+    const testing::ScratchFolder scratch("obstacle_kinds");
+    const fs::path path = scratch / "scene.yaml";
     std::ofstream(path) << "mesh:\n  kind: grid\n  nodes: [3, 3]\nmaterial:\n  density: 0.2\n"
                            "  springs:\n    structural: 100\nfixed:\n  - nodes: {corner: "
                            "top-left}\nobstacles:\n  - "
@@ -92,7 +92,6 @@ class ObstacleKindErrors : public ::testing::Test {
     } catch (const InputError& error) {
       message = error.what();
     }
-    fs::remove(path);
     return message.substr(message.find(':') + 1);  // without the file's path
   }
 };

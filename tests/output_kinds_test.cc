@@ -5,7 +5,6 @@
 #include "src/scene/output_kinds.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -21,6 +20,7 @@
 #include "src/run/solve_report.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -191,8 +191,8 @@ TEST(OutputKinds, TheMethodsThatRecordATraceAreTheCataloguesSo) {
 // A solve that asks for every kind (a circle, so it has a drape; a method with a trace) writes
 // exactly the registry's files and scene.yaml.
 TEST(OutputKinds, ASolveAskingForEveryKindWritesTheRegistrysFiles) {
-  const fs::path folder =
-      fs::temp_directory_path() / ("drape_output_kinds_" + std::to_string(::getpid()));
+  const testing::ScratchFolder scratch("output_kinds");
+  const fs::path folder = scratch / "out";  // made by WriteOutputs
   std::string kinds;
   for (const std::string& name : OutputKindNames()) kinds += (kinds.empty() ? "" : ", ") + name;
   const Scene scene = LoadSceneText(
@@ -218,7 +218,6 @@ TEST(OutputKinds, ASolveAskingForEveryKindWritesTheRegistrysFiles) {
     const std::string name = entry.path().filename().string();
     if (name[0] != '.') written.insert(name);  // not the folder's lock
   }
-  fs::remove_all(folder);
   EXPECT_EQ(written, expected);
 }
 

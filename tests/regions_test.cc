@@ -3,7 +3,6 @@
 #include "src/model/regions.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include "src/model/mesh.h"
 #include "src/run/run.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -49,12 +49,7 @@ std::string Plate(const std::string& regions, double d_warp = 2e-6, double d_wef
 
 // Loads a scene from its text (written to a scratch file).
 Scene SceneFromText(const std::string& text, const std::string& tag) {
-  const fs::path path =
-      fs::temp_directory_path() / ("drape_regions_test_" + std::to_string(::getpid()) + tag);
-  std::ofstream(path) << text;
-  Scene scene = LoadScene(path.string());
-  fs::remove(path);
-  return scene;
+  return LoadScene(testing::ScratchFile("regions_test_" + tag, "scene.yaml", text).path().string());
 }
 
 const std::string kLeftHalfDoubled =

@@ -11,9 +11,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
@@ -23,13 +26,10 @@ namespace fs = std::filesystem;
 class ResultFolderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 ("drape_result_folder_test_" + std::to_string(::getpid()) + "_" + test->name());
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
+    scratch_.emplace("result_folder_test");
+    directory_ = scratch_->path();
   }
-  void TearDown() override { fs::remove_all(directory_); }
+  void TearDown() override { scratch_.reset(); }
 
   void Write(const fs::path& path, const std::string& text) const { std::ofstream(path) << text; }
   std::string Read(const std::string& name) const {
@@ -44,6 +44,7 @@ class ResultFolderTest : public ::testing::Test {
     return names;
   }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path directory_;
 };
 

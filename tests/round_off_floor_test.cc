@@ -3,7 +3,6 @@
 #include "src/numerics/round_off_floor.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,6 +12,7 @@
 #include "src/numerics/sparse_hessian.h"
 #include "src/run/run.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -37,14 +37,7 @@ loads:
   gravity: [0, 0, -9.81]
 solver: {method: newton, tolerance: 1.0e-10, max_iterations: 1000}
 )";
-  // One file per process and test: ctest -j2 runs this file's tests side by side.
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("drape_floor_cable_" + std::to_string(::getpid()) + "_" +
-                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".yaml");
-  std::ofstream(path) << text;
-  Scene scene = LoadScene(path.string());
-  std::filesystem::remove(path);
-  return scene;
+  return LoadScene(testing::ScratchFile("floor_cable", "scene.yaml", text).path().string());
 }
 
 TEST(RoundOffFloor, IsZeroWithoutFreeCoordinatesAndGrowsWithTheDistanceFromTheOrigin) {

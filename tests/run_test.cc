@@ -11,17 +11,13 @@
 
 #include "costs/constant_force_potential.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
 
 Scene LoadText(const std::string& name, const std::string& text) {
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / ("drape_run_test_" + name + ".yaml");
-  std::ofstream(path) << text;
-  Scene scene = LoadScene(path.string());
-  std::filesystem::remove(path);
-  return scene;
+  return LoadScene(testing::ScratchFile("run_test_" + name, "scene.yaml", text).path().string());
 }
 
 constexpr char kChain[] =

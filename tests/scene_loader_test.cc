@@ -3,16 +3,17 @@
 #include "src/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "src/scene/solver_methods.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -24,17 +25,10 @@ namespace fs = std::filesystem;
 class SceneLoaderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(test->test_suite_name()) + "_" + test->name();
-    for (char& c : name) {
-      if (c == '/') c = '_';
-    }
-    folder_ = fs::temp_directory_path() /
-              ("drape_scene_loader_" + std::to_string(::getpid()) + "_" + name);
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
+    scratch_.emplace("scene_loader");
+    folder_ = scratch_->path();
   }
-  void TearDown() override { fs::remove_all(folder_); }
+  void TearDown() override { scratch_.reset(); }
 
   std::string Write(const std::string& text, const std::string& file = "scene.yaml") {
     const fs::path path = folder_ / file;
@@ -58,6 +52,7 @@ class SceneLoaderTest : public ::testing::Test {
 
   std::string ScenePath() const { return (folder_ / "scene.yaml").string(); }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path folder_;
 };
 

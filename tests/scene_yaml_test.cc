@@ -2,7 +2,6 @@
 #include "src/output/scene_yaml.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "src/model/model.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/scene_loader.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -29,14 +29,8 @@ std::string SceneText(const Scene& scene) {
 
 // Writes `scene` as scene.yaml into a fresh folder and loads it back.
 Scene RoundTrip(const Scene& scene, const std::string& tag) {
-  const fs::path folder = fs::temp_directory_path() /
-                          ("drape_scene_yaml_test_" + std::to_string(::getpid()) + "_" + tag);
-  fs::create_directories(folder);
-  const fs::path path = folder / "scene.yaml";
-  std::ofstream(path) << SceneText(scene);
-  Scene loaded = LoadScene(path.string());
-  fs::remove_all(folder);
-  return loaded;
+  const testing::ScratchFile file("scene_yaml_test_" + tag, "scene.yaml", SceneText(scene));
+  return LoadScene(file.path().string());
 }
 
 // Every scene of configs/ written and loaded back gives the same text again (nothing lost or

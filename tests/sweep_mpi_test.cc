@@ -1,15 +1,16 @@
 // `drape sweep` across MPI ranks: `mpirun -np 2` and `-np 3` (oversubscribed on 2 cores) write the
 // same sweep.csv as the process alone, every column but the solver's time, and every task once.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "src/sweep/sweep.h"
 #include "tests/mpi_run.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_paths.h"
 
 namespace drape {
@@ -53,15 +54,13 @@ class SweepMpi : public ::testing::Test {
     if (!testing::MpiLauncherAvailable()) {
       GTEST_SKIP() << "drape was built without MPI (mpi-default-dev not found): no MPI test";
     }
-    folder_ = fs::temp_directory_path() /
-              ("drape_sweep_mpi_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
+    // Made here, in the test process: every rank of mpirun works in it (cd in Sweep).
+    scratch_.emplace("sweep_mpi");
+    folder_ = scratch_->path();
     fs::copy_file(fs::path(drape_tests::kSourceDir) / "configs/fv/drape_tester_cotton_30.yaml",
                   folder_ / "base.yaml");
   }
-  void TearDown() override { fs::remove_all(folder_); }
+  void TearDown() override { scratch_.reset(); }
 
   // `drape sweep` of `text` into out_<label>, under `mpirun -np ranks` (0: alone, one thread).
   ProgramOutcome Sweep(const std::string& text, int ranks, const std::string& label) const {
@@ -96,6 +95,7 @@ class SweepMpi : public ::testing::Test {
     }
   }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path folder_;
 };
 

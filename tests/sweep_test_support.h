@@ -4,7 +4,6 @@
 #define DRAPE_TESTS_SWEEP_TEST_SUPPORT_H_
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,17 +12,14 @@
 #include <vector>
 
 #include "src/sweep/sweep.h"
+#include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
 namespace drape::testing {
 
-// A fresh, empty temporary folder per test (removed and recreated).
+// A fresh, empty temporary folder per call, removed when the test process ends.
 inline std::string SweepTempDir(const std::string& name) {
-  const std::string path =
-      ::testing::TempDir() + "drape_sweep_" + name + "_" + std::to_string(::getpid());
-  std::filesystem::remove_all(path);
-  std::filesystem::create_directories(path);
-  return path;
+  return ScratchFolderUntilExit("sweep_" + name).string();
 }
 
 inline void WriteText(const std::string& path, const std::string& text) {

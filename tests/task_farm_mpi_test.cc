@@ -5,11 +5,13 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
 
 #include "tests/mpi_run.h"
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
@@ -59,12 +61,10 @@ class TaskFarmMpi : public ::testing::Test {
     if (!testing::MpiLauncherAvailable()) {
       GTEST_SKIP() << "drape was built without MPI (mpi-default-dev not found): no MPI test";
     }
-    folder_ = fs::temp_directory_path() /
-              ("drape_task_farm_mpi_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(folder_);
+    scratch_.emplace("task_farm_mpi");  // in the test process; the ranks never see it
+    folder_ = scratch_->path();
   }
-  void TearDown() override { fs::remove_all(folder_); }
+  void TearDown() override { scratch_.reset(); }
 
   ProbeRun Probe(int ranks, const std::string& arguments = "") const {
     const std::string probe =
@@ -72,6 +72,7 @@ class TaskFarmMpi : public ::testing::Test {
     return ParseProbe(RunProgram(ranks == 0 ? probe : MpiRun(ranks) + probe, folder_));
   }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path folder_;
 };
 

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -25,6 +26,7 @@
 #include "src/output/png_text.h"
 #include "src/output/version.h"
 #include "tests/folded_skirt.h"
+#include "tests/scratch_folder.h"
 
 namespace drape {
 namespace {
@@ -96,12 +98,10 @@ Scene SceneWriting(const std::vector<std::string>& write) {
 class WritersTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 ("drape_writers_test_" + std::to_string(::getpid()) + "_" + test->name());
-    fs::remove_all(directory_);
+    scratch_.emplace("writers_test");
+    directory_ = scratch_->path() / "result";  // not made: the writers make it
   }
-  void TearDown() override { fs::remove_all(directory_); }
+  void TearDown() override { scratch_.reset(); }
 
   std::string Path(const std::string& name) const { return (directory_ / name).string(); }
 
@@ -115,6 +115,7 @@ class WritersTest : public ::testing::Test {
     return names;
   }
 
+  std::optional<testing::ScratchFolder> scratch_;
   fs::path directory_;
 };
 
