@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "src/output/command_output.h"
 #include "tests/test_paths.h"
 
 namespace drape::testing {
@@ -29,12 +30,8 @@ inline std::string ReadText(const std::filesystem::path& path) {
   return text.str();
 }
 
-// `text` in single quotes for the shell, each ' written as '\''.
-inline std::string ShellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
+// Quoting for the shell is drape's own (src/output/command_output.h).
+using drape::ShellQuoted;
 
 // The built drape with `args`, each quoted: a shell command line.
 inline std::string DrapeCommand(const std::vector<std::string>& args) {

@@ -27,6 +27,7 @@
 #include "src/fit/fit_writer.h"
 #include "src/model/model.h"
 #include "src/numerics/library_threads.h"
+#include "src/output/command_output.h"
 #include "src/output/json.h"
 #include "src/output/result_folder.h"
 #include "src/output/scene_json.h"
@@ -37,6 +38,7 @@
 #include "src/run/run.h"
 #include "src/run/state_text.h"
 #include "src/scene/drape_test.h"
+#include "src/scene/file_paths.h"
 #include "src/scene/material_models.h"
 #include "src/scene/output_kinds.h"
 #include "src/scene/scene.h"
@@ -109,7 +111,8 @@ std::string TermSummary(const Model& model) {
 }
 
 std::string OutputDirectory(const Scene& scene) {
-  return scene.output.directory.empty() ? "out/" + scene.name : scene.output.directory;
+  return scene.output.directory.empty() ? DefaultResultFolder(".", scene.name)
+                                        : scene.output.directory;
 }
 
 // Lets a Ctrl-C (SIGINT) or a batch system's SIGTERM reach the solver's handler even if the parent
@@ -525,9 +528,7 @@ std::string CommandLine(const std::vector<std::string>& args) {
       line += " " + arg;
       continue;
     }
-    std::string quoted = "'";
-    for (char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    line += " " + quoted + "'";
+    line += " " + ShellQuoted(arg);
   }
   return line;
 }

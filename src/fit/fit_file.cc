@@ -423,7 +423,7 @@ void ReadTop(const YamlValue& root, FitSpec* spec) {
     spec->max_evaluations = ReadIntAtLeast(*count, 1);
   if (const auto tolerance = top.Find("tolerance")) spec->tolerance = ReadPositive(*tolerance);
   // Like a scene's output.directory: relative to the fit file's folder.
-  spec->output_directory = ResolvePath(directory, "out/" + spec->name);
+  spec->output_directory = DefaultResultFolder(directory, spec->name);
   if (const auto output = top.Find("output")) {
     const YamlMap map(*output, {"directory"});
     if (const auto folder = map.Find("directory")) {

@@ -11,6 +11,9 @@ namespace drape {
 // if it could not be started or wrote nothing.
 std::string CommandOutput(const std::string& command);
 
+// A shell word: single quotes, with '\'' for a quote inside.
+std::string ShellQuoted(const std::string& text);
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_OUTPUT_COMMAND_OUTPUT_H_

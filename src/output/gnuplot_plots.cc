@@ -3,18 +3,13 @@
 #include <cstdlib>
 
 #include "src/output/atomic_file.h"
+#include "src/output/command_output.h"
 #include "src/output/plot_scripts.h"
 #include "src/output/png_text.h"
 
 namespace drape {
 
 namespace fs = std::filesystem;
-
-std::string ShellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
 
 std::string GnuplotQuoted(const std::string& text) {
   std::string quoted = "'";

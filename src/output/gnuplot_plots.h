@@ -14,9 +14,6 @@
 
 namespace drape {
 
-// A shell word: single quotes, with '\'' for a quote inside.
-std::string ShellQuoted(const std::string& text);
-
 // A gnuplot string literal: single quotes, with '' for a quote inside.
 std::string GnuplotQuoted(const std::string& text);
 

@@ -16,4 +16,8 @@ std::string DirectoryOf(const std::string& path) {
   return directory.empty() ? "." : directory;
 }
 
+std::string DefaultResultFolder(const std::string& directory, const std::string& name) {
+  return ResolvePath(directory, "out/" + name);
+}
+
 }  // namespace drape

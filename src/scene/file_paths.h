@@ -14,6 +14,10 @@ std::string ResolvePath(const std::string& directory, const std::string& path);
 // The folder of a file's path, "." for a bare file name.
 std::string DirectoryOf(const std::string& path);
 
+// Where the results of the input file named `name` in `directory` go unless it or the command
+// line says otherwise: out/<name> beside it (scene, fit and sweep files alike).
+std::string DefaultResultFolder(const std::string& directory, const std::string& name);
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_SCENE_FILE_PATHS_H_

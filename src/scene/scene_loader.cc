@@ -975,7 +975,7 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
   const YamlMap map(value, SchemaKeys("output"));
   OutputSpec output;
   output.where = value.where;
-  output.directory = ResolvePath(scene.directory, "out/" + scene.name);
+  output.directory = DefaultResultFolder(scene.directory, scene.name);
   if (const auto directory = map.Find("directory")) {
     const std::string given = ReadString(*directory);
     if (given.empty()) Fail(*directory, "expected a folder, got nothing");

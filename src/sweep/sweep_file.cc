@@ -341,7 +341,7 @@ void ReadTop(const YamlValue& root, SweepSpec* spec) {
   if (const auto warm = top.Find("warm_start")) ReadWarmStart(*warm, spec);
   if (const auto keep = top.Find("keep")) ReadKeep(*keep, spec);
   spec->output_directory =
-      ResolvePath(DirectoryOf(spec->file), "out/" + fs::path(spec->file).stem().string());
+      DefaultResultFolder(DirectoryOf(spec->file), fs::path(spec->file).stem().string());
   if (const auto output = top.Find("output")) {
     const YamlMap map(*output, {"directory"});
     if (const auto folder = map.Find("directory")) {
