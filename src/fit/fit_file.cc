@@ -22,6 +22,7 @@
 #include "src/run/load_steps.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_models.h"
+#include "src/scene/number_text.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
 
@@ -39,11 +40,8 @@ namespace fs = std::filesystem;
 std::optional<double> ParseDataNumber(const std::string& text, std::string* error) {
   if (const auto number = ParseNumber(text, error)) return number;
   if (text.find_first_not_of("0123456789.eE+-") != std::string::npos) return std::nullopt;
-  char* end = nullptr;
-  const double number = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !(std::abs(number) < kSmallestInputMagnitude)) {
-    return std::nullopt;
-  }
+  const auto number = WholeNumber(text);
+  if (!number || !(std::abs(*number) < kSmallestInputMagnitude)) return std::nullopt;
   return number;
 }
 

@@ -22,6 +22,8 @@
 #include <map>
 #include <sstream>
 
+#include "src/scene/number_text.h"
+
 namespace drape {
 
 std::string PlaceText(const std::string& path, const FilePlace& place) {
@@ -56,10 +58,9 @@ std::string ReadBytes(const std::string& path) {
 
 // A whole token as a number (strtod's syntax), or false.
 bool ParseNumber(const std::string& token, double* value) {
-  if (token.empty()) return false;
-  char* end = nullptr;
-  *value = std::strtod(token.c_str(), &end);
-  return end == token.c_str() + token.size();
+  const auto number = WholeNumber(token);
+  if (number) *value = *number;
+  return number.has_value();
 }
 
 // A value that must be a whole number in int's range (a count or a vertex index).

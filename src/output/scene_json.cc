@@ -2,13 +2,13 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <utility>
 
 #include "src/output/json.h"
 #include "src/output/scene_yaml.h"
+#include "src/scene/number_text.h"
 #include "src/scene/scene_schema.h"
 
 namespace drape {
@@ -24,19 +24,13 @@ bool IsLeaf(const YAML::Node& node) {
   return true;
 }
 
-bool IsNumber(const std::string& text) {
-  char* end = nullptr;
-  std::strtod(text.c_str(), &end);
-  return !text.empty() && *end == '\0';
-}
-
 // scene.yaml's scalars: numbers, true/false, texts (quoted ones always texts).
 std::string JsonScalar(const YAML::Node& node) {
   if (node.IsNull()) return "null";
   const std::string& text = node.Scalar();
   if (node.Tag() != "!") {
     if (text == "true" || text == "false") return text;
-    if (IsNumber(text)) return text;
+    if (WholeNumber(text)) return text;
   }
   return JsonString(text);
 }

@@ -6,6 +6,7 @@
 
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
+#include "src/scene/number_text.h"
 #include "src/scene/output_kinds.h"
 #include "src/scene/scene.h"
 
@@ -1027,10 +1028,7 @@ std::optional<double> RangeNumber(const std::string& text) {
     }
     return std::pow(10.0, std::stoi(exponent));
   }
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0') return std::nullopt;
-  return value;
+  return WholeNumber(text);
 }
 
 // "a–b" or "in [a, b]": both bounds, inclusive.

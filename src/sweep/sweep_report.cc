@@ -13,6 +13,7 @@
 #include "src/output/gnuplot_plots.h"
 #include "src/output/html_text.h"
 #include "src/output/json.h"
+#include "src/scene/number_text.h"
 #include "src/sweep/sweep.h"
 
 namespace drape {
@@ -45,10 +46,10 @@ struct Table {
   // The number in row `r`, column `c`, if there is one.
   bool Number(size_t r, int c, double* value) const {
     const std::string& text = rows[r][c];
-    if (text.empty()) return false;
-    char* end = nullptr;
-    *value = std::strtod(text.c_str(), &end);
-    return end && *end == '\0' && std::isfinite(*value);
+    const auto number = WholeNumber(text);
+    if (!number || !std::isfinite(*number)) return false;
+    *value = *number;
+    return true;
   }
 };
 
