@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include "src/model/model.h"
@@ -25,16 +26,37 @@ constexpr char kMeshMarker[] = "\n---mesh---\n";
 // The bytes after the marker, under each name a scene can give (src/model/mesh_file.h).
 constexpr const char* kMeshFiles[] = {"mesh.obj", "mesh.ply", "mesh.stl"};
 
-// A folder of this process's own for the scene and its mesh files.
-const std::filesystem::path& Folder() {
-  static const std::filesystem::path folder = [] {
+// A folder of this process's own for the scene and its mesh files (InputFolder): removed by the
+// process that made it, not by a forked child that inherited it.
+class ProcessFolder {
+ public:
+  ProcessFolder() : owner_(getpid()) {
     const char* tmp = std::getenv("TMPDIR");
-    std::filesystem::path path =
-        std::filesystem::path(tmp ? tmp : "/tmp") / ("drape_fuzz_" + std::to_string(getpid()));
-    std::filesystem::create_directories(path);
-    return path;
-  }();
-  return folder;
+    path_ = std::filesystem::path(tmp ? tmp : "/tmp") / ("drape_fuzz_" + std::to_string(owner_));
+    std::filesystem::create_directories(path_);
+  }
+  ~ProcessFolder() {
+    std::error_code ignored;
+    if (getpid() == owner_) std::filesystem::remove_all(path_, ignored);
+  }
+  ProcessFolder(const ProcessFolder&) = delete;
+  ProcessFolder& operator=(const ProcessFolder&) = delete;
+  pid_t owner() const { return owner_; }
+  // Made again if something removed it since.
+  const std::filesystem::path& path() const {
+    std::filesystem::create_directories(path_);
+    return path_;
+  }
+
+ private:
+  pid_t owner_;
+  std::filesystem::path path_;
+};
+
+const std::filesystem::path& Folder() {
+  static std::unique_ptr<ProcessFolder> folder;
+  if (!folder || folder->owner() != getpid()) folder = std::make_unique<ProcessFolder>();
+  return folder->path();
 }
 
 void WriteBytes(const std::filesystem::path& path, const char* data, size_t size) {
@@ -91,5 +113,7 @@ int RunInput(const uint8_t* data, size_t size) {
     return -1;  // a refused scene: the expected outcome for most inputs
   }
 }
+
+std::string InputFolder() { return Folder().string(); }
 
 }  // namespace drape_fuzz

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace drape_fuzz {
 
@@ -18,6 +19,11 @@ namespace drape_fuzz {
 // (InputError); -2 if the scene loaded but its mesh is too large to build here. Aborts on a model
 // with a non-finite position or mass.
 int RunInput(const uint8_t* data, size_t size);
+
+// The folder RunInput writes into: drape_fuzz_<pid> under $TMPDIR (else /tmp), made on the
+// process's first call, removed when that process ends normally (a crash leaves it, with the
+// input that crashed).
+std::string InputFolder();
 
 }  // namespace drape_fuzz
 

@@ -5,13 +5,17 @@
 #include "fuzz/fuzz_input.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <string>
 
+#include "tests/scratch_folder.h"
 #include "tests/test_paths.h"
 
 namespace drape {
@@ -42,6 +46,31 @@ TEST(FuzzInput, EverySeedLoadsOrIsRefused) {
     const int outcome = RunSeed(entry.path().filename().string());
     EXPECT_GE(outcome, -2) << entry.path();
   }
+}
+
+// The folder a fuzzing process writes its inputs into is removed when the process ends (the
+// fuzzer, and this test binary, once left one in /tmp per process). A child process runs one seed
+// with TMPDIR in a scratch folder, says where it wrote, and exits normally.
+TEST(FuzzInput, ItsFolderIsRemovedWhenTheProcessEnds) {
+  const testing::ScratchFolder scratch("fuzz_input");
+  const fs::path report = scratch / "folder.txt";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    setenv("TMPDIR", scratch.path().c_str(), 1);
+    const int nodes = RunSeed("mesh_square_obj");
+    std::ofstream(report) << drape_fuzz::InputFolder();
+    std::exit(nodes == 4 ? 0 : 1);  // std::exit: the static objects' destructors run
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  std::ifstream in(report);
+  std::string folder;
+  std::getline(in, folder);
+  ASSERT_FALSE(folder.empty());
+  EXPECT_EQ(fs::path(folder).parent_path(), scratch.path());
+  EXPECT_FALSE(fs::exists(folder)) << folder;
 }
 
 }  // namespace

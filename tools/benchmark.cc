@@ -23,16 +23,21 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <utility>
 #include <vector>
 
+#include "src/analysis/drape_analysis.h"
+#include "src/analysis/levels.h"
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
 #include "src/numerics/library_threads.h"
 #include "src/numerics/sparse_hessian.h"
+#include "src/run/run.h"
 #include "src/scene/scene_loader.h"
 #include "src/solvers/solver.h"
 
@@ -612,6 +617,121 @@ int ScenesMain(int argc, char** argv) {
   return 0;
 }
 
+// ---- Starts near the answer (`benchmark starts`) ----
+
+// The nodes of `fine` at the places of the nodes of `coarse` (the lattices are nested), -1 where
+// none is: matched by their flat positions to 0.1 µm.
+std::vector<int> NodesAtTheSamePlaces(const Model& coarse, const Model& fine) {
+  const auto place = [](const Model& model, int node) {
+    return std::pair{std::lround(model.initial[3 * node] * 1e7),
+                     std::lround(model.initial[3 * node + 1] * 1e7)};
+  };
+  std::map<std::pair<long, long>, int> fine_at;
+  for (int k = 0; k < fine.num_nodes; ++k) fine_at[place(fine, k)] = k;
+  std::vector<int> matches(coarse.num_nodes, -1);
+  for (int k = 0; k < coarse.num_nodes; ++k) {
+    const auto it = fine_at.find(place(coarse, k));
+    if (it != fine_at.end()) matches[k] = it->second;
+  }
+  return matches;
+}
+
+// The answer as a consistent coarser level could give it at best: taken at the nodes of the
+// lattice of twice the spacing and interpolated back as `solver.levels` does (ProlongPositions).
+void ThroughTheCoarserLattice(const Scene& scene, const std::vector<double>& answer, Model* start) {
+  const Scene coarse_scene = CoarsenedScene(scene, 2);
+  Model coarse = BuildModel(coarse_scene);
+  const std::vector<int> matches = NodesAtTheSamePlaces(coarse, *start);
+  for (int k = 0; k < coarse.num_nodes; ++k) {
+    if (matches[k] < 0) continue;
+    for (int c = 0; c < 3; ++c) {
+      if (!coarse.fixed[3 * k + c]) coarse.positions[3 * k + c] = answer[3 * matches[k] + c];
+    }
+  }
+  ProlongPositions(coarse_scene, coarse, scene, start);
+}
+
+// Every free coordinate of `answer` displaced by normal noise of standard deviation `noise` (m).
+void WithNoise(const std::vector<double>& answer, double noise, Model* start) {
+  std::mt19937 random(1);
+  std::normal_distribution<double> normal(0.0, noise);
+  for (size_t i = 0; i < answer.size(); ++i) {
+    if (!start->fixed[i]) start->positions[i] = answer[i] + normal(random);
+  }
+}
+
+// One row: the solve from `start`'s positions, how far they were from `answer` (mm) and how the
+// iterations split by relative residual: the fall (≥ 10), the settling (1e-2 to 10), the end.
+void SolveAndPrint(const Scene& scene, const std::string& label, Model& start,
+                   const std::vector<double>& answer) {
+  double largest = 0.0, squares = 0.0;
+  for (size_t i = 0; i < answer.size() && !answer.empty(); ++i) {
+    const double d = start.positions[i] - answer[i];
+    largest = std::max(largest, std::abs(d));
+    squares += d * d;
+  }
+  const RunResult result = RunSolve(scene, start, scene.solver.method);
+  int fall = 0, settling = 0, end = 0;
+  for (const IterationRecord& record : result.summary.history) {
+    if (record.iteration == result.summary.iterations) continue;  // the answer, no step from it
+    record.relative_residual >= 10.0   ? ++fall
+    : record.relative_residual >= 1e-2 ? ++settling
+                                       : ++end;
+  }
+  const DrapeAnalysis drape = AnalyseDrape(scene, start);
+  const std::string distance = answer.empty()
+                                   ? ""
+                                   : OrBlank(1e3 * largest, "%.3g") + ", " +
+                                         OrBlank(1e3 * std::sqrt(squares / answer.size()), "%.2g");
+  std::printf("| %s | %s | %s | %d | %d / %d / %d | %.2f | %.9e | %.4f | %d | %s |\n",
+              scene.name.c_str(), label.c_str(), distance.c_str(), result.summary.iterations, fall,
+              settling, end, result.summary.wall_time_s, result.certificate.energy,
+              drape.coefficient.cusick, drape.folds.count,
+              result.Saddle() || !result.converged ? "no" : "yes");
+  std::fflush(stdout);
+}
+
+int StartsMain(int argc, char** argv) {
+  std::vector<std::string> names = {"limp2.6", "drape2.6"};
+  double noise = 1e-4;
+  for (int a = 1; a + 1 < argc; a += 2) {
+    const std::string key = argv[a], value = argv[a + 1];
+    if (key == "--scenes") {
+      names = Split(value);
+    } else if (key == "--noise") {
+      noise = std::atof(value.c_str());
+    } else {
+      std::fprintf(stderr, "usage: benchmark starts [--scenes limp2.6,drape2.6] [--noise m]\n");
+      return 2;
+    }
+  }
+  std::printf(
+      "| scene | start | from the answer: largest, rms mm | iterations | fall / settling / end "
+      "| wall s | energy J | DC | folds | stable |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& name : names) {
+    const auto& all = AllScenes();
+    const auto it = std::find_if(all.begin(), all.end(),
+                                 [&name](const BenchScene& s) { return s.name == name; });
+    if (it == all.end()) {
+      std::fprintf(stderr, "unknown scene %s\n", name.c_str());
+      return 2;
+    }
+    Scene scene = LoadScene(it->file, it->overrides);
+    scene.name = name;
+    Model flat = BuildModel(scene);
+    SolveAndPrint(scene, "flat", flat, {});
+    const std::vector<double> answer = flat.positions;
+    Model coarse_start = BuildModel(scene);
+    ThroughTheCoarserLattice(scene, answer, &coarse_start);
+    SolveAndPrint(scene, "the answer through the 2h lattice", coarse_start, answer);
+    Model noisy_start = BuildModel(scene);
+    WithNoise(answer, noise, &noisy_start);
+    SolveAndPrint(scene, "the answer + noise " + OrBlank(1e3 * noise, "%.2g") + " mm", noisy_start,
+                  answer);
+  }
+  return 0;
+}
+
 }  // namespace
 }  // namespace drape
 
@@ -622,6 +742,7 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "solvers") {
       return drape::SolverComparisonMain(argc - 1, argv + 1);
     }
+    if (argc > 1 && std::string(argv[1]) == "starts") return drape::StartsMain(argc - 1, argv + 1);
     return drape::ScenesMain(argc, argv);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "benchmark: %s\n", error.what());
