@@ -132,6 +132,45 @@ TEST(Sweep, ARestartSolvesOnlyTheUnfinishedTasks) {
   EXPECT_EQ(SweepInto(spec, out).solved, 0);
 }
 
+// sweep.csv's drape_version: the drape that solved each row. A restart by another drape keeps
+// the finished rows (the physics of a row is its variant's) with their own version, and says so.
+TEST(Sweep, EachRowNamesTheDrapeThatSolvedItAndARestartSaysWhatItKept) {
+  const std::string folder = SweepTempDir("versions");
+  const SweepSpec spec = LoadSweepFile(WriteSweep(folder, kSmall));
+  const std::string out = folder + "/out";
+  SweepInto(spec, out, 1);
+  const auto first = ReadCsv(out + "/sweep.csv");
+  ASSERT_EQ(first.size(), 2u);
+  const int version = ColumnOf(first[0], "drape_version");
+  ASSERT_GE(version, 0);
+  EXPECT_EQ(first[1][version], DrapeVersion());
+  // As if an older drape had solved task 1.
+  const std::string row_file = TaskFolder(out, spec, 1) + "/row.csv";
+  std::string row = ReadText(row_file);
+  const size_t at = row.rfind(DrapeVersion());
+  ASSERT_NE(at, std::string::npos);
+  row.replace(at, DrapeVersion().size(), "v0.1-older");
+  WriteText(row_file, row);
+
+  SweepOptions options;
+  options.out = out;
+  options.threads = 1;
+  options.plots = false;
+  std::ostringstream log;
+  const SweepSummary summary = RunSweep(spec, options, log);
+  EXPECT_EQ(summary.solved, 3);
+  EXPECT_EQ(summary.skipped, 1);
+  EXPECT_NE(log.str().find("sweep: 1 finished task kept from drape v0.1-older (this is " +
+                           DrapeVersion()),
+            std::string::npos)
+      << log.str();
+  const auto rows = ReadCsv(out + "/sweep.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  for (size_t r = 1; r < rows.size(); ++r) {
+    EXPECT_EQ(rows[r][version], rows[r][0] == "1" ? "v0.1-older" : DrapeVersion()) << r;
+  }
+}
+
 TEST(Sweep, AChangedVariantIsSolvedAgain) {
   const std::string folder = SweepTempDir("changed");
   const std::string out = folder + "/out";

@@ -17,6 +17,7 @@
 #include "src/output/json.h"
 #include "src/output/provenance.h"
 #include "src/output/result_folder.h"
+#include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
@@ -41,7 +42,8 @@ const std::vector<std::string> kResultColumns = {"converged",         "stop_reas
                                                  "energy_J",          "relative_residual",
                                                  "max_node_force_N",  "stable",
                                                  "drape_coefficient", "folds",
-                                                 "certificate",       "warm_start_from"};
+                                                 "certificate",       "warm_start_from",
+                                                 "drape_version"};
 
 std::string CsvLine(const std::vector<std::string>& cells) {
   std::string line;
@@ -80,14 +82,14 @@ std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveR
        CsvNumber(result.certificate.max_node_force), stable_known ? JsonBool(stability.stable) : "",
        report.drape ? CsvNumber(ReportedDrapeCoefficient(report)) : "",
        report.drape ? std::to_string(report.drape->folds.count) : "", StateText(result),
-       warm_from >= 0 ? std::to_string(warm_from) : ""});
+       warm_from >= 0 ? std::to_string(warm_from) : "", DrapeVersion()});
   return cells;
 }
 
 std::vector<std::string> FailedRow(const SweepSpec& spec, int task, const std::string& why) {
   std::vector<std::string> cells = TaskCells(spec, task);
-  cells.insert(cells.end(),
-               {JsonBool(false), "failed: " + why, "", "", "", "", "", "", "", "", "", ""});
+  cells.insert(cells.end(), {JsonBool(false), "failed: " + why, "", "", "", "", "", "", "", "", "",
+                             "", DrapeVersion()});
   return cells;
 }
 
@@ -254,8 +256,18 @@ std::string RunChain(const Context& context, const std::vector<int>& chain, int 
 class SweepTable {
  public:
   SweepTable(const Context& context, std::ostream& log) : context_(context), log_(log) {
+    std::map<std::string, int> other_versions;  // rows kept from another drape, by its version
     for (int task = 0; task < static_cast<int>(context.spec.tasks.size()); ++task) {
-      if (const auto row = FinishedRow(context, task)) rows_[task] = *row;
+      const auto row = FinishedRow(context, task);
+      if (!row) continue;
+      rows_[task] = *row;
+      const std::string version = SplitCsvLine(*row).back();
+      if (version != DrapeVersion()) ++other_versions[version];
+    }
+    for (const auto& [version, count] : other_versions) {
+      log_ << "sweep: " << count << " finished task" << (count == 1 ? "" : "s")
+           << " kept from drape " << version << " (this is " << DrapeVersion()
+           << "; sweep.csv's drape_version column says which drape solved each row)\n";
     }
   }
 
