@@ -1,16 +1,17 @@
-// benchmark: the hanging sheet (configs/hard/two_corner_sheet.yaml) at several sizes, solved by
-// every method to relative residual 1e-8 or its own limit, one child process per run (so that the
-// peak memory, ru_maxrss of the child, is that run's alone). Prints a table: nodes, dofs, solver,
-// iterations, wall time, residual reached, final energy, time relative to newton, peak memory,
-// and for newton the time per iteration over its mean time per numeric factorisation.
-//
-//   benchmark [--sizes 50,100,256] [--solvers newton,ceres-lbfgs,...] [--cap SECONDS]
-//             [--newton-cap SECONDS] [--scene configs/hard/two_corner_sheet.yaml]
-//   (paths relative to the current folder)
-//
-// --cap is each run's time limit (default 600 s); a run that hits it is reported as such.
-// --newton-cap is newton's (default: --cap), so that the reference can run to 1e-8 while the
-// others are held to a shorter limit. Ratios to newton are printed only where newton reached 1e-8.
+// benchmark: drape's speed, in three modes (docs/benchmarks.md, "How to run", says what each
+// prints):
+//   benchmark [--scenes a,b] [--cap s] [--baseline BINARY] [--baseline-cap s] [--drape build/drape]
+//             [--repeats n] [--probe-only]
+//     the scenes of AllScenes: an assembly probe in this process, then one `drape solve` per scene
+//     in a child process (its peak memory is that run's alone), against an older build's binary;
+//   benchmark solvers [--sizes 50,100,256] [--solvers newton,ceres-lbfgs,...] [--cap s]
+//             [--newton-cap s] [--scene configs/hard/two_corner_sheet.yaml]
+//     every method on the hanging sheet at several sizes, one child process per run, to relative
+//     residual 1e-8 or its cap; times relative to newton's;
+//   benchmark starts [--scenes limp2.6,drape2.6] [--noise m]
+//     newton from the flat start and from starts made of the answer (seen through the lattice of
+//     twice the spacing; with noise), in this process.
+// Paths are relative to the current folder (the repository's root).
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -24,6 +25,7 @@
 #include <cstdlib>
 #include <exception>
 #include <map>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -310,6 +312,23 @@ const std::vector<BenchScene>& AllScenes() {
   return scenes;
 }
 
+// The scenes of AllScenes by name, in the order given; nothing (after saying which) if a name
+// is not one of them.
+std::optional<std::vector<BenchScene>> NamedScenes(const std::vector<std::string>& names) {
+  std::vector<BenchScene> scenes;
+  for (const auto& name : names) {
+    const auto& all = AllScenes();
+    const auto it = std::find_if(all.begin(), all.end(),
+                                 [&name](const BenchScene& s) { return s.name == name; });
+    if (it == all.end()) {
+      std::fprintf(stderr, "unknown scene %s\n", name.c_str());
+      return std::nullopt;
+    }
+    scenes.push_back(*it);
+  }
+  return scenes;
+}
+
 // What one `drape solve` run reported in its summary.json, and its peak memory.
 struct SolveRun {
   bool ran = false, converged = false, capped = false;
@@ -558,21 +577,14 @@ int ScenesMain(int argc, char** argv) {
       std::fprintf(stderr,
                    "usage: benchmark [--scenes a,b] [--cap s] [--baseline BINARY] "
                    "[--baseline-cap s] [--drape build/drape] [--repeats n] [--probe-only]\n"
-                   "       benchmark solvers [--sizes 50,100] [--solvers a,b] [--cap s] ...\n");
+                   "       benchmark solvers [--sizes 50,100] [--solvers a,b] [--cap s] ...\n"
+                   "       benchmark starts [--scenes limp2.6,drape2.6] [--noise m]\n");
       return 2;
     }
   }
-  std::vector<BenchScene> scenes;
-  for (const auto& name : names) {
-    const auto& all = AllScenes();
-    const auto it = std::find_if(all.begin(), all.end(),
-                                 [&name](const BenchScene& s) { return s.name == name; });
-    if (it == all.end()) {
-      std::fprintf(stderr, "unknown scene %s\n", name.c_str());
-      return 2;
-    }
-    scenes.push_back(*it);
-  }
+  const std::optional<std::vector<BenchScene>> named = NamedScenes(names);
+  if (!named) return 2;
+  const std::vector<BenchScene>& scenes = *named;
   std::printf(
       "Assembly probe (this build, %u hardware threads, OpenBLAS kernels %s; median of %d):\n\n",
       std::thread::hardware_concurrency(), BlasKernelsText().c_str(), repeats);
@@ -638,17 +650,19 @@ std::vector<int> NodesAtTheSamePlaces(const Model& coarse, const Model& fine) {
 
 // The answer as a consistent coarser level could give it at best: taken at the nodes of the
 // lattice of twice the spacing and interpolated back as `solver.levels` does (ProlongPositions).
-void ThroughTheCoarserLattice(const Scene& scene, const std::vector<double>& answer, Model* start) {
+// False (nothing done) where the two lattices are not nested.
+bool ThroughTheCoarserLattice(const Scene& scene, const std::vector<double>& answer, Model* start) {
   const Scene coarse_scene = CoarsenedScene(scene, 2);
   Model coarse = BuildModel(coarse_scene);
   const std::vector<int> matches = NodesAtTheSamePlaces(coarse, *start);
+  if (std::count(matches.begin(), matches.end(), -1) > 0) return false;
   for (int k = 0; k < coarse.num_nodes; ++k) {
-    if (matches[k] < 0) continue;
     for (int c = 0; c < 3; ++c) {
       if (!coarse.fixed[3 * k + c]) coarse.positions[3 * k + c] = answer[3 * matches[k] + c];
     }
   }
   ProlongPositions(coarse_scene, coarse, scene, start);
+  return true;
 }
 
 // Every free coordinate of `answer` displaced by normal noise of standard deviation `noise` (m).
@@ -658,6 +672,13 @@ void WithNoise(const std::vector<double>& answer, double noise, Model* start) {
   for (size_t i = 0; i < answer.size(); ++i) {
     if (!start->fixed[i]) start->positions[i] = answer[i] + normal(random);
   }
+}
+
+// Whether the answer is a stable minimum, and if not, why.
+const char* Verdict(const RunResult& result) {
+  if (!result.converged) return "no: not converged";
+  if (result.contact.ThroughDisk()) return "no: through a support disc";
+  return result.Saddle() ? "no: a saddle" : "yes";
 }
 
 // One row: the solve from `start`'s positions, how far they were from `answer` (mm) and how the
@@ -678,16 +699,20 @@ void SolveAndPrint(const Scene& scene, const std::string& label, Model& start,
     : record.relative_residual >= 1e-2 ? ++settling
                                        : ++end;
   }
-  const DrapeAnalysis drape = AnalyseDrape(scene, start);
+  std::string coefficient, folds;  // blank for a scene without a drape coefficient
+  if (HasDrapeCoefficient(scene, start)) {
+    const DrapeAnalysis drape = AnalyseDrape(scene, start);
+    coefficient = OrBlank(drape.coefficient.cusick, "%.4f");
+    folds = std::to_string(drape.folds.count);
+  }
   const std::string distance = answer.empty()
                                    ? ""
                                    : OrBlank(1e3 * largest, "%.3g") + ", " +
                                          OrBlank(1e3 * std::sqrt(squares / answer.size()), "%.2g");
-  std::printf("| %s | %s | %s | %d | %d / %d / %d | %.2f | %.9e | %.4f | %d | %s |\n",
+  std::printf("| %s | %s | %s | %d | %d / %d / %d | %.2f | %.9e | %s | %s | %s |\n",
               scene.name.c_str(), label.c_str(), distance.c_str(), result.summary.iterations, fall,
               settling, end, result.summary.wall_time_s, result.certificate.energy,
-              drape.coefficient.cusick, drape.folds.count,
-              result.Saddle() || !result.converged ? "no" : "yes");
+              coefficient.c_str(), folds.c_str(), Verdict(result));
   std::fflush(stdout);
 }
 
@@ -698,32 +723,31 @@ int StartsMain(int argc, char** argv) {
     const std::string key = argv[a], value = argv[a + 1];
     if (key == "--scenes") {
       names = Split(value);
-    } else if (key == "--noise") {
+    } else if (key == "--noise" && std::atof(value.c_str()) > 0.0) {
       noise = std::atof(value.c_str());
     } else {
       std::fprintf(stderr, "usage: benchmark starts [--scenes limp2.6,drape2.6] [--noise m]\n");
       return 2;
     }
   }
+  const std::optional<std::vector<BenchScene>> named = NamedScenes(names);
+  if (!named) return 2;
   std::printf(
       "| scene | start | from the answer: largest, rms mm | iterations | fall / settling / end "
       "| wall s | energy J | DC | folds | stable |\n|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const auto& name : names) {
-    const auto& all = AllScenes();
-    const auto it = std::find_if(all.begin(), all.end(),
-                                 [&name](const BenchScene& s) { return s.name == name; });
-    if (it == all.end()) {
-      std::fprintf(stderr, "unknown scene %s\n", name.c_str());
-      return 2;
-    }
-    Scene scene = LoadScene(it->file, it->overrides);
-    scene.name = name;
+  for (const BenchScene& bench : *named) {
+    Scene scene = LoadScene(bench.file, bench.overrides);
+    scene.name = bench.name;
     Model flat = BuildModel(scene);
     SolveAndPrint(scene, "flat", flat, {});
     const std::vector<double> answer = flat.positions;
     Model coarse_start = BuildModel(scene);
-    ThroughTheCoarserLattice(scene, answer, &coarse_start);
-    SolveAndPrint(scene, "the answer through the 2h lattice", coarse_start, answer);
+    if (ThroughTheCoarserLattice(scene, answer, &coarse_start)) {
+      SolveAndPrint(scene, "the answer through the 2h lattice", coarse_start, answer);
+    } else {
+      std::printf("| %s | the answer through the 2h lattice: the lattices are not nested |\n",
+                  scene.name.c_str());
+    }
     Model noisy_start = BuildModel(scene);
     WithNoise(answer, noise, &noisy_start);
     SolveAndPrint(scene, "the answer + noise " + OrBlank(1e3 * noise, "%.2g") + " mm", noisy_start,
