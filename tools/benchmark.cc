@@ -681,12 +681,13 @@ const char* Verdict(const RunResult& result) {
   return result.Saddle() ? "no: a saddle" : "yes";
 }
 
-// One row: the solve from `start`'s positions, how far they were from `answer` (mm) and how the
-// iterations split by relative residual: the fall (≥ 10), the settling (1e-2 to 10), the end.
+// One row: the solve from `start`'s positions, how far they were from `answer` (the largest and
+// the rms difference over every coordinate, mm) and how the iterations split by relative
+// residual: the fall (≥ 10), the settling (1e-2 to 10), the end.
 void SolveAndPrint(const Scene& scene, const std::string& label, Model& start,
                    const std::vector<double>& answer) {
   double largest = 0.0, squares = 0.0;
-  for (size_t i = 0; i < answer.size() && !answer.empty(); ++i) {
+  for (size_t i = 0; i < answer.size(); ++i) {
     const double d = start.positions[i] - answer[i];
     largest = std::max(largest, std::abs(d));
     squares += d * d;
