@@ -42,11 +42,7 @@ class ProcessFolder {
   ProcessFolder(const ProcessFolder&) = delete;
   ProcessFolder& operator=(const ProcessFolder&) = delete;
   pid_t owner() const { return owner_; }
-  // Made again if something removed it since.
-  const std::filesystem::path& path() const {
-    std::filesystem::create_directories(path_);
-    return path_;
-  }
+  const std::filesystem::path& path() const { return path_; }
 
  private:
   pid_t owner_;

@@ -35,10 +35,10 @@ TEST(PngText, CairoReadsThePictureBackWithTheVersionInIt) {
   std::pair<const std::string*, size_t*> state{&png, &offset};
   cairo_surface_t* surface = cairo_image_surface_create_from_png_stream(
       [](void* closure, unsigned char* data, unsigned int length) {
-        auto* state = static_cast<std::pair<const std::string*, size_t*>*>(closure);
-        if (*state->second + length > state->first->size()) return CAIRO_STATUS_READ_ERROR;
-        state->first->copy(reinterpret_cast<char*>(data), length, *state->second);
-        *state->second += length;
+        auto* read = static_cast<std::pair<const std::string*, size_t*>*>(closure);
+        if (*read->second + length > read->first->size()) return CAIRO_STATUS_READ_ERROR;
+        read->first->copy(reinterpret_cast<char*>(data), length, *read->second);
+        *read->second += length;
         return CAIRO_STATUS_SUCCESS;
       },
       &state);

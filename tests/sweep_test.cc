@@ -31,15 +31,16 @@ grid:
   material.finite_volume.kes.W: [8.0, 16.0]
 )";
 
-SweepSummary SweepInto(const SweepSpec& spec, const std::string& out,
-                       std::optional<int> only = {}) {
+// `log`: where the sweep's messages go (null: dropped).
+SweepSummary SweepInto(const SweepSpec& spec, const std::string& out, std::optional<int> only = {},
+                       std::ostream* log = nullptr) {
   SweepOptions options;
   options.out = out;
   options.only = only;
   options.threads = 1;
   options.plots = false;
-  std::ostringstream log;
-  return RunSweep(spec, options, log);
+  std::ostringstream dropped;
+  return RunSweep(spec, options, log ? *log : dropped);
 }
 
 // The number after `"key": ` in a summary.json.
@@ -152,12 +153,8 @@ TEST(Sweep, EachRowNamesTheDrapeThatSolvedItAndARestartSaysWhatItKept) {
   row.replace(at, DrapeVersion().size(), "v0.1-older");
   WriteText(row_file, row);
 
-  SweepOptions options;
-  options.out = out;
-  options.threads = 1;
-  options.plots = false;
   std::ostringstream log;
-  const SweepSummary summary = RunSweep(spec, options, log);
+  const SweepSummary summary = SweepInto(spec, out, {}, &log);
   EXPECT_EQ(summary.solved, 3);
   EXPECT_EQ(summary.skipped, 1);
   EXPECT_NE(log.str().find("sweep: 1 finished task kept from drape v0.1-older (this is " +

@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cstdint>
-#include <fstream>
 
 #include "src/output/atomic_file.h"
 #include "src/output/version.h"
@@ -65,7 +64,7 @@ std::string PngWithDrapeVersion(const std::string& png) {
 void AddDrapeVersionToPngFile(const std::filesystem::path& path) {
   const std::string png = ReadWholeFile(path);
   if (!IsPng(png)) return;
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << PngWithDrapeVersion(png);
+  WriteAtomically(path, [&png](std::ostream& out) { out << PngWithDrapeVersion(png); });
 }
 
 std::map<std::string, std::string> PngTexts(const std::string& png) {

@@ -15,7 +15,8 @@ namespace drape {
 std::string PngWithText(const std::string& png, const std::string& keyword,
                         const std::string& text);
 
-// `png` with `Software: drape <version>`; the file rewritten so (nothing if it cannot be read).
+// `png` with `Software: drape <version>`; the file rewritten so, atomically (nothing if it cannot
+// be read or is no PNG; std::runtime_error if it cannot be written).
 std::string PngWithDrapeVersion(const std::string& png);
 void AddDrapeVersionToPngFile(const std::filesystem::path& path);
 
