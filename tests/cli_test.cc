@@ -516,8 +516,15 @@ TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
   const double fine = summary["drape_coefficient"].as<double>();
   EXPECT_TRUE(summary["levels"][1]["started_flat"].as<bool>());
   const YAML::Node bar = summary["drape_coefficient_error"];
-  EXPECT_DOUBLE_EQ(bar["estimate"].as<double>(), std::abs(fine - coarse));
-  EXPECT_EQ(bar["basis"].as<std::string>(), "change from the 2.5 cm level");
+  // The levels' change, and the error bar the larger of it and the mesh rule's expected error.
+  const double change = std::abs(fine - coarse);
+  const double rule = summary["mesh_rule"]["expected_drape_coefficient_error"].as<double>();
+  EXPECT_DOUBLE_EQ(bar["levels_estimate"].as<double>(), change);
+  EXPECT_EQ(bar["levels_basis"].as<std::string>(), "change from the 2.5 cm level");
+  EXPECT_DOUBLE_EQ(bar["mesh_rule_estimate"].as<double>(), rule);
+  EXPECT_DOUBLE_EQ(bar["estimate"].as<double>(), std::max(change, rule));
+  EXPECT_EQ(bar["basis"].as<std::string>().find("mesh rule for a ") == 0, rule > change)
+      << bar["basis"].as<std::string>();
   EXPECT_EQ(bar["folds_by_level"].size(), 2u);
   char dc[16];
   std::snprintf(dc, sizeof dc, "%.3f", fine);
@@ -538,6 +545,11 @@ TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
   ASSERT_EQ(one.exit_status, 0) << one.err;
   EXPECT_EQ(Summary(plain)["drape_coefficient"].as<double>(), fine);
   EXPECT_FALSE(Summary(plain)["levels"]);
+  // One level: the mesh rule's error bar on the line.
+  char rule_bar[64];
+  std::snprintf(rule_bar, sizeof rule_bar, "drape coefficient %.3f ± %.2g (mesh rule for a ", fine,
+                rule);
+  EXPECT_NE(one.out.find(rule_bar), std::string::npos) << one.out;
   fs::remove_all(plain);
 }
 

@@ -38,6 +38,32 @@ TEST(MeshRule, AdviceForTheCottonFollowsFromItsBendingLength) {
   EXPECT_FALSE(fine_advice->coarse);
 }
 
+// The error bar takes the rule's K h / c where the levels' estimate is smaller (two levels
+// outside the asymptotic range), naming both; where the levels' is larger it stays theirs.
+TEST(MeshRule, WidensAnErrorBarSmallerThanItsExpectedError) {
+  DrapeErrorBar bar;
+  bar.value = 0.481;
+  bar.error = bar.levels_error = 0.018;
+  bar.basis = bar.levels_basis = "change from the 2 cm level";
+  MeshAdvice advice;
+  advice.bending_length = 0.0096;
+  advice.spacing = 0.01;
+  advice.expected_error = kDrapeErrorPerSpacing * advice.spacing / advice.bending_length;
+  WidenToMeshRule(advice, &bar);
+  EXPECT_DOUBLE_EQ(bar.error, advice.expected_error);
+  EXPECT_EQ(bar.basis, "mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018");
+  EXPECT_DOUBLE_EQ(bar.levels_error, 0.018);
+  ASSERT_TRUE(bar.mesh_rule_error);
+  EXPECT_DOUBLE_EQ(*bar.mesh_rule_error, advice.expected_error);
+
+  bar.error = bar.levels_error = 0.5;
+  bar.basis = bar.levels_basis;
+  WidenToMeshRule(advice, &bar);
+  EXPECT_DOUBLE_EQ(bar.error, 0.5);
+  EXPECT_EQ(bar.basis, "change from the 2 cm level");
+  EXPECT_DOUBLE_EQ(*bar.mesh_rule_error, advice.expected_error);
+}
+
 // No advice where the rule does not apply: a spring fabric, a scene without a support disc.
 TEST(MeshRule, NoAdviceOutsideADrapeTestOfAFiniteVolumeFabric) {
   const Scene springs = testing::LoadConfig("configs/examples/hanging_sheet.yaml", {});

@@ -7,7 +7,8 @@
 
 Scenes come from a file (`load`), YAML text (`loads`) or a dict (`from_dict`); `set=` takes the
 overrides `drape solve --set` takes, as a dict of key paths to values. Bad input raises
-`drape.InputError` with the CLI's message and its `file`, `line`, `column` and `key`. A solve
+`drape.InputError` with the CLI's message and its `file`, `line`, `column` and `key` (a dict's
+errors are located by `key` alone: `<dict>: mesh.sides: ...`, line and column 0). A solve
 releases the GIL; Ctrl-C stops it and raises KeyboardInterrupt whose `result` is the last iterate.
 docs/python.md walks through it.
 """
@@ -89,10 +90,22 @@ def loads(text, set=None, directory="."):
     return Scene(_drape.loads(text, "<string>", os.fspath(directory), _overrides(set)))
 
 
+def _located_by_key(error, label):
+    """An InputError in the JSON text made from a dict, located by its key path alone: the text's
+    lines and columns are not the caller's."""
+    where = f"{label}: {error.key}: " if error.key else f"{label}: "
+    return InputError(where + error.problem, label, 0, 0, error.key, error.problem)
+
+
 def from_dict(scene, set=None, directory="."):
     """The scene of a dict with the YAML file's structure (JSON is YAML)."""
-    return Scene(_drape.loads(json.dumps(scene, indent=1), "<dict>", os.fspath(directory),
-                              _overrides(set)))
+    try:
+        return Scene(_drape.loads(json.dumps(scene, indent=1), "<dict>", os.fspath(directory),
+                                  _overrides(set)))
+    except InputError as error:
+        if error.file != "<dict>":
+            raise
+        raise _located_by_key(error, "<dict>") from None
 
 
 class Result:
@@ -223,8 +236,7 @@ def _run_fit(path, set, method, folder, threads, label=None):
     except InputError as error:
         if label is None or error.file != path:
             raise
-        raise InputError(str(error).replace(path, label, 1), label, error.line, error.column,
-                         error.key, error.problem) from None
+        raise _located_by_key(error, label) from None
 
 
 def fit(fit_file, set=None, method=None, directory=None, threads=1, base="."):

@@ -91,6 +91,8 @@ def test_bad_input_is_located():
     with pytest.raises(drape.InputError) as error:
         drape.from_dict({"mesh": {"kind": "grid", "sides": 3}})
     assert error.value.file == "<dict>" and error.value.key == "mesh.sides"
+    assert (error.value.line, error.value.column) == (0, 0)  # the dict has no lines
+    assert str(error.value).startswith("<dict>: mesh.sides: unknown key 'sides'")
     with pytest.raises(drape.InputError, match="unknown solver"):
         drape.solve(config("examples/chain.yaml"), solver="newtn")
 
@@ -172,3 +174,4 @@ def test_a_fit_from_a_dict_is_the_files():
     with pytest.raises(drape.InputError) as error:
         drape.fit(spec, base=config("fit"))
     assert error.value.file == "<dict>" and error.value.key == "parameters[0].bounds"
+    assert str(error.value).startswith("<dict>: parameters[0].bounds: ") and error.value.line == 0

@@ -512,10 +512,14 @@ std::optional<DrapeErrorBar> DrapeErrorOf(const std::vector<LevelRecord>& levels
     char basis[64];
     std::snprintf(basis, sizeof basis, "Richardson, observed order %.2f", e.observed_order);
     bar.basis = basis;
-    return bar;
+    break;
   }
-  bar.error = std::abs(bar.value - *coarser.drape_coefficient);
-  bar.basis = "change from the " + LengthText(coarser.spacing, 3) + " level";
+  if (bar.basis.empty()) {
+    bar.error = std::abs(bar.value - *coarser.drape_coefficient);
+    bar.basis = "change from the " + LengthText(coarser.spacing, 3) + " level";
+  }
+  bar.levels_error = bar.error;
+  bar.levels_basis = bar.basis;
   return bar;
 }
 

@@ -59,12 +59,20 @@ struct Extrapolation {
 // order, else the change from the next coarser level, |DC(h) − DC(2h)|, which is the error of a
 // quantity that converges at first order, as the drape coefficient does (docs/drape-tester.md:
 // the hinge where the fabric leaves the disc's rim is placed to within a spacing).
+//
+// Levels this coarse can be outside the asymptotic range (the 2 cm level of a limp fabric has 4
+// folds where 1 cm has 10, and their change, 0.018, is a seventeenth of the 1 cm error):
+// WidenToMeshRule (src/analysis/mesh_rule.h) then takes the refinement study's rule instead, and
+// `levels_error` keeps what the levels said.
 struct DrapeErrorBar {
   double value = 0.0;         // the finest level's drape coefficient
-  double error = 0.0;         // the estimate of |DC(h) − DC(0)|
+  double error = 0.0;         // the estimate of |DC(h) − DC(0)|: the larger of the two below
   std::string basis;          // "Richardson, observed order 1.27" or "change from the 2 cm level"
-  std::vector<int> folds;     // per level, coarsest first (0 where a level has none)
-  bool folds_differ = false;  // the two finest levels' fold counts differ
+  double levels_error = 0.0;  // the levels' own estimate
+  std::string levels_basis;   // its basis
+  std::optional<double> mesh_rule_error;  // the rule's K h / c, where it applies
+  std::vector<int> folds;                 // per level, coarsest first (0 where a level has none)
+  bool folds_differ = false;              // the two finest levels' fold counts differ
 };
 
 struct LevelsReport {

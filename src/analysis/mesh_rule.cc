@@ -42,4 +42,14 @@ std::string CoarseMeshWarning(const MeshAdvice& advice) {
          LengthText(advice.spacing_needed, 2) + " or finer keeps it within " + limit;
 }
 
+void WidenToMeshRule(const MeshAdvice& advice, DrapeErrorBar* bar) {
+  bar->mesh_rule_error = advice.expected_error;
+  if (!(advice.expected_error > bar->levels_error)) return;
+  char levels[24];
+  std::snprintf(levels, sizeof levels, " %.2g", bar->levels_error);
+  bar->error = advice.expected_error;
+  bar->basis = "mesh rule for a " + LengthText(advice.bending_length, 2) + " bending length; " +
+               bar->levels_basis + levels;
+}
+
 }  // namespace drape

@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "src/analysis/levels.h"
 #include "src/model/model.h"
 #include "src/scene/scene.h"
 
@@ -39,6 +40,12 @@ std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model);
 // "mesh.spacing 1 cm is coarse for this fabric (bending length 1.9 cm in its limper direction):
 // expect its drape coefficient to be off by about 0.16 ...".
 std::string CoarseMeshWarning(const MeshAdvice& advice);
+
+// The error bar made the larger of the levels' estimate and the rule's expected error, K h / c
+// (`mesh_rule_error`): two levels outside the asymptotic range can change by a fraction of the
+// finest level's error. Where the rule is larger, `basis` names it and the levels' figure:
+// "mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018".
+void WidenToMeshRule(const MeshAdvice& advice, DrapeErrorBar* bar);
 
 }  // namespace drape
 

@@ -170,12 +170,17 @@ void AddLevelsMembers(const LevelsReport& report,
     for (size_t k = 0; k < bar->folds.size(); ++k) {
       folds += (k ? ", " : "") + std::to_string(bar->folds[k]);
     }
-    members->emplace_back("drape_coefficient_error",
-                          JsonObject({{"estimate", JsonNumber(bar->error)},
-                                      {"basis", JsonString(bar->basis)},
-                                      {"folds_by_level", folds + "]"},
-                                      {"folds_differ", JsonBool(bar->folds_differ)}},
-                                     1));
+    std::vector<std::pair<std::string, std::string>> fields = {
+        {"estimate", JsonNumber(bar->error)},
+        {"basis", JsonString(bar->basis)},
+        {"levels_estimate", JsonNumber(bar->levels_error)},
+        {"levels_basis", JsonString(bar->levels_basis)}};
+    if (bar->mesh_rule_error) {
+      fields.emplace_back("mesh_rule_estimate", JsonNumber(*bar->mesh_rule_error));
+    }
+    fields.emplace_back("folds_by_level", folds + "]");
+    fields.emplace_back("folds_differ", JsonBool(bar->folds_differ));
+    members->emplace_back("drape_coefficient_error", JsonObject(fields, 1));
   }
 }
 
@@ -240,7 +245,9 @@ std::string UnitsObject() {
       {"levels[].drape_coefficient", "1"},
       {"extrapolation.energy", "J"},
       {"extrapolation.drape_coefficient", "1"},
-      {"drape_coefficient_error.estimate", "1"}};
+      {"drape_coefficient_error.estimate", "1"},
+      {"drape_coefficient_error.levels_estimate", "1"},
+      {"drape_coefficient_error.mesh_rule_estimate", "1"}};
   std::vector<std::pair<std::string, std::string>> members;
   members.reserve(units.size());
   for (const auto& [path, unit] : units) members.emplace_back(path, JsonString(unit));

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "src/analysis/drape_analysis.h"
+#include "src/analysis/mesh_rule.h"
 
 namespace drape {
 
@@ -57,6 +58,11 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     if (!finest) previous = std::move(coarse);
   }
   AnalyseLevels(report);
+  if (report->drape_error) {
+    if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
+      WidenToMeshRule(*advice, &*report->drape_error);
+    }
+  }
   return result;
 }
 

@@ -15,13 +15,15 @@
 namespace drape {
 
 // How each level after the coarsest starts: from the coarser level's answer interpolated (grid
-// sequencing: the coarse level chooses the folds, which the finer keep), or from the flat start,
+// sequencing; the finer level need not keep the coarse level's folds: docs/benchmarks.md, "Starts
+// near the answer"), or from the flat start,
 // like a solve on that mesh alone (the finest level's answer is the plain solve's, bit for bit;
 // the coarser levels only measure how the answer changes with the spacing).
 enum class LevelStart { kFromCoarser, kFlat };
 
 // Solves scene.solver.levels levels; the finest is `model` (built from `scene`), whose RunResult
-// is returned. `report` gets the per-level figures, the extrapolations and the error bar.
+// is returned. `report` gets the per-level figures, the extrapolations and the error bar, widened
+// to the mesh rule's expected error where that is larger (WidenToMeshRule).
 RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
                     const std::function<bool(const IterationRecord&)>& on_iteration,
                     LevelsReport* report, LevelStart start = LevelStart::kFromCoarser);
