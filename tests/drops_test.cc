@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "src/model/model.h"
 #include "src/output/json.h"
+#include "src/output/writers.h"
 #include "src/scene/scene_loader.h"
 #include "tests/scratch_folder.h"
 
@@ -196,6 +198,15 @@ TEST_F(Drops, OneThreadAndTwoWriteTheSameDropsAndTheStatisticsAreThoseOfDropsCsv
     const std::string json = ReadText(fs::path(options.directory) / "summary.json");
     EXPECT_NE(json.find("\"drape_coefficient_mean\": " + FormatNumber(mean)), std::string::npos)
         << json;
+    // The spread over drops and, beside it, each drop's discretisation error (the mesh rule).
+    ASSERT_TRUE(summary.mesh_advice);
+    const Scene first = DropScene(scene_, 1);
+    const std::optional<MeshAdvice> advice = AdviseMesh(first, BuildModel(first));
+    ASSERT_TRUE(advice);
+    EXPECT_EQ(summary.mesh_advice->expected_error, advice->expected_error);
+    EXPECT_NE(json.find("\"mesh_rule\": " + MeshRuleJson(*advice)), std::string::npos) << json;
+    const std::string text = DropsLine(summary.statistics, summary.mesh_advice);
+    EXPECT_NE(text.find(", discretisation error about "), std::string::npos) << text;
   }
   EXPECT_EQ(csv[1], csv[2]);
 }

@@ -229,7 +229,8 @@ int SolveDrops(const Arguments& arguments, const Scene& scene, const std::string
   const DropsSummary summary = RunDrops(scene, options, err);
   if (!summary.coordinator) return kExitConverged;
   const DropStatistics& statistics = summary.statistics;
-  out << DropsLine(statistics) << "; results in " << directory << " (report.html)" << std::endl;
+  out << DropsLine(statistics, summary.mesh_advice) << "; results in " << directory
+      << " (report.html)" << std::endl;
   if (statistics.counted > 0) {
     if (const auto advice =
             SpecimenSizeAdvice(scene.drape_test->specimen_diameter, statistics.mean)) {

@@ -184,6 +184,19 @@ void AddLevelsMembers(const LevelsReport& report,
   }
 }
 
+}  // namespace
+
+std::string MeshRuleJson(const MeshAdvice& advice) {
+  return JsonObject({{"spacing_m", JsonNumber(advice.spacing)},
+                     {"bending_length_m", JsonNumber(advice.bending_length)},
+                     {"expected_drape_coefficient_error", JsonNumber(advice.expected_error)},
+                     {"spacing_needed_m", JsonNumber(advice.spacing_needed)},
+                     {"coarse", JsonBool(advice.coarse)}},
+                    1);
+}
+
+namespace {
+
 // The balance of the whole fabric: reactions + contact + constraint = −(weight + loads).
 std::string BalanceObject(const Certificate& certificate) {
   return JsonObject({{"reactions", JsonVector(certificate.reaction_sum)},
@@ -296,14 +309,7 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   }
   if (drape) AddDrapeMembers(*drape, &members);
   if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
-    members.emplace_back(
-        "mesh_rule",
-        JsonObject({{"spacing_m", JsonNumber(advice->spacing)},
-                    {"bending_length_m", JsonNumber(advice->bending_length)},
-                    {"expected_drape_coefficient_error", JsonNumber(advice->expected_error)},
-                    {"spacing_needed_m", JsonNumber(advice->spacing_needed)},
-                    {"coarse", JsonBool(advice->coarse)}},
-                   1));
+    members.emplace_back("mesh_rule", MeshRuleJson(*advice));
   }
   AddContactMembers(scene, result, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));

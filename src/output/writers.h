@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "src/analysis/mesh_rule.h"
 #include "src/model/model.h"
 #include "src/output/provenance.h"
 #include "src/run/solve_report.h"
@@ -37,6 +38,9 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material);
 // nodes.csv's columns, in order (units in the names, booleans as 0/1). `drape fit` reads a
 // nodes.csv as measured positions by these names (src/fit/fit_file.cc).
 const std::vector<std::string>& NodesCsvColumns();
+
+// summary.json's `mesh_rule` object (also in a drops run's summary.json).
+std::string MeshRuleJson(const MeshAdvice& advice);
 
 // summary.json's text, as WriteOutputs writes it (the Python module's Result.summary).
 std::string SummaryJsonText(const Scene& scene, const Model& model, const SolveReport& report,

@@ -169,8 +169,9 @@ std::string FoldsText(const std::vector<int>& counts) {
   return text;
 }
 
-void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const DropStatistics& s,
+void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const DropsSummary& summary,
                        std::ostream& out) {
+  const DropStatistics& s = summary.statistics;
   const DrapeTestSpec& test = *scene.drape_test;
   std::string histogram, modal;
   for (const auto& [folds, count] : s.folds_histogram) {
@@ -194,6 +195,7 @@ void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const Dr
       << (any ? JsonNumber(s.modal_mean) : "null");
   const auto advice = any ? SpecimenSizeAdvice(test.specimen_diameter, s.mean) : std::nullopt;
   out << ",\n  \"specimen_size_advice\": " << (advice ? JsonString(*advice) : "null");
+  if (summary.mesh_advice) out << ",\n  \"mesh_rule\": " << MeshRuleJson(*summary.mesh_advice);
   for (const auto& [key, value] :
        ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
     out << ",\n  " << JsonString(key) << ": " << value;
@@ -335,21 +337,22 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   summary.drops = records;
   summary.outlines = outlines;
   summary.statistics = ComputeDropStatistics(summary.drops);
+  const Scene first = DropScene(scene, 1);
+  summary.mesh_advice = AdviseMesh(first, BuildModel(first));
   const fs::path directory(options.directory);
   WriteAtomically(directory / "drops.csv", [&](std::ostream& out) {
     out << DropsCsvHeader() << '\n';
     for (const std::string& row : rows) out << row << '\n';
   });
-  WriteAtomically(directory / "summary.json", [&](std::ostream& out) {
-    WriteDropsSummary(scene, options, summary.statistics, out);
-  });
+  WriteAtomically(directory / "summary.json",
+                  [&](std::ostream& out) { WriteDropsSummary(scene, options, summary, out); });
   WriteAtomically(directory / "report.html", [&](std::ostream& out) {
     WriteDropsReport(scene, summary, Provenance{options.command_line, options.overrides}, out);
   });
   return summary;
 }
 
-std::string DropsLine(const DropStatistics& s) {
+std::string DropsLine(const DropStatistics& s, const std::optional<MeshAdvice>& mesh_advice) {
   std::string text = std::to_string(s.drops) + (s.drops == 1 ? " drop" : " drops");
   if (s.counted < s.drops) {
     text += " (" + std::to_string(s.counted) + " at a stable minimum, counted)";
@@ -357,9 +360,16 @@ std::string DropsLine(const DropStatistics& s) {
   if (s.counted == 0) return text + ": none counted, no drape coefficient";
   char figures[160];
   std::snprintf(figures, sizeof figures,
-                ": drape coefficient %.3f ± %.3f (mean ± standard deviation); folds", s.mean,
+                ": drape coefficient %.3f ± %.3f (mean ± standard deviation)", s.mean,
                 s.standard_deviation);
   text += figures;
+  if (mesh_advice) {
+    std::snprintf(figures, sizeof figures,
+                  ", discretisation error about %.2g (mesh rule for a %s bending length)",
+                  mesh_advice->expected_error, LengthText(mesh_advice->bending_length, 2).c_str());
+    text += figures;
+  }
+  text += "; folds";
   std::string histogram;
   for (const auto& [folds, count] : s.folds_histogram) {
     histogram +=

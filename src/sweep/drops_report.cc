@@ -314,8 +314,8 @@ void WriteDropsReport(const Scene& scene, const DropsSummary& summary, const Pro
        << "body{font-family:sans-serif;max-width:80em;margin:1em auto}"
        << "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 6px}"
        << "figure{display:inline-block;margin:0.5em}</style></head><body>\n"
-       << "<h1>Drape test: " << HtmlText(scene.name) << "</h1>\n<p><b>" << HtmlText(DropsLine(s))
-       << "</b></p>\n";
+       << "<h1>Drape test: " << HtmlText(scene.name) << "</h1>\n<p><b>"
+       << HtmlText(DropsLine(s, summary.mesh_advice)) << "</b></p>\n";
   if (s.counted > 0) {
     if (const auto advice = SpecimenSizeAdvice(scene.drape_test->specimen_diameter, s.mean)) {
       html << "<p>Specimen size: " << HtmlText(*advice) << ".</p>\n";
