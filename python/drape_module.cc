@@ -1,8 +1,9 @@
 // drape's Python module, _drape (the package python/drape wraps it): the scene loader, the model
 // builder and SolveAndReport that `drape solve` runs, with NumPy arrays for the results, and the
-// fit and the sweep that `drape fit` and `drape sweep` run, writing their files. The
-// package's __init__.py turns `set=` dicts into --set overrides, raises KeyboardInterrupt after an
-// interrupted solve and gives the classes their Python face; this file holds only what needs C++.
+// repeated drops, the fit and the sweep that `drape solve --drops`, `drape fit` and `drape sweep`
+// run, writing their files. The package's __init__.py turns `set=` dicts into --set overrides,
+// raises KeyboardInterrupt after an interrupted solve and gives the classes their Python face;
+// this file holds only what needs C++.
 #include <Python.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -33,6 +34,7 @@
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solver.h"
+#include "src/sweep/drops.h"
 #include "src/sweep/sweep.h"
 #include "src/sweep/sweep_file.h"
 
@@ -254,6 +256,38 @@ py::dict Sweep(const std::string& path, const std::string& out, int threads, boo
   return outcome;
 }
 
+// `drape solve --drops N` without its command line: the loaded drape test's drops (N ≥ 1; 0: the
+// scene's drape_test.drops) solved into `directory` on `threads` threads (0: the cores). Returns
+// the stdout line and whether Ctrl-C stopped it.
+py::dict Drops(const PyScene& loaded, int drops, const std::string& directory, int threads) {
+  if (!loaded.scene.drape_test) {
+    throw InputError(
+        "drops: needs a drape test: give the scene a drape_test block (docs/reference.md, "
+        "\"`drape_test`\")");
+  }
+  if (drops < 0) {
+    throw InputError("drops: expected a whole number ≥ 1, got " + std::to_string(drops));
+  }
+  DropsOptions options;
+  options.drops = drops > 0 ? drops : loaded.scene.drape_test->drops;
+  options.threads = threads;
+  options.directory = directory;
+  options.command_line = "python: drape.drops";
+  options.overrides = loaded.overrides;
+  DropsSummary summary;
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    const InterruptScope scope;
+    summary = RunDrops(loaded.scene, options, std::cerr);
+    interrupted = InterruptRequested();
+  }
+  py::dict outcome;
+  outcome["line"] = DropsLine(summary.statistics, summary.mesh_advice);
+  outcome["interrupted"] = interrupted;
+  return outcome;
+}
+
 // drape's InputError as the package's drape.InputError(message, file, line, column, key).
 // By value: pybind11's ExceptionTranslator type.
 void TranslateInputError(
@@ -302,6 +336,8 @@ PYBIND11_MODULE(_drape, module) {
   module.def("solve", &Solve, py::arg("scene"), py::arg("solver"), py::arg("start"));
   module.def("fit", &Fit, py::arg("path"), py::arg("overrides"), py::arg("method"),
              py::arg("directory"), py::arg("threads"));
+  module.def("drops", &Drops, py::arg("scene"), py::arg("drops"), py::arg("directory"),
+             py::arg("threads"));
   module.def("sweep", &Sweep, py::arg("path"), py::arg("out"), py::arg("threads"),
              py::arg("plots"));
   module.def("version", &DrapeVersion);

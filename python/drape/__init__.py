@@ -21,8 +21,8 @@ import tempfile
 
 from . import _drape
 
-__all__ = ["InputError", "Scene", "Result", "FitResult", "load", "loads", "from_dict", "solve",
-           "fit", "sweep", "__version__"]
+__all__ = ["InputError", "Scene", "Result", "DropsResult", "FitResult", "load", "loads",
+           "from_dict", "solve", "drops", "fit", "sweep", "__version__"]
 
 __version__ = _drape.version()
 
@@ -178,14 +178,69 @@ def _number(text):
 
 def _table(path):
     """A CSV file of drape's as a pandas DataFrame where pandas is installed, else a list of dicts
-    (numbers as int or float)."""
+    (numbers as int or float). Both read drape's shortest exact numbers back to the same doubles
+    (pandas' default parser can miss the last bit: float_precision="round_trip")."""
     try:
         import pandas
-        return pandas.read_csv(path)
+        return pandas.read_csv(path, float_precision="round_trip")
     except ImportError:
         with open(path, newline="") as file:
             return [{key: _number(value) for key, value in row.items()}
                     for row in csv.DictReader(file)]
+
+
+class DropsResult:
+    """What repeated drops write, as data: `summary` is summary.json's dict, `table` drops.csv's
+    rows (one per drop: its offset, waviness, drape coefficient, folds, energy, counted, state).
+    `mean` and `standard_deviation` are over the counted drops (None if none counted);
+    `mesh_rule` the discretisation error each drop carries (summary.json's, or None); `line` what
+    `drape solve --drops` prints."""
+
+    def __init__(self, directory, line):
+        with open(os.path.join(directory, "summary.json")) as file:
+            self.summary = json.load(file)
+        self.table = _table(os.path.join(directory, "drops.csv"))
+        self.line = line
+        self.drops = self.summary["drops"]
+        self.counted = self.summary["drops_counted"]
+        self.mean = self.summary["drape_coefficient_mean"]
+        self.standard_deviation = self.summary["drape_coefficient_standard_deviation"]
+        self.folds_histogram = {int(folds): count
+                                for folds, count in self.summary["folds_histogram"].items()}
+        self.most_frequent_folds = self.summary["most_frequent_folds"]
+        self.mesh_rule = self.summary.get("mesh_rule")
+
+    def __repr__(self):
+        return f"drape.DropsResult(drops={self.drops}, mean={self.mean}, " \
+               f"standard_deviation={self.standard_deviation})"
+
+
+def drops(scene, drops=None, set=None, directory=None, threads=0):
+    """Repeated drops of a drape test, as `drape solve --drops N` runs them; returns a DropsResult.
+
+    scene: a Scene, or a scene file's path (with `set` overrides); it needs a drape_test block.
+    drops: how many (default: the scene's drape_test.drops); threads: 0 for the machine's cores;
+    directory: where the files go (drops.csv, summary.json, report.html, drops/NN/), else a
+    temporary folder, removed after reading.
+    """
+    if not isinstance(scene, Scene):
+        scene = load(scene, set=set)
+    elif set is not None:
+        raise TypeError("set: give the overrides to drape.load (the scene is already loaded)")
+    if drops is not None and (isinstance(drops, bool) or not isinstance(drops, int) or drops < 1):
+        raise InputError(f"drops: expected a whole number ≥ 1, got {drops!r}", key="drops")
+    folder = os.fspath(directory) if directory is not None else tempfile.mkdtemp(prefix="drape_drops_")
+    try:
+        outcome = _drape.drops(scene._handle, drops or 0, folder, threads)
+        result = DropsResult(folder, outcome["line"])
+    finally:
+        if directory is None:
+            shutil.rmtree(folder, ignore_errors=True)
+    if outcome["interrupted"]:
+        interrupt = KeyboardInterrupt("drape.drops interrupted; the finished drops are `result`")
+        interrupt.result = result
+        raise interrupt
+    return result
 
 
 class FitResult:

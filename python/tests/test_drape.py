@@ -77,6 +77,30 @@ def test_a_warm_start_begins_at_the_answer():
         drape.solve(scene, start=np.zeros((3, 3)))
 
 
+def test_drops_are_the_command_lines(tmp_path):
+    scene = config("fv/drape_tester_polyester_24.yaml")
+    spacing = {"mesh.spacing": 0.02}
+    lab = drape.drops(scene, drops=3, set=spacing, threads=1)
+    assert (lab.drops, lab.counted) == (3, 3)
+    values = list(lab.table["drape_coefficient"])
+    assert lab.mean == pytest.approx(np.mean(values), rel=1e-12)
+    assert lab.standard_deviation == pytest.approx(np.std(values, ddof=1), rel=1e-12)
+    assert sum(lab.folds_histogram.values()) == 3
+    assert lab.mesh_rule["coarse"] and lab.line.startswith("3 drops: drape coefficient ")
+    out = tmp_path / "out"
+    command = subprocess.run([BINARY, "solve", scene, "--drops", "3", "--threads", "1",
+                              "--set", "mesh.spacing=0.02", "--out", str(out)],
+                             capture_output=True, text=True, check=True)
+    assert command.stdout.startswith(lab.line)
+    with open(out / "drops.csv") as file:
+        rows = list(csv.DictReader(file))
+    assert [float(row["drape_coefficient"]) for row in rows] == values
+    with pytest.raises(drape.InputError, match="needs a drape test"):
+        drape.drops(config("examples/hanging_sheet.yaml"), drops=2)
+    with pytest.raises(drape.InputError, match="whole number"):
+        drape.drops(scene, drops=0)
+
+
 def test_bad_input_is_located():
     with pytest.raises(drape.InputError) as error:
         drape.load(config("examples/hanging_sheet.yaml"), set={"mesh.nodez": [3, 3]})
