@@ -199,10 +199,19 @@ class InterruptScope {
   struct sigaction terminate_ {};
 };
 
+// A thread count as the command line's --threads takes it: a whole number ≥ 0 (0: the cores).
+void RequireThreadCount(int threads) {
+  if (threads < 0) {
+    throw InputError("threads: expected a whole number >= 0 (0: the machine's cores), got " +
+                     std::to_string(threads));
+  }
+}
+
 // `drape fit` without its command line: the fit file (with --set overrides and --method) solved,
 // its files written into `directory`. Returns whether it converged and whether it was interrupted.
 py::dict Fit(const std::string& path, const std::vector<std::string>& overrides,
              const std::optional<std::string>& method, const std::string& directory, int threads) {
+  RequireThreadCount(threads);
   FitSpec spec = LoadFitFile(path, overrides);
   if (method) {
     if (!FindFitMethod(*method)) {
@@ -233,6 +242,7 @@ py::dict Fit(const std::string& path, const std::vector<std::string>& overrides,
 // `drape sweep` without its command line: the sweep file's tasks solved into `out` (empty: the
 // sweep file's own output folder). Returns the sweep's counts and folder.
 py::dict Sweep(const std::string& path, const std::string& out, int threads, bool plots) {
+  RequireThreadCount(threads);
   const SweepSpec spec = LoadSweepFile(path);
   SweepOptions options;
   options.out = out;
@@ -266,8 +276,9 @@ py::dict Drops(const PyScene& loaded, int drops, const std::string& directory, i
         "\"`drape_test`\")");
   }
   if (drops < 0) {
-    throw InputError("drops: expected a whole number ≥ 1, got " + std::to_string(drops));
+    throw InputError("drops: expected a whole number >= 1, got " + std::to_string(drops));
   }
+  RequireThreadCount(threads);
   DropsOptions options;
   options.drops = drops > 0 ? drops : loaded.scene.drape_test->drops;
   options.threads = threads;

@@ -228,7 +228,7 @@ def drops(scene, drops=None, set=None, directory=None, threads=0):
     elif set is not None:
         raise TypeError("set: give the overrides to drape.load (the scene is already loaded)")
     if drops is not None and (isinstance(drops, bool) or not isinstance(drops, int) or drops < 1):
-        raise InputError(f"drops: expected a whole number ≥ 1, got {drops!r}", key="drops")
+        raise InputError(f"drops: expected a whole number >= 1, got {drops!r}", key="drops")
     folder = os.fspath(directory) if directory is not None else tempfile.mkdtemp(prefix="drape_drops_")
     try:
         outcome = _drape.drops(scene._handle, drops or 0, folder, threads)

@@ -99,6 +99,8 @@ def test_drops_are_the_command_lines(tmp_path):
         drape.drops(config("examples/hanging_sheet.yaml"), drops=2)
     with pytest.raises(drape.InputError, match="whole number"):
         drape.drops(scene, drops=0)
+    with pytest.raises(drape.InputError, match="threads: expected a whole number >= 0"):
+        drape.drops(scene, drops=2, threads=-1)
 
 
 def test_bad_input_is_located():
