@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "src/analysis/mesh_rule.h"
+
 namespace drape {
 
 SolveReport ReportOf(const Scene& scene, const Model& model, RunResult result) {
@@ -51,6 +53,16 @@ double ReportedDrapeCoefficient(const SolveReport& report) {
   if (!report.drape) return std::nan("");
   const DrapeCoefficient& dc = report.drape->coefficient;
   return report.drape->disc_radius > 0.0 ? dc.cusick : dc.ratio;
+}
+
+std::optional<double> ReportedDrapeCoefficientError(const Scene& scene, const Model& model,
+                                                    const SolveReport& report) {
+  if (!report.drape || !(report.drape->disc_radius > 0.0)) return std::nullopt;
+  if (report.levels && report.levels->drape_error) return report.levels->drape_error->error;
+  if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
+    return advice->expected_error;
+  }
+  return std::nullopt;
 }
 
 }  // namespace drape

@@ -46,6 +46,12 @@ SolveReport ReportOf(const Scene& scene, const Model& model, RunResult result);
 // A_shadow / A_flat; NaN for a scene without one.
 double ReportedDrapeCoefficient(const SolveReport& report);
 
+// The discretisation error of a drape test's drape coefficient, as the stdout line gives it: the
+// levels' error bar (widened to the mesh rule's, src/analysis/mesh_rule.h) where the solve has
+// one, else the mesh rule's expected error; none for a scene without a support disc or rule.
+std::optional<double> ReportedDrapeCoefficientError(const Scene& scene, const Model& model,
+                                                    const SolveReport& report);
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_RUN_SOLVE_REPORT_H_

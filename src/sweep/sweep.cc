@@ -37,12 +37,19 @@ constexpr const char* kVariantFile = "variant.txt";
 constexpr const char* kPositionsFile = "final_positions.txt";  // warm-start sweeps only
 
 // The columns after the varied keys (and `repeat`).
-const std::vector<std::string> kResultColumns = {"converged",         "stop_reason",
-                                                 "iterations",        "time_s",
-                                                 "energy_J",          "relative_residual",
-                                                 "max_node_force_N",  "stable",
-                                                 "drape_coefficient", "folds",
-                                                 "certificate",       "warm_start_from",
+const std::vector<std::string> kResultColumns = {"converged",
+                                                 "stop_reason",
+                                                 "iterations",
+                                                 "time_s",
+                                                 "energy_J",
+                                                 "relative_residual",
+                                                 "max_node_force_N",
+                                                 "stable",
+                                                 "drape_coefficient",
+                                                 "drape_coefficient_error",
+                                                 "folds",
+                                                 "certificate",
+                                                 "warm_start_from",
                                                  "drape_version"};
 
 std::string CsvLine(const std::vector<std::string>& cells) {
@@ -68,9 +75,10 @@ std::vector<std::string> TaskCells(const SweepSpec& spec, int task) {
   return cells;
 }
 
-std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveReport& report,
-                                   int warm_from) {
+std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const Scene& scene,
+                                   const Model& model, const SolveReport& report, int warm_from) {
   const RunResult& result = report.result;
+  const std::optional<double> dc_error = ReportedDrapeCoefficientError(scene, model, report);
   std::vector<std::string> cells = TaskCells(spec, task);
   const Stability& stability = result.stability;
   const bool stable_known = stability.computed && result.certificate.unsound.empty();
@@ -81,6 +89,7 @@ std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveR
        CsvNumber(result.certificate.energy), CsvNumber(result.certificate.relative_residual),
        CsvNumber(result.certificate.max_node_force), stable_known ? JsonBool(stability.stable) : "",
        report.drape ? CsvNumber(ReportedDrapeCoefficient(report)) : "",
+       dc_error ? CsvNumber(*dc_error) : "",
        report.drape ? std::to_string(report.drape->folds.count) : "", StateText(result),
        warm_from >= 0 ? std::to_string(warm_from) : "", DrapeVersion()});
   return cells;
@@ -89,7 +98,7 @@ std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const SolveR
 std::vector<std::string> FailedRow(const SweepSpec& spec, int task, const std::string& why) {
   std::vector<std::string> cells = TaskCells(spec, task);
   cells.insert(cells.end(), {JsonBool(false), "failed: " + why, "", "", "", "", "", "", "", "", "",
-                             "", DrapeVersion()});
+                             "", "", DrapeVersion()});
   return cells;
 }
 
@@ -191,7 +200,7 @@ TaskOutcome SolveTask(const Context& context, int task, const std::vector<double
       Provenance{context.command_line + " (task " + std::to_string(task) + ")", overrides});
   if (spec.warm_axis >= 0) WritePositions(fs::path(folder) / kPositionsFile, model.positions);
   outcome.kind = "solved";
-  outcome.row = CsvLine(SolvedRow(spec, task, report, warmed ? warm_from : -1));
+  outcome.row = CsvLine(SolvedRow(spec, task, scene, model, report, warmed ? warm_from : -1));
   outcome.positions = model.positions;
   SaveRow(context, task, outcome.row);
   return outcome;
