@@ -100,6 +100,32 @@ measurements:
   EXPECT_FALSE(spec.parameters[0].log);
 }
 
+// A drape coefficient measured on a drape tester whose mesh rule expects a discretisation error
+// above the measurement's sigma: a warning located at the measurement, with both figures; none
+// where sigma covers it, nor on a scene without a support disc (the rule's domain).
+TEST(FitFileTest, WarnsOfAMeshWhoseErrorExceedsTheMeasurementsSigma) {
+  const std::string scene = SourcePath("configs/fv/drape_tester_cotton_30.yaml");
+  const auto fit_text = [&](const std::string& sigma) {
+    return "scene: " + scene +
+           "\nparameters:\n  - {key: material.finite_volume.kes.B_warp, initial: 0.1, "
+           "bounds: [0.02, 0.5]}\nmeasurements:\n  - drape_coefficient: {value: 0.7, sigma: " +
+           sigma + "}\n";
+  };
+  const FitSpec coarse = LoadFitFile(WriteFitFolder("mesh_warning", fit_text("0.02")));
+  ASSERT_EQ(coarse.warnings.size(), 1u);
+  const std::string& warning = coarse.warnings[0];
+  EXPECT_NE(warning.find("fit.yaml:5:"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("measurements[0].drape_coefficient: the drape coefficient on the 1 cm "
+                         "mesh of "),
+            std::string::npos)
+      << warning;
+  EXPECT_NE(warning.find("about 0.16 (mesh rule for a 1.9 cm bending length"), std::string::npos)
+      << warning;
+  EXPECT_NE(warning.find("times the measurement's sigma 0.02"), std::string::npos) << warning;
+  EXPECT_TRUE(LoadFitFile(WriteFitFolder("mesh_covered", fit_text("0.2"))).warnings.empty());
+  EXPECT_TRUE(LoadFitFile(WriteFitFolder("mesh_no_disc", kFullFit)).warnings.empty());
+}
+
 // Runs LoadFitFile and returns the error message ("" if none).
 std::string ErrorOf(const std::string& name, const std::string& text) {
   const std::string path = WriteFitFolder(name, text);

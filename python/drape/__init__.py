@@ -256,6 +256,7 @@ class FitResult:
         self.identifiability = self.table["identifiability"]
         self.measurements = self.table["measurements"]
         self.termination = self.table["termination"]
+        self.warnings = self.table["warnings"]  # e.g. a mesh too coarse for the measurement
 
     def __repr__(self):
         return f"drape.FitResult(converged={self.converged}, parameters={self.parameters})"

@@ -366,6 +366,10 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
   if (arguments.out) spec.output_directory = *arguments.out;
   // Under mpirun/srun every rank runs the fit in step; only the coordinator reports and writes.
   const bool coordinator = Processes().IsCoordinator();
+  if (coordinator) {
+    for (const std::string& warning : spec.warnings)
+      err << "drape fit: warning: " << warning << "\n";
+  }
   FitProblem problem(spec, arguments.threads);
   FitOptions options;
   if (coordinator) options.on_evaluation = FitProgressPrinter(spec, err);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "src/model/model.h"
 #include "src/scene/scene.h"
 
 namespace drape {
@@ -81,7 +82,16 @@ struct FitSpec {
   std::vector<std::string> scene_overrides;
   Location method_where;
   Location root;
+  // What the checks found worth saying but not refusing (FitMeshWarning): `drape fit` prints
+  // them on stderr and fit.json lists them.
+  std::vector<std::string> warnings;
 };
+
+// The warning for a drape coefficient measured on `scene` (a specimen's, at the initial
+// parameters) whose mesh rule (src/analysis/mesh_rule.h) expects a discretisation error above
+// the measurement's sigma: the fitted parameters would absorb it as a bias. Empty otherwise.
+std::string FitMeshWarning(const Scene& scene, const Model& model,
+                           const FitMeasurement& measurement);
 
 // Loads and checks `path` and the files it names (scenes are loaded once with every parameter at
 // its initial value, which checks the keys). `scene_overrides` become FitSpec::scene_overrides.

@@ -143,7 +143,10 @@ void WriteJson(const FitProblem& problem, const FitResult& result, const Provena
     }
     out << ", \"unit\": " << JsonString(UnitOf(measurement)) << "}";
   }
-  out << "\n  ]";
+  out << "\n  ],\n  \"warnings\": [";
+  const auto& warnings = problem.spec().warnings;
+  for (size_t k = 0; k < warnings.size(); ++k) out << (k ? ", " : "") << JsonString(warnings[k]);
+  out << "]";
   for (const auto& [key, value] : ProvenanceMembers(provenance)) {
     out << ",\n  " << JsonString(key) << ": " << value;
   }
