@@ -17,7 +17,6 @@ if(NOT Python3_FOUND OR NOT pybind11_FOUND)
   return()
 endif()
 set(DRAPE_PYTHON_FOUND ON)
-set_target_properties(drape_core PROPERTIES POSITION_INDEPENDENT_CODE ON)
 set(DRAPE_PYTHON_PACKAGE ${PROJECT_BINARY_DIR}/python/drape)
 # NO_EXTRAS: no link-time optimisation (a serial LTO link of the module over drape_core costs CI
 # time and gains nothing measurable: the solver runs in drape_core, compiled without LTO).
