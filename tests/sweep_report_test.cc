@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "src/output/version.h"
 #include "tests/sweep_test_support.h"
@@ -81,6 +82,25 @@ grid:
   EXPECT_NE(html.find("alt=\"drape coefficient over the grid\""), std::string::npos);
   EXPECT_NE(html.find("drape " + DrapeVersion()), std::string::npos);  // the provenance line
   EXPECT_NE(html.find("<td>0.24</td>"), std::string::npos);            // the table of rows
+  // The drape coefficient's plots carry its error bars: the data's last column (after the two
+  // keys and four responses) is sweep.csv's drape_coefficient_error.
+  EXPECT_NE(html.find("drape coefficient against material.finite_volume.kes.W (bars: the "
+                      "discretisation error, drape_coefficient_error)"),
+            std::string::npos);
+  EXPECT_EQ(html.find("energy (J) against material.finite_volume.kes.W (bars"), std::string::npos);
+  std::istringstream data(ReadText((out / "plots/data/rows.dat").string()));
+  const auto rows = ReadCsv((out / "sweep.csv").string());
+  const int error_column = ColumnOf(rows[0], "drape_coefficient_error");
+  std::string line;
+  for (size_t r = 1; std::getline(data, line); ++r) {
+    std::istringstream cells(line);
+    std::vector<std::string> values;
+    for (std::string cell; cells >> cell;) values.push_back(cell);
+    ASSERT_EQ(values.size(), 7u) << line;
+    ASSERT_LT(r, rows.size());
+    EXPECT_EQ(std::strtod(values[6].c_str(), nullptr),
+              std::strtod(rows[r][error_column].c_str(), nullptr));
+  }
   ExpectNoNan(out);
 }
 

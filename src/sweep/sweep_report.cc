@@ -32,6 +32,8 @@ const std::vector<Response> kResponses = {{"drape_coefficient", "drape coefficie
                                           {"iterations", "iterations"},
                                           {"time_s", "solver time (s)"}};
 
+constexpr const char* kDrapeErrorColumn = "drape_coefficient_error";
+
 // sweep.csv as cells: the header, then the rows.
 struct Table {
   std::vector<std::string> header;
@@ -130,21 +132,35 @@ std::vector<Figure> ScalarPlots(const SweepSpec& spec, const Table& table, Gnupl
     responses.push_back(&response);
   }
   if (keys.empty() || responses.empty()) return figures;
+  // The drape coefficient's error bars (sweep.csv's drape_coefficient_error), the last column.
+  const int error_column = table.Column(kDrapeErrorColumn);
+  bool bars = false;
+  for (size_t r = 0; r < table.rows.size() && error_column >= 0 && !bars; ++r) {
+    double value = 0.0;
+    bars = table.Number(r, error_column, &value);
+  }
+  if (bars) columns.push_back(error_column);
   const std::string data = ScalarData(plotter, table, columns);
   for (size_t y = 0; y < responses.size(); ++y) {
+    const bool with_bars = bars && responses[y]->column == "drape_coefficient";
     for (size_t x = 0; x < keys.size(); ++x) {
       const std::string& key = table.header[keys[x]];
       const std::string png = responses[y]->column + "__" + Slug(key) + ".png";
-      const std::string image =
-          plotter.Draw("sweep_scalar.gp", png,
-                       {{"input", data},
-                        {"xcol", std::to_string(x + 1)},
-                        {"ycol", std::to_string(keys.size() + y + 1)},
-                        {"xlabel", key},
-                        {"ylabel", responses[y]->label},
-                        {"title", responses[y]->label + " against " + key},
-                        {"logx", WideAndPositive(table, keys[x]) ? "1" : "0"}});
-      if (!image.empty()) figures.push_back({image, responses[y]->label + " against " + key});
+      std::vector<std::pair<std::string, std::string>> variables = {
+          {"input", data},
+          {"xcol", std::to_string(x + 1)},
+          {"ycol", std::to_string(keys.size() + y + 1)},
+          {"xlabel", key},
+          {"ylabel", responses[y]->label},
+          {"title", responses[y]->label + " against " + key},
+          {"logx", WideAndPositive(table, keys[x]) ? "1" : "0"}};
+      if (with_bars) variables.emplace_back("errcol", std::to_string(columns.size()));
+      const std::string image = plotter.Draw("sweep_scalar.gp", png, variables);
+      const std::string caption =
+          responses[y]->label + " against " + key +
+          (with_bars ? " (bars: the discretisation error, " + std::string(kDrapeErrorColumn) + ")"
+                     : "");
+      if (!image.empty()) figures.push_back({image, caption});
     }
   }
   return figures;
