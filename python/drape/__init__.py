@@ -128,6 +128,9 @@ class Result:
         self.iterations = figures["iterations"]
         self.energy = figures["energy"]                     # J, per term type and "total"
         self.drape_coefficient = figures["drape_coefficient"]
+        # The error bar of drape solve's line: the levels' (widened to the mesh rule's), else the
+        # mesh rule's; None for a scene without a support disc or rule.
+        self.drape_coefficient_error = figures["drape_coefficient_error"]
         self.summary = json.loads(figures["summary_json"])  # summary.json's dict
         self.interrupted = figures["interrupted"]
 
@@ -138,6 +141,8 @@ class Result:
     def __repr__(self):
         coefficient = ("" if self.drape_coefficient is None
                        else f", drape_coefficient={self.drape_coefficient:.4g}")
+        if self.drape_coefficient_error is not None:
+            coefficient += f" ± {self.drape_coefficient_error:.2g}"
         return (f"drape.Result(converged={self.converged}, state={self.state!r}, "
                 f"nodes={len(self.positions)}{coefficient})")
 

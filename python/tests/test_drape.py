@@ -53,6 +53,8 @@ def test_a_drape_test_gives_its_coefficient_and_arrays(tmp_path):
     _, summary = cli_solve(config("fv/drape_tester_cotton_30.yaml"), tmp_path, "mesh.spacing=0.02")
     result = drape.solve(config("fv/drape_tester_cotton_30.yaml"), set=overrides)
     assert result.drape_coefficient == summary["drape_coefficient"]
+    # At 2 cm no coarser level: the error bar is the mesh rule's.
+    assert result.drape_coefficient_error == summary["mesh_rule"]["expected_drape_coefficient_error"]
     n = len(result.positions)
     assert result.fixed.shape == (n, 3) and result.fixed.dtype == np.bool_
     assert result.reactions.shape == result.contact_forces.shape == (n, 3)
