@@ -353,8 +353,8 @@ Scene LoadSpecimenScene(const FitSpec& spec, const FitSpecimen& specimen) {
 
 // Checks a specimen's scene with every parameter at its initial value, and each measurement
 // against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
-void CheckSpecimen(FitSpec* spec_out, const FitSpecimen& specimen) {
-  const FitSpec& spec = *spec_out;
+// Returns the warnings (FitMeshWarning).
+std::vector<std::string> CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
   const Scene scene = LoadSpecimenScene(spec, specimen);
   if (FrictionLoadSteps(scene) > 0) {
     throw InputError(scene.material.finite_volume.where,
@@ -364,6 +364,7 @@ void CheckSpecimen(FitSpec* spec_out, const FitSpecimen& specimen) {
                      "path: docs/reference.md, \"Fibre friction in bending\")");
   }
   const Model model = BuildModel(scene);
+  std::vector<std::string> warnings;
   for (const auto& measurement : specimen.measurements) {
     using Kind = FitMeasurement::Kind;
     if (measurement.kind == Kind::kPositions && !measurement.positions.cloud) {
@@ -396,8 +397,8 @@ void CheckSpecimen(FitSpec* spec_out, const FitSpecimen& specimen) {
     if (measurement.kind == Kind::kDrapeCoefficient && model.triangles.empty()) {
       throw InputError(measurement.where, "a drape coefficient needs a surface mesh");
     }
-    if (const std::string warning = FitMeshWarning(scene, model, measurement); !warning.empty()) {
-      spec_out->warnings.push_back(warning);
+    if (std::string warning = FitMeshWarning(scene, model, measurement); !warning.empty()) {
+      warnings.push_back(std::move(warning));
     }
     if (measurement.kind == Kind::kBendingLength &&
         !MaterialModelOf(scene.material.model).peirce_test) {
@@ -405,6 +406,7 @@ void CheckSpecimen(FitSpec* spec_out, const FitSpecimen& specimen) {
                                               MaterialModelsWith(&MaterialModelRow::peirce_test));
     }
   }
+  return warnings;
 }
 
 void ReadTop(const YamlValue& root, FitSpec* spec) {
@@ -518,7 +520,11 @@ FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& sce
   const YAML::Node document = ReadYamlFile(path, "fit file");
   YamlOrigins origins(path);
   ReadTop(YamlRoot(document, origins), &spec);
-  for (const auto& specimen : spec.specimens) CheckSpecimen(&spec, specimen);
+  for (const auto& specimen : spec.specimens) {
+    for (std::string& warning : CheckSpecimen(spec, specimen)) {
+      spec.warnings.push_back(std::move(warning));
+    }
+  }
   return spec;
 }
 
@@ -527,19 +533,21 @@ std::string FitMeshWarning(const Scene& scene, const Model& model,
   if (measurement.kind != FitMeasurement::Kind::kDrapeCoefficient) return "";
   const std::optional<MeshAdvice> advice = AdviseMesh(scene, model);
   if (!advice || !(advice->expected_error > measurement.sigma)) return "";
+  const auto number = [](const char* format, double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, format, value);
+    return std::string(text);
+  };
   const Location& where = measurement.where;
-  char text[600];
-  std::snprintf(text, sizeof text,
-                "%s:%d:%d: %s: the drape coefficient on the %s mesh of %s carries a "
-                "discretisation error of about %.2g (mesh rule for a %s bending length, at the "
-                "initial parameters), %.3g times the measurement's sigma %.3g: the fitted "
-                "parameters absorb it as a bias; %s or finer keeps it within %.2g",
-                where.file.c_str(), where.line, where.column, where.key.c_str(),
-                LengthText(advice->spacing, 2).c_str(), scene.file.c_str(), advice->expected_error,
-                LengthText(advice->bending_length, 2).c_str(),
-                advice->expected_error / measurement.sigma, measurement.sigma,
-                LengthText(advice->spacing_needed, 2).c_str(), kCoarseDrapeError);
-  return text;
+  return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
+         where.key + ": the drape coefficient on the " + LengthText(advice->spacing, 2) +
+         " mesh of " + scene.file + " carries a discretisation error of about " +
+         number("%.2g", advice->expected_error) + " (mesh rule for a " +
+         LengthText(advice->bending_length, 2) + " bending length, at the initial parameters), " +
+         number("%.3g", advice->expected_error / measurement.sigma) +
+         " times the measurement's sigma " + number("%.3g", measurement.sigma) +
+         ": the fitted parameters absorb it as a bias; " + LengthText(advice->spacing_needed, 2) +
+         " or finer keeps it within " + number("%.2g", kCoarseDrapeError);
 }
 
 }  // namespace drape

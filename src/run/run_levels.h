@@ -16,9 +16,9 @@ namespace drape {
 
 // How each level after the coarsest starts: from the coarser level's answer interpolated (grid
 // sequencing; the finer level need not keep the coarse level's folds: docs/benchmarks.md, "Starts
-// near the answer"), or from the flat start,
-// like a solve on that mesh alone (the finest level's answer is the plain solve's, bit for bit;
-// the coarser levels only measure how the answer changes with the spacing).
+// near the answer"), or from the flat start, like a solve on that mesh alone (the finest level's
+// answer is the plain solve's, bit for bit; the coarser levels only measure how the answer
+// changes with the spacing).
 enum class LevelStart { kFromCoarser, kFlat };
 
 // Solves scene.solver.levels levels; the finest is `model` (built from `scene`), whose RunResult
