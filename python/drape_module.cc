@@ -225,6 +225,7 @@ py::dict Fit(const std::string& path, const std::vector<std::string>& overrides,
     spec.method = *method;
   }
   spec.output_directory = directory;
+  CheckOutputWritable(directory);  // before any solve
   FitProblem problem(spec, threads);
   FitResult result;
   bool interrupted = false;
@@ -235,7 +236,6 @@ py::dict Fit(const std::string& path, const std::vector<std::string>& overrides,
     interrupted = InterruptRequested();
   }
   if (result.parameters.empty()) throw std::runtime_error("drape fit: " + result.termination);
-  CheckOutputWritable(directory);
   WriteFitOutputs(problem, result, directory, Provenance{"python: drape.fit", overrides});
   py::dict outcome;
   outcome["converged"] = result.converged;

@@ -687,6 +687,23 @@ TEST_F(CliTest, UnwritableOutputFolderIsFoundBeforeTheModelIsBuilt) {
   EXPECT_EQ(outcome.out, "");
 }
 
+// drape fit and drape compare find an unwritable folder before they solve anything: exit 2.
+TEST_F(CliTest, FitAndCompareCheckTheirFolderBeforeSolving) {
+  const std::string fit =
+      std::string(drape_tests::kSourceDir) + "/configs/fit/fit_drape_coefficient.yaml";
+  const ProgramOutcome fitted = Drape({"fit", fit, "--out", "/proc/nope"});
+  EXPECT_EQ(fitted.exit_status, 2);
+  EXPECT_NE(fitted.err.find("drape fit: cannot write the results: "), std::string::npos)
+      << fitted.err;
+  EXPECT_EQ(fitted.err.find("evaluation 1"), std::string::npos) << fitted.err;  // nothing solved
+  const ProgramOutcome compared =
+      Drape({"compare", WriteScene(), "--solvers", "newton", "--out", "/proc/nope"});
+  EXPECT_EQ(compared.exit_status, 2);
+  EXPECT_NE(compared.err.find("drape compare: cannot write the report: "), std::string::npos)
+      << compared.err;
+  EXPECT_NE(compared.err.find("; nothing solved"), std::string::npos) << compared.err;
+}
+
 // Stability is on the stdout line of every run; a run that converges to a saddle exits 3 and says
 // "saddle" with the eigenvalue (the flat curtain of Puiseux's paper, solved by his fixed point,
 // which has no curvature information: it used to exit 0).

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -140,6 +141,15 @@ TEST(RunCompare, ReportKeepsRefusedAndUnconvergedRuns) {
     EXPECT_NE(html.find("src=\"data:image/png;base64,"), std::string::npos);
   }
   EXPECT_EQ(runs.find(",yes,"), std::string::npos) << runs;
+  // No NaN or infinity in a CSV cell: the sheet has no drape coefficient, so no gap (empty).
+  for (const char* csv : {"runs.csv", "curves.csv", "references.csv"}) {
+    std::istringstream cells(ReadText(out / csv));
+    std::string line;
+    while (std::getline(cells, line)) {
+      EXPECT_FALSE(std::regex_search(line, std::regex("(^|,)-?(nan|inf)(,|$)")))
+          << csv << ": " << line;
+    }
+  }
 }
 
 TEST(RunCompare, UnknownSolverIsBadUsage) {

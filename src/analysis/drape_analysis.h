@@ -99,9 +99,11 @@ RadialProfile ComputeRadialProfile(const std::vector<double>& positions,
 //    relative rule (10%) drops the ripples that mesh noise leaves after smoothing while keeping the
 //    minor folds of an irregular drape (a fold a third as high as its neighbours counts); the
 //    absolute rule (1%) makes a circle or an almost undraped specimen count 0 folds however its
-//    small noise is shaped. Measured on configs/fv/drape_tester_cotton_30.yaml (1 cm mesh): its 7
-//    folds stand 39–100% of the range above their troughs, no other maximum is left after
-//    smoothing, and the count stays 7 for σ from 1.5° to 5° and thresholds from 5% to 20%.
+//    small noise is shaped. Measured on configs/fv/drape_tester_cotton_30.yaml (1 cm mesh, session
+//    24): its 11 folds stand 14–100% of the range above their troughs, no other maximum is left
+//    after smoothing, and the count stays 11 for σ from 1.5° to 4° at thresholds of 5% and 10%;
+//    at 15–20% or σ = 5° it falls to 10–6 (the weakest folds go first: a drape's folds are
+//    unequal, hence the low threshold).
 struct FoldOptions {
   double smoothing_deg = 3.0;
   double relative_prominence = 0.10;

@@ -366,6 +366,14 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
   if (arguments.out) spec.output_directory = *arguments.out;
   // Under mpirun/srun every rank runs the fit in step; only the coordinator reports and writes.
   const bool coordinator = Processes().IsCoordinator();
+  try {  // before any solve, on every rank (as the sweep): an unwritable folder costs nothing
+    CheckOutputWritable(spec.output_directory);
+  } catch (const std::exception& error) {
+    if (coordinator) {
+      err << "drape fit: cannot write the results: " << error.what() << "; nothing solved\n";
+    }
+    return kExitBadInput;
+  }
   if (coordinator) {
     for (const std::string& warning : spec.warnings)
       err << "drape fit: warning: " << warning << "\n";

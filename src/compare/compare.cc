@@ -16,6 +16,7 @@
 
 #include "src/compare/compare_report.h"
 #include "src/model/equilibrium.h"
+#include "src/output/writers.h"
 #include "src/run/run.h"
 #include "src/run/solve_report.h"
 #include "src/scene/scene_loader.h"
@@ -375,6 +376,12 @@ int RunCompare(const CompareOptions& options, std::ostream& log, std::ostream* r
     return 2;
   }
   if (!ScenesLoad(options, log)) return 2;
+  try {  // before any solve: an unwritable folder costs nothing
+    CheckOutputWritable(options.out_dir);
+  } catch (const std::exception& error) {
+    log << "drape compare: cannot write the report: " << error.what() << "; nothing solved\n";
+    return 2;
+  }
   const Clock::time_point start = Clock::now();
   std::vector<SceneComparison> comparisons;
   for (const std::string& file : options.scenes) {

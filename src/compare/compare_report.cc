@@ -85,18 +85,18 @@ void WriteRunsCsv(const std::vector<SceneComparison>& comparisons, std::ostream&
       std::string times;
       for (double t : run.times_s) times += (times.empty() ? "" : ";") + FormatNumber(t);
       out << CsvField(run.scene) << ',' << run.solver << ',' << RunStatusName(run.status) << ','
-          << CsvField(run.reason) << ',' << run.iterations << ',' << FormatNumber(run.time_s) << ','
-          << times << ',' << FormatNumber(run.callback_time_s) << ','
-          << FormatNumber(run.relative_residual) << ',' << FormatNumber(run.max_node_force) << ','
-          << FormatNumber(run.energy) << ',' << FormatNumber(run.energy_gap) << ','
-          << FormatNumber(run.error.max_m) << ',' << FormatNumber(run.error.rms_m) << ','
-          << FormatNumber(run.error.max_m / run.size) << ',' << FormatNumber(RelativeError(run))
-          << ',' << FormatNumber(run.drape_coefficient_gap) << ','
+          << CsvField(run.reason) << ',' << run.iterations << ',' << CsvNumber(run.time_s) << ','
+          << times << ',' << CsvNumber(run.callback_time_s) << ','
+          << CsvNumber(run.relative_residual) << ',' << CsvNumber(run.max_node_force) << ','
+          << CsvNumber(run.energy) << ',' << CsvNumber(run.energy_gap) << ','
+          << CsvNumber(run.error.max_m) << ',' << CsvNumber(run.error.rms_m) << ','
+          << CsvNumber(run.error.max_m / run.size) << ',' << CsvNumber(RelativeError(run)) << ','
+          << CsvNumber(run.drape_coefficient_gap) << ','
           << (run.stability_computed ? JsonBool(run.stable) : "") << ','
-          << FormatNumber(run.peak_memory_mb);
-      for (double level : AccuracyLevels()) {
+          << CsvNumber(run.peak_memory_mb);
+      for (double level : AccuracyLevels()) {  // empty: not reached, or no position errors
         const double t = HasPositions(run) ? TimeToReach(run, level) : -1.0;
-        out << ',' << (t == kTimeUnknown ? "nan" : t < 0 ? "" : FormatNumber(t));
+        out << ',' << (t < 0 ? "" : CsvNumber(t));
       }
       out << '\n';
     }

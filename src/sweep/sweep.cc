@@ -317,16 +317,18 @@ class SweepTable {
       }
       return std::string();
     };
+    const auto rounded = [&](const char* name, int digits) {
+      return RoundedNumber(std::strtod(cell(name).c_str(), nullptr), digits);
+    };
     log_ << "sweep: task " << task << " (" << done_ << " done this run): "
          << (cell("converged") == JsonBool(true) ? "converged" : "not converged") << ", "
          << (cell("iterations").empty() ? "" : cell("iterations") + " iterations, ")
-         << (cell("time_s").empty() ? "" : cell("time_s") + " s, ")
-         << (cell("drape_coefficient").empty()
+         << (cell("time_s").empty() ? "" : rounded("time_s", 3) + " s, ")
+         << (cell("drape_coefficient").empty() ? "" : "DC " + rounded("drape_coefficient", 4))
+         << (cell("drape_coefficient_error").empty()
                  ? ""
-                 : "DC " +
-                       RoundedNumber(std::strtod(cell("drape_coefficient").c_str(), nullptr), 4) +
-                       ", ")
-         << cell("stop_reason")
+                 : " ± " + rounded("drape_coefficient_error", 2))
+         << (cell("drape_coefficient").empty() ? "" : ", ") << cell("stop_reason")
          << (cell("warm_start_from").empty() ? "" : ", warm from task " + cell("warm_start_from"))
          << std::endl;
   }
