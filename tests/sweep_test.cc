@@ -83,9 +83,9 @@ TEST(Sweep, RowsAreTheScenesSolvedOneByOneWithSet) {
     EXPECT_EQ(Number(row[ColumnOf(header, "folds")]), JsonField(json, "folds"));
     // The drape coefficient's error: the levels' error bar, else the mesh rule's (this lattice).
     const double levels_bar = JsonField(json, "estimate");
-    EXPECT_EQ(Number(row[ColumnOf(header, "drape_coefficient_error")]),
-              std::isnan(levels_bar) ? JsonField(json, "expected_drape_coefficient_error")
-                                     : levels_bar);
+    EXPECT_EQ(
+        Number(row[ColumnOf(header, "drape_coefficient_error")]),
+        std::isnan(levels_bar) ? JsonField(json, "expected_drape_coefficient_error") : levels_bar);
     EXPECT_GT(Number(row[ColumnOf(header, "drape_coefficient_error")]), 0.0);
     EXPECT_EQ(row[ColumnOf(header, "stable")], "true");
     const size_t state = json.find("\"state\": \"");
