@@ -58,6 +58,22 @@ def _overrides(set):
     return [f"{key}={_override_value(value)}" for key, value in set.items()]
 
 
+def _loaded(scene, set):
+    """A Scene as given, or the scene file at a path loaded with `set` overrides."""
+    if not isinstance(scene, Scene):
+        return load(scene, set=set)
+    if set is not None:
+        raise TypeError("set: give the overrides to drape.load (the scene is already loaded)")
+    return scene
+
+
+def _interrupted(message, result):
+    """The KeyboardInterrupt of a run that Ctrl-C stopped, with what it finished as `result`."""
+    interrupt = KeyboardInterrupt(message)
+    interrupt.result = result
+    return interrupt
+
+
 class Scene:
     """A loaded, checked scene (the `drape check` of it is `check()`)."""
 
@@ -153,19 +169,13 @@ def solve(scene, solver=None, set=None, start=None):
     solver: a method name (`drape solvers`); set: overrides (for a path); start: an earlier
     Result or an (n, 3) array of positions, a warm start (the free nodes start there).
     """
-    if not isinstance(scene, Scene):
-        scene = load(scene, set=set)
-    elif set is not None:
-        raise TypeError("set: give the overrides to drape.load (the scene is already loaded)")
+    scene = _loaded(scene, set)
     if isinstance(start, Result):
         start = start.positions
     result = Result(_drape.solve(scene._handle, solver, start))
     if result.interrupted:
-        interrupt = KeyboardInterrupt(
-            f"drape.solve interrupted after {result.iterations} iterations; "
-            "the last iterate is the exception's `result`")
-        interrupt.result = result
-        raise interrupt
+        raise _interrupted(f"drape.solve interrupted after {result.iterations} iterations; "
+                           "the last iterate is the exception's `result`", result)
     return result
 
 
@@ -228,10 +238,7 @@ def drops(scene, drops=None, set=None, directory=None, threads=0):
     directory: where the files go (drops.csv, summary.json, report.html, drops/NN/), else a
     temporary folder, removed after reading.
     """
-    if not isinstance(scene, Scene):
-        scene = load(scene, set=set)
-    elif set is not None:
-        raise TypeError("set: give the overrides to drape.load (the scene is already loaded)")
+    scene = _loaded(scene, set)
     if drops is not None and (isinstance(drops, bool) or not isinstance(drops, int) or drops < 1):
         raise InputError(f"drops: expected a whole number >= 1, got {drops!r}", key="drops")
     folder = os.fspath(directory) if directory is not None else tempfile.mkdtemp(prefix="drape_drops_")
@@ -242,9 +249,7 @@ def drops(scene, drops=None, set=None, directory=None, threads=0):
         if directory is None:
             shutil.rmtree(folder, ignore_errors=True)
     if outcome["interrupted"]:
-        interrupt = KeyboardInterrupt("drape.drops interrupted; the finished drops are `result`")
-        interrupt.result = result
-        raise interrupt
+        raise _interrupted("drape.drops interrupted; the finished drops are `result`", result)
     return result
 
 
@@ -326,9 +331,8 @@ def fit(fit_file, set=None, method=None, directory=None, threads=1, base="."):
         if scratch is not None:
             shutil.rmtree(scratch, ignore_errors=True)
     if outcome["interrupted"]:
-        interrupt = KeyboardInterrupt("drape.fit interrupted; the best point is the exception's `result`")
-        interrupt.result = result
-        raise interrupt
+        raise _interrupted("drape.fit interrupted; the best point is the exception's `result`",
+                           result)
     return result
 
 
@@ -339,7 +343,5 @@ def sweep(sweep_file, directory=None, threads=0, plots=False):
                            threads, plots)
     table = _table(os.path.join(outcome["directory"], "sweep.csv"))
     if outcome["interrupted"]:
-        interrupt = KeyboardInterrupt("drape.sweep interrupted; the finished rows are `result`")
-        interrupt.result = table
-        raise interrupt
+        raise _interrupted("drape.sweep interrupted; the finished rows are `result`", table)
     return table
