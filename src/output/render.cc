@@ -808,8 +808,14 @@ void DrawShadowView(const Scene& scene, const Model& model, const DrapeAnalysis&
   Text(cr, 20, 30, scene.name + " — top view", 18, true);
   std::string line = "Drape coefficient: ";
   if (analysis.disc_radius > 0.0) {
-    line +=
-        "Cusick " + CoefficientText(dc.cusick) + "  (A_shadow − A_disc)/(A_specimen − A_disc);  ";
+    std::string bar;
+    if (options.drape_coefficient_error) {
+      char text[32];
+      std::snprintf(text, sizeof text, " ± %.2g", *options.drape_coefficient_error);
+      bar = text;
+    }
+    line += "Cusick " + CoefficientText(dc.cusick) + bar +
+            "  (A_shadow − A_disc)/(A_specimen − A_disc);  ";
   }
   line += "ratio " + CoefficientText(dc.ratio) + "  (A_shadow/A_flat)";
   Text(cr, 20, 55, line, 13);

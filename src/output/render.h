@@ -5,6 +5,7 @@
 #define DRAPE_SRC_OUTPUT_RENDER_H_
 
 #include <array>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -72,9 +73,12 @@ void DrawDrapeView(const Scene& scene, const Model& model, std::ostream& png,
 // (dashed), the support disc (filled grey; without one, the fixed nodes as a pin), the shadow
 // (the union of the projected triangles, translucent blue) with its outline r(θ), the fold crests
 // (red dots), light circles every round radius around the centre, a scale bar in cm, and as text
-// the drape coefficient in both conventions, the fold count and the radii.
+// the drape coefficient in both conventions (Cusick's with its error bar where given), the fold
+// count and the radii.
 struct ShadowViewOptions {
   int size = 800;  // pixels, square
+  // Cusick's drape coefficient's error bar (the stdout line's), drawn beside it where given.
+  std::optional<double> drape_coefficient_error;
 };
 
 // A drape coefficient as text: three decimals ("0.710"), or two significant digits below 0.001.

@@ -683,11 +683,21 @@ void WriteProfile(const DrapeAnalysis& analysis, std::ostream& out) {
   }
 }
 
-// The captions of drape.png for a drape: both drape coefficients and the fold count.
-std::vector<std::string> DrapeCaption(const DrapeAnalysis& analysis) {
+// The captions of drape.png for a drape: both drape coefficients (Cusick's with the error bar of
+// the stdout line, where there is one) and the fold count.
+std::vector<std::string> DrapeCaption(const OutputContext& context) {
+  const DrapeAnalysis& analysis = *context.report.drape;
   std::string line = "drape coefficient ";
-  if (analysis.disc_radius > 0.0)
-    line += CoefficientText(analysis.coefficient.cusick) + " (Cusick), ";
+  if (analysis.disc_radius > 0.0) {
+    line += CoefficientText(analysis.coefficient.cusick);
+    if (const std::optional<double> error =
+            ReportedDrapeCoefficientError(context.scene, context.model, context.report)) {
+      char bar[32];
+      std::snprintf(bar, sizeof bar, " ± %.2g", *error);
+      line += bar;
+    }
+    line += " (Cusick), ";
+  }
   line += CoefficientText(analysis.coefficient.ratio) + " (A_shadow/A_flat); " +
           std::to_string(analysis.folds.count) + " folds";
   return {line};
@@ -806,14 +816,16 @@ const std::vector<OutputFileWriter>& OutputFileWriters() {
        [](const OutputContext& c) { return c.model.num_nodes > 0; },
        [](const OutputContext& c, std::ostream& out) {
          DrapeViewOptions view;
-         if (c.report.drape) view.caption = DrapeCaption(*c.report.drape);
+         if (c.report.drape) view.caption = DrapeCaption(c);
          DrawDrapeView(c.scene, c.model, out, view);
        }},
       {"shadow.png",
        {Kind::kPng, Kind::kShadow},
        HasDrape,
        [](const OutputContext& c, std::ostream& out) {
-         DrawShadowView(c.scene, c.model, *c.report.drape, out);
+         ShadowViewOptions view;
+         view.drape_coefficient_error = ReportedDrapeCoefficientError(c.scene, c.model, c.report);
+         DrawShadowView(c.scene, c.model, *c.report.drape, out, view);
        }},
   };
   return writers;

@@ -1,0 +1,52 @@
+// The report of a solve (src/run/solve_report.h): how many levels a drape test takes, and the
+// drape coefficient's error bar every report of it gives (ReportedDrapeCoefficientError).
+#include "src/run/solve_report.h"
+
+#include <gtest/gtest.h>
+
+#include <optional>
+
+#include "src/analysis/mesh_rule.h"
+#include "src/model/model.h"
+#include "tests/test_scenes.h"
+
+namespace drape {
+namespace {
+
+// The 24 cm polyester on a 20 cm disc (a short overhang: quick), as in the command-line tests.
+Scene SmallTester(const std::vector<std::string>& more = {}) {
+  std::vector<std::string> overrides = {"drape_test.disc_diameter=0.2", "mesh.spacing=0.0125"};
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  return testing::LoadConfig("configs/fv/drape_tester_polyester_24.yaml", overrides);
+}
+
+// Two levels (the default): the levels' error bar, which is at least the mesh rule's; one level
+// (solver.levels: 1): the mesh rule's alone; a scene without a support disc: none.
+TEST(SolveReport, TheDrapeCoefficientsErrorBarIsTheLinesOne) {
+  const Scene scene = SmallTester();
+  Model model = BuildModel(scene);
+  ASSERT_EQ(LevelsToSolve(scene, model), 2);
+  const SolveReport two = SolveAndReport(scene, model, scene.solver.method);
+  ASSERT_TRUE(two.levels && two.levels->drape_error);
+  const std::optional<MeshAdvice> advice = AdviseMesh(scene, model);
+  ASSERT_TRUE(advice);
+  const std::optional<double> bar = ReportedDrapeCoefficientError(scene, model, two);
+  ASSERT_TRUE(bar);
+  EXPECT_EQ(*bar, two.levels->drape_error->error);
+  EXPECT_GE(*bar, advice->expected_error);
+  EXPECT_GE(*bar, two.levels->drape_error->levels_error);
+
+  const Scene single = SmallTester({"solver.levels=1"});
+  Model single_model = BuildModel(single);
+  const SolveReport one = SolveAndReport(single, single_model, single.solver.method);
+  EXPECT_FALSE(one.levels);
+  EXPECT_EQ(ReportedDrapeCoefficientError(single, single_model, one), advice->expected_error);
+
+  const Scene sheet = testing::LoadConfig("configs/examples/hanging_sheet.yaml", {});
+  Model sheet_model = BuildModel(sheet);
+  const SolveReport plain = SolveAndReport(sheet, sheet_model, sheet.solver.method);
+  EXPECT_FALSE(ReportedDrapeCoefficientError(sheet, sheet_model, plain));
+}
+
+}  // namespace
+}  // namespace drape
