@@ -366,13 +366,14 @@ int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
   if (arguments.out) spec.output_directory = *arguments.out;
   // Under mpirun/srun every rank runs the fit in step; only the coordinator reports and writes.
   const bool coordinator = Processes().IsCoordinator();
-  try {  // before any solve, on every rank (as the sweep): an unwritable folder costs nothing
-    CheckOutputWritable(spec.output_directory);
-  } catch (const std::exception& error) {
-    if (coordinator) {
+  if (coordinator) {
+    try {  // before any solve: an unwritable folder costs nothing
+      CheckOutputWritable(spec.output_directory);
+    } catch (const std::exception& error) {
       err << "drape fit: cannot write the results: " << error.what() << "; nothing solved\n";
+      AbortJobAfterError(kExitBadInput);  // under MPI: the other ranks would wait for this one
+      return kExitBadInput;
     }
-    return kExitBadInput;
   }
   if (coordinator) {
     for (const std::string& warning : spec.warnings)

@@ -16,6 +16,7 @@
 #include "src/output/provenance.h"
 #include "src/output/result_folder.h"
 #include "src/output/writers.h"
+#include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
 #include "src/run/state_text.h"
@@ -305,7 +306,9 @@ DropRecord ParseDropCsvRow(const std::string& row) {
 
 DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostream& log) {
   RunLibrariesOnOneThread();  // one thread per drop for CHOLMOD and OpenBLAS
-  CheckOutputWritable(options.directory);
+  // By the coordinator alone: on every rank, one rank's removal of the folder it made could race
+  // another's probe of it (src/sweep/sweep.cc does the same).
+  if (Processes().IsCoordinator()) CheckOutputWritable(options.directory);
   fs::create_directories(options.directory);
   std::vector<int> tasks(options.drops);
   for (int k = 0; k < options.drops; ++k) tasks[k] = k;

@@ -19,6 +19,7 @@
 #include "src/output/result_folder.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
 #include "src/run/state_text.h"
@@ -437,7 +438,9 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   SweepSummary summary;
   summary.directory = options.out.empty() ? spec.output_directory : options.out;
   summary.tasks = static_cast<int>(spec.tasks.size());
-  CheckOutputWritable(summary.directory);     // before any solve; it leaves no folder behind
+  // Before any solve (it leaves no folder behind), by the coordinator alone: on every rank, one
+  // rank's removal of the folder it made raced another's probe of it.
+  if (Processes().IsCoordinator()) CheckOutputWritable(summary.directory);
   fs::create_directories(summary.directory);  // sweep.csv is written even if no task finishes
   const Context context{spec, summary.directory, options.command_line, CsvLine(SweepColumns(spec)),
                         TaskIdentities(spec)};
