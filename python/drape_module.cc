@@ -29,6 +29,7 @@
 #include "src/output/writers.h"
 #include "src/run/solve_report.h"
 #include "src/run/state_text.h"
+#include "src/scene/drape_test.h"
 #include "src/scene/material_models.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"
@@ -279,8 +280,9 @@ py::dict Drops(const PyScene& loaded, int drops, const std::string& directory, i
         "drops: needs a drape test: give the scene a drape_test block (docs/reference.md, "
         "\"`drape_test`\")");
   }
-  if (drops < 0) {
-    throw InputError("drops: expected a whole number >= 1, got " + std::to_string(drops));
+  if (drops < 0 || drops > kMostDrops) {
+    throw InputError("drops: expected a whole number from 1 to " + std::to_string(kMostDrops) +
+                     ", got " + std::to_string(drops));
   }
   RequireThreadCount(threads);
   DropsOptions options;

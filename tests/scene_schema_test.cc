@@ -528,6 +528,9 @@ TEST(SceneSchema, RangeTextsParse) {
   const auto max_nodes = ParseSchemaRange("in [2, 10⁸]", true);
   ASSERT_TRUE(max_nodes.has_value());
   EXPECT_EQ(max_nodes->upper, 1e8);
+  const auto drops = ParseSchemaRange("1–10000", true);  // a number starting 10, not a power
+  ASSERT_TRUE(drops.has_value());
+  EXPECT_EQ(drops->upper, 10000);
   EXPECT_FALSE(ParseSchemaRange("strictly increasing", false).has_value());
   EXPECT_FALSE(ParseSchemaRange("> min", false).has_value());
   EXPECT_FALSE(ParseSchemaRange("each > 0 (≥ 0 along an axis of 1 node)", false).has_value());

@@ -607,7 +607,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       ->add_option("--drops", arguments.drops,
                    "solve N drops of the scene's drape test, seeded perturbations of the "
                    "specimen's placement and waviness (default: drape_test.drops)")
-      ->check(CLI::Range(1, 10000))
+      ->check(CLI::Range(1, kMostDrops))
       ->type_name("N");
   solve
       ->add_option("--threads", arguments.threads,

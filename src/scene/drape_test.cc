@@ -12,8 +12,6 @@ constexpr double kTesterGravity = 9.81;
 // The clamp is this much narrower than the disc unless given: a 5 mm ring of the specimen rests
 // on the disc by contact inside its rim (m).
 constexpr double kClampNarrowerThanDisc = 0.01;
-// The largest number of drops one run solves.
-constexpr int kMostDrops = 10000;
 
 void ReadDrapeTestKey(const std::string& key, const YamlValue& value, DrapeTestSpec* test) {
   if (key == "specimen_diameter") test->specimen_diameter = ReadPositive(value);

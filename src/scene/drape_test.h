@@ -20,6 +20,9 @@
 
 namespace drape {
 
+// The most drops one run solves (drape_test.drops, `drape solve --drops`, Python's drape.drops).
+constexpr int kMostDrops = 10000;
+
 // The keys of the block, in the order the documentation lists them.
 const std::vector<std::string>& DrapeTestKeys();
 

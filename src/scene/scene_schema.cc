@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "src/scene/drape_test.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
 #include "src/scene/number_text.h"
@@ -178,7 +179,7 @@ std::vector<SchemaRow> DrapeTest() {
           .Example({"drape_test.offset=[0.002, 0.001]"}, "obstacles[0].disk.center",
                    "[0.002, 0.001, 0]"),
       row("drops")
-          .Is("whole number", "", "≥ 1")
+          .Is("whole number", "", "1–" + std::to_string(kMostDrops))
           .Default("`1`")
           .Doc("repeated drops (`drape solve --drops N` overrides it), below; scene.yaml, the "
                "expanded scene of one drop, does not write it")
@@ -1016,7 +1017,8 @@ std::string Joined(const std::vector<std::string>& names) {
   return text;
 }
 
-// A number of a range's text: "0", "1e-8", "-2.5", or a power of ten "10⁸"; none otherwise.
+// A number of a range's text: "0", "1e-8", "-2.5", "10000", or a power of ten "10⁸"; none
+// otherwise.
 std::optional<double> RangeNumber(const std::string& text) {
   static const std::vector<std::string> superscripts = {"⁰", "¹", "²", "³", "⁴",
                                                         "⁵", "⁶", "⁷", "⁸", "⁹"};
@@ -1026,7 +1028,7 @@ std::optional<double> RangeNumber(const std::string& text) {
       const auto digit =
           std::find_if(superscripts.begin(), superscripts.end(),
                        [&](const std::string& s) { return text.compare(at, s.size(), s) == 0; });
-      if (digit == superscripts.end()) return std::nullopt;
+      if (digit == superscripts.end()) return WholeNumber(text);  // "10000", no power
       exponent += static_cast<char>('0' + (digit - superscripts.begin()));
       at += digit->size();
     }
