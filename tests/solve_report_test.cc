@@ -1,5 +1,5 @@
-// The report of a solve (src/run/solve_report.h): how many levels a drape test takes, and the
-// drape coefficient's error bar every report of it gives (ReportedDrapeCoefficientError).
+// The report of a solve (src/run/solve_report.h): the drape coefficient's error bar every report
+// of it gives (ReportedDrapeCoefficientError).
 #include "src/run/solve_report.h"
 
 #include <gtest/gtest.h>
@@ -14,10 +14,9 @@ namespace drape {
 namespace {
 
 // The 24 cm polyester on a 20 cm disc (a short overhang: quick), as in the command-line tests.
-Scene SmallTester(const std::vector<std::string>& more = {}) {
-  std::vector<std::string> overrides = {"drape_test.disc_diameter=0.2", "mesh.spacing=0.0125"};
-  overrides.insert(overrides.end(), more.begin(), more.end());
-  return testing::LoadConfig("configs/fv/drape_tester_polyester_24.yaml", overrides);
+Scene SmallTester() {
+  return testing::LoadConfig("configs/fv/drape_tester_polyester_24.yaml",
+                             {"drape_test.disc_diameter=0.2", "mesh.spacing=0.0125"});
 }
 
 // Two levels (the default): the levels' error bar, which is at least the mesh rule's; one level:
