@@ -190,16 +190,14 @@ std::string LevelsLine(const LevelsReport& report) {
 // mesh rule applies (a finite-volume fabric on a lattice).
 std::string DrapeLine(const SolveReport& report, const std::optional<MeshAdvice>& advice) {
   if (!report.drape || !(report.drape->disc_radius > 0.0)) return "";
-  char text[160];
-  int used = std::snprintf(text, sizeof text, "; drape coefficient %.3f",
-                           report.drape->coefficient.cusick);
+  char coefficient[32];
+  std::snprintf(coefficient, sizeof coefficient, "%.3f", report.drape->coefficient.cusick);
+  std::string text = std::string("; drape coefficient ") + coefficient;
   if (advice) {
-    used += std::snprintf(text + used, sizeof text - used,
-                          " ± %.2g (mesh rule for a %s bending length)", advice->expected_error,
-                          LengthText(advice->bending_length, 2).c_str());
+    text += " ± " + RoundedNumber(advice->expected_error, 2) + " (mesh rule for a " +
+            LengthText(advice->bending_length, 2) + " bending length)";
   }
-  std::snprintf(text + used, sizeof text - used, ", %d folds", report.drape->folds.count);
-  return text;
+  return text + ", " + std::to_string(report.drape->folds.count) + " folds";
 }
 
 // How many drops `drape solve` runs: --drops, else drape_test.drops, else 1. --drops > 1 needs a

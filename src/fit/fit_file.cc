@@ -533,21 +533,16 @@ std::string FitMeshWarning(const Scene& scene, const Model& model,
   if (measurement.kind != FitMeasurement::Kind::kDrapeCoefficient) return "";
   const std::optional<MeshAdvice> advice = AdviseMesh(scene, model);
   if (!advice || !(advice->expected_error > measurement.sigma)) return "";
-  const auto number = [](const char* format, double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, format, value);
-    return std::string(text);
-  };
   const Location& where = measurement.where;
   return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
          where.key + ": the drape coefficient on the " + LengthText(advice->spacing, 2) +
          " mesh of " + scene.file + " carries a discretisation error of about " +
-         number("%.2g", advice->expected_error) + " (mesh rule for a " +
+         RoundedNumber(advice->expected_error, 2) + " (mesh rule for a " +
          LengthText(advice->bending_length, 2) + " bending length, at the initial parameters), " +
-         number("%.3g", advice->expected_error / measurement.sigma) +
-         " times the measurement's sigma " + number("%.3g", measurement.sigma) +
+         RoundedNumber(advice->expected_error / measurement.sigma, 3) +
+         " times the measurement's sigma " + RoundedNumber(measurement.sigma, 3) +
          ": the fitted parameters absorb it as a bias; " + LengthText(advice->spacing_needed, 2) +
-         " or finer keeps it within " + number("%.2g", kCoarseDrapeError);
+         " or finer keeps it within " + RoundedNumber(kCoarseDrapeError, 2);
 }
 
 }  // namespace drape

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "src/model/obstacle_kinds.h"
+#include "src/output/json.h"
 #include "src/output/png_text.h"
 
 namespace drape {
@@ -808,12 +809,9 @@ void DrawShadowView(const Scene& scene, const Model& model, const DrapeAnalysis&
   Text(cr, 20, 30, scene.name + " — top view", 18, true);
   std::string line = "Drape coefficient: ";
   if (analysis.disc_radius > 0.0) {
-    std::string bar;
-    if (options.drape_coefficient_error) {
-      char text[32];
-      std::snprintf(text, sizeof text, " ± %.2g", *options.drape_coefficient_error);
-      bar = text;
-    }
+    const std::string bar = options.drape_coefficient_error
+                                ? " ± " + RoundedNumber(*options.drape_coefficient_error, 2)
+                                : "";
     line += "Cusick " + CoefficientText(dc.cusick) + bar +
             "  (A_shadow − A_disc)/(A_specimen − A_disc);  ";
   }

@@ -692,9 +692,7 @@ std::vector<std::string> DrapeCaption(const OutputContext& context) {
     line += CoefficientText(analysis.coefficient.cusick);
     if (const std::optional<double> error =
             ReportedDrapeCoefficientError(context.scene, context.model, context.report)) {
-      char bar[32];
-      std::snprintf(bar, sizeof bar, " ± %.2g", *error);
-      line += bar;
+      line += " ± " + RoundedNumber(*error, 2);
     }
     line += " (Cusick), ";
   }

@@ -367,10 +367,8 @@ std::string DropsLine(const DropStatistics& s, const std::optional<MeshAdvice>& 
                 s.standard_deviation);
   text += figures;
   if (mesh_advice) {
-    std::snprintf(figures, sizeof figures,
-                  ", discretisation error about %.2g (mesh rule for a %s bending length)",
-                  mesh_advice->expected_error, LengthText(mesh_advice->bending_length, 2).c_str());
-    text += figures;
+    text += ", discretisation error about " + RoundedNumber(mesh_advice->expected_error, 2) +
+            " (mesh rule for a " + LengthText(mesh_advice->bending_length, 2) + " bending length)";
   }
   text += "; folds";
   std::string histogram;
