@@ -25,6 +25,7 @@
 #include "src/fit/fit_solver.h"
 #include "src/fit/fit_writer.h"
 #include "src/model/model.h"
+#include "src/numerics/library_threads.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/run/solve_report.h"
@@ -124,6 +125,7 @@ std::shared_ptr<PySolved> Solve(const PyScene& loaded, const std::optional<std::
   };
   {
     py::gil_scoped_release release;
+    const LibrariesHeldOnOneThread held;  // NumPy's OpenBLAS threads given back at the end
     solved->report = SolveAndReport(solved->scene, solved->model, solved->scene.solver.method,
                                     on_iteration, /*automatic_levels=*/!start.has_value());
   }
@@ -232,6 +234,7 @@ py::dict Fit(const std::string& path, const std::vector<std::string>& overrides,
   bool interrupted = false;
   {
     py::gil_scoped_release release;
+    const LibrariesHeldOnOneThread held;  // NumPy's OpenBLAS threads given back at the end
     const InterruptScope scope;
     result = RunFit(problem);
     interrupted = InterruptRequested();
@@ -257,6 +260,7 @@ py::dict Sweep(const std::string& path, const std::string& out, int threads, boo
   SweepSummary summary;
   {
     py::gil_scoped_release release;
+    const LibrariesHeldOnOneThread held;  // NumPy's OpenBLAS threads given back at the end
     const InterruptScope scope;
     summary = RunSweep(spec, options, std::cerr);
   }
@@ -295,6 +299,7 @@ py::dict Drops(const PyScene& loaded, int drops, const std::string& directory, i
   bool interrupted = false;
   {
     py::gil_scoped_release release;
+    const LibrariesHeldOnOneThread held;  // NumPy's OpenBLAS threads given back at the end
     const InterruptScope scope;
     summary = RunDrops(loaded.scene, options, std::cerr);
     interrupted = InterruptRequested();

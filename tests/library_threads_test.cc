@@ -64,6 +64,46 @@ TEST(LibraryThreads, CholmodRegionsRunInlineWhereOpenMpRunsOnOneThread) {
   for (int k = 0; k < hessian.size(); ++k) EXPECT_NEAR(product[k] + x[k], b[k], 1e-9);
 }
 
+void CallSetIntFunction(const char* name, int value) {
+  const auto function = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, name));
+  if (function != nullptr) function(value);
+}
+
+// A host process (the Python module) that runs OpenBLAS on 2 threads and OpenMP 3 levels deep has
+// them back when the last of two nested holds ends; inside, both run on one thread and CHOLMOD's
+// regions inline. What the user chose through the environment drape leaves alone.
+TEST(LibraryThreads, AHoldGivesTheHostItsSettingsBack) {
+  const LibraryThreads ours = RunLibrariesOnOneThread();
+  CallSetIntFunction("openblas_set_num_threads", 2);
+  CallSetIntFunction("omp_set_max_active_levels", 3);
+  const int host_threads = CallIntFunction("openblas_get_num_threads");
+  const int host_levels = CallIntFunction("omp_get_max_active_levels");
+  {
+    const LibrariesHeldOnOneThread outer;
+    { const LibrariesHeldOnOneThread inner; }
+    if (ours.openblas_single) {
+      EXPECT_EQ(CallIntFunction("openblas_get_num_threads"), 1);
+    }
+    if (ours.openmp_single) {
+      EXPECT_EQ(CallIntFunction("omp_get_max_active_levels"), 0);
+      testing::SheetSpec spec;
+      spec.nu = 20;
+      spec.nv = 20;
+      spec.fixed = {0, 19};
+      const testing::AssembledHessian assembled(testing::Sheet(spec), /*project=*/true);
+      SparseCholesky cholesky(assembled.hessian);
+      const long before = InlineOpenMpRegions();
+      const std::vector<double> shift(assembled.hessian.size(), 1.0);
+      ASSERT_TRUE(cholesky.Factorize(assembled.hessian.projected_values(), &shift));
+      EXPECT_GT(InlineOpenMpRegions(), before);
+    }
+  }
+  EXPECT_EQ(CallIntFunction("openblas_get_num_threads"), host_threads);
+  EXPECT_EQ(CallIntFunction("omp_get_max_active_levels"), host_levels);
+  CallSetIntFunction("openblas_set_num_threads", 1);  // as RunLibrariesOnOneThread left them
+  CallSetIntFunction("omp_set_max_active_levels", 0);
+}
+
 // Faster kernels are asked for only where OpenBLAS fell back to its generic ones, and only those
 // the processor runs.
 TEST(LibraryThreads, FasterBlasKernelsOnlyInPlaceOfTheGenericFallback) {

@@ -3,6 +3,7 @@ located errors, Ctrl-C, and the scene as data. Run by CTest (PythonModule) with 
 build tree's package, DRAPE_SOURCE_DIR at the clone and DRAPE_BINARY at the built drape."""
 
 import csv
+import ctypes
 import json
 import os
 import signal
@@ -179,6 +180,34 @@ def test_a_fit_gives_its_tables(tmp_path):
     assert (folder / "fit.json").is_file() and (folder / "history.csv").is_file()
     with pytest.raises(drape.InputError, match="unknown fit method"):
         drape.fit(config("fit/fit_drape_coefficient.yaml"), method="bobyqaa")
+
+
+def _mapped_library_with(symbol):
+    """The first library mapped into this process that exports `symbol`, or None."""
+    with open("/proc/self/maps") as maps:
+        paths = {line.split()[-1] for line in maps if ".so" in line}
+    for path in sorted(paths):
+        try:
+            library = ctypes.CDLL(path)
+        except OSError:
+            continue
+        if hasattr(library, symbol):
+            return library
+    return None
+
+
+def test_numpys_threads_are_given_back():
+    """drape holds OpenBLAS and OpenMP on one thread for a call's duration only."""
+    openblas = _mapped_library_with("openblas_get_num_threads")
+    openmp = _mapped_library_with("omp_get_max_active_levels")
+    if openblas is None or openmp is None:
+        pytest.skip("OpenBLAS or OpenMP is not loaded in this process")
+    openblas.openblas_set_num_threads(2)
+    openmp.omp_set_max_active_levels(3)
+    result = drape.solve(config("examples/hanging_sheet.yaml"), set={"mesh.nodes": [6, 6]})
+    assert result.converged
+    assert openblas.openblas_get_num_threads() == 2
+    assert openmp.omp_get_max_active_levels() == 3
 
 
 def test_a_sweep_gives_its_table(tmp_path):

@@ -6,41 +6,103 @@
 #include <atomic>
 #include <cstdlib>
 #include <initializer_list>
+#include <mutex>
 
 namespace drape {
 
 namespace {
 
 using SetIntFunction = void (*)(int);
+using GetIntFunction = int (*)();
 
-// Calls `name(value)` if the function is in a loaded library and none of `user_variables` is set.
-bool CallUnlessUserChose(const char* name, int value,
-                         std::initializer_list<const char*> user_variables) {
+// Whether `name` is in a loaded library and none of `user_variables` is set.
+bool OursToSet(const char* name, std::initializer_list<const char*> user_variables) {
   for (const char* variable : user_variables) {
     if (std::getenv(variable) != nullptr) return false;
   }
-  const auto function = reinterpret_cast<SetIntFunction>(dlsym(RTLD_DEFAULT, name));
-  if (function == nullptr) return false;
-  function(value);
-  return true;
+  return dlsym(RTLD_DEFAULT, name) != nullptr;
 }
 
-LibraryThreads Configure() {
-  LibraryThreads result;
+void CallSetter(const char* name, int value) {
+  const auto function = reinterpret_cast<SetIntFunction>(dlsym(RTLD_DEFAULT, name));
+  if (function != nullptr) function(value);
+}
+
+int CallGetter(const char* name) {
+  const auto function = reinterpret_cast<GetIntFunction>(dlsym(RTLD_DEFAULT, name));
+  return function == nullptr ? -1 : function();
+}
+
+// Which of the two settings are drape's to make: decided once, from the environment.
+const LibraryThreads& OursToMake() {
+  static const LibraryThreads ours = [] {
+    LibraryThreads result;
+    result.openmp_single =
+        OursToSet("omp_set_max_active_levels", {"OMP_MAX_ACTIVE_LEVELS", "OMP_THREAD_LIMIT"});
+    result.openblas_single = OursToSet("openblas_set_num_threads", {"OPENBLAS_NUM_THREADS"});
+    return result;
+  }();
+  return ours;
+}
+
+// Whether CHOLMOD's regions run inline (GOMP_parallel, below): while OpenMP is held on one thread.
+std::atomic<bool> openmp_held{false};
+
+void HoldOnOneThread() {
+  const LibraryThreads& ours = OursToMake();
   // max-active-levels 0 makes every parallel region inactive (one thread), the num_threads(4)
   // clauses in CHOLMOD included, which OMP_NUM_THREADS cannot do.
-  result.openmp_single = CallUnlessUserChose("omp_set_max_active_levels", 0,
-                                             {"OMP_MAX_ACTIVE_LEVELS", "OMP_THREAD_LIMIT"});
-  result.openblas_single =
-      CallUnlessUserChose("openblas_set_num_threads", 1, {"OPENBLAS_NUM_THREADS"});
-  return result;
+  if (ours.openmp_single) CallSetter("omp_set_max_active_levels", 0);
+  if (ours.openblas_single) CallSetter("openblas_set_num_threads", 1);
+  if (ours.openmp_single) openmp_held = true;
+}
+
+// The host's settings before the outermost LibrariesHeldOnOneThread, and how many are alive.
+struct HostSettings {
+  std::mutex mutex;
+  int scopes = 0;
+  int openmp_levels = -1;
+  int openblas_threads = -1;
+  bool openmp_held = false;
+};
+
+HostSettings& Host() {
+  static HostSettings host;
+  return host;
 }
 
 }  // namespace
 
 LibraryThreads RunLibrariesOnOneThread() {
-  static const LibraryThreads configured = Configure();
-  return configured;
+  [[maybe_unused]] static const bool held = [] {
+    HoldOnOneThread();
+    return true;
+  }();
+  return OursToMake();
+}
+
+LibrariesHeldOnOneThread::LibrariesHeldOnOneThread() {
+  HostSettings& host = Host();
+  const std::lock_guard<std::mutex> lock(host.mutex);
+  if (host.scopes++ > 0) return;
+  host.openmp_levels = CallGetter("omp_get_max_active_levels");
+  host.openblas_threads = CallGetter("openblas_get_num_threads");
+  host.openmp_held = openmp_held;
+  HoldOnOneThread();
+}
+
+LibrariesHeldOnOneThread::~LibrariesHeldOnOneThread() {
+  HostSettings& host = Host();
+  const std::lock_guard<std::mutex> lock(host.mutex);
+  if (--host.scopes > 0) return;
+  const LibraryThreads& ours = OursToMake();
+  openmp_held = host.openmp_held;
+  if (ours.openmp_single && host.openmp_levels >= 0) {
+    CallSetter("omp_set_max_active_levels", host.openmp_levels);
+  }
+  if (ours.openblas_single && host.openblas_threads > 0) {
+    CallSetter("openblas_set_num_threads", host.openblas_threads);
+  }
 }
 
 namespace {
@@ -69,7 +131,7 @@ long InlineOpenMpRegions() { return inline_openmp_regions.load(); }
 extern "C" void GOMP_parallel(void (*body)(void*), void* data, unsigned num_threads,
                               unsigned flags) {
   const drape::ParallelFunction libgomp = drape::LibgompParallel();
-  if (libgomp != nullptr && !drape::RunLibrariesOnOneThread().openmp_single) {
+  if (libgomp != nullptr && !drape::openmp_held) {
     libgomp(body, data, num_threads, flags);
     return;
   }

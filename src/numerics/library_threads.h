@@ -18,8 +18,23 @@ struct LibraryThreads {
 // machine the threads wait on each other (381,000 context switches in a 7.8 s run), and one
 // factorisation of the 50×50 sheet's Hessian takes 0.045 s with them against 0.022 s on one thread
 // (docs/benchmarks.md). Both libraries are looked up at run time (they are dependencies of CHOLMOD
-// and LAPACK, not of drape); a missing one is left alone. Idempotent; the first call does the work.
+// and LAPACK, not of drape); a missing one is left alone. Idempotent; the first call does the work
+// (for the rest of the process: LibrariesHeldOnOneThread for a call's duration).
 LibraryThreads RunLibrariesOnOneThread();
+
+// Holds OpenMP and OpenBLAS on one thread, as RunLibrariesOnOneThread does, while one of these
+// lives at least, and gives them back the settings they had before the first when the last ends:
+// for a process drape is a guest in (the Python module), whose own NumPy and OpenMP code must not
+// be left on one thread once drape's call has returned. CHOLMOD's regions run inline
+// (InlineOpenMpRegions) only while OpenMP is held. The settings the user chose through the
+// environment are left alone, as RunLibrariesOnOneThread leaves them.
+class LibrariesHeldOnOneThread {
+ public:
+  LibrariesHeldOnOneThread();
+  ~LibrariesHeldOnOneThread();
+  LibrariesHeldOnOneThread(const LibrariesHeldOnOneThread&) = delete;
+  LibrariesHeldOnOneThread& operator=(const LibrariesHeldOnOneThread&) = delete;
+};
 
 // How many OpenMP parallel regions (CHOLMOD's) drape has run inline, on the calling thread, in
 // place of libgomp's team of one. drape defines libgomp's entry point GOMP_parallel, which comes
