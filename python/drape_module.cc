@@ -168,8 +168,7 @@ py::dict ResultFigures(const PySolved& solved) {
   const double coefficient = ReportedDrapeCoefficient(solved.report);
   figures["drape_coefficient"] =
       std::isfinite(coefficient) ? py::object(py::float_(coefficient)) : py::object(py::none());
-  const std::optional<double> error =
-      ReportedDrapeCoefficientError(solved.scene, solved.model, solved.report);
+  const std::optional<double> error = ReportedDrapeCoefficientError(solved.report);
   figures["drape_coefficient_error"] =
       error ? py::object(py::float_(*error)) : py::object(py::none());
   figures["summary_json"] =

@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -188,14 +189,15 @@ std::string LevelsLine(const LevelsReport& report) {
 // "; drape coefficient 0.634, 9 folds" for a one-level solve of a scene with a support disc;
 // "; drape coefficient 0.634 ± 0.041 (mesh rule for a 1.9 cm bending length), 9 folds" where the
 // mesh rule applies (a finite-volume fabric on a lattice).
-std::string DrapeLine(const SolveReport& report, const std::optional<MeshAdvice>& advice) {
+std::string DrapeLine(const SolveReport& report) {
   if (!report.drape || !(report.drape->disc_radius > 0.0)) return "";
   char coefficient[32];
   std::snprintf(coefficient, sizeof coefficient, "%.3f", report.drape->coefficient.cusick);
   std::string text = std::string("; drape coefficient ") + coefficient;
-  if (advice) {
-    text += " ± " + RoundedNumber(advice->expected_error, 2) + " (mesh rule for a " +
-            LengthText(advice->bending_length, 2) + " bending length)";
+  if (const std::optional<double> error = ReportedDrapeCoefficientError(report)) {
+    assert(report.mesh_advice && "a one-level solve's error bar is the mesh rule's");
+    text += " ± " + RoundedNumber(*error, 2) + " (mesh rule for a " +
+            LengthText(report.mesh_advice->bending_length, 2) + " bending length)";
   }
   return text + ", " + std::to_string(report.drape->folds.count) + " folds";
 }
@@ -291,8 +293,7 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
     return kExitBadInput;
   }
   out << ResultLine(report.result, directory)
-      << (report.levels ? LevelsLine(*report.levels) : DrapeLine(report, AdviseMesh(scene, model)))
-      << std::endl;
+      << (report.levels ? LevelsLine(*report.levels) : DrapeLine(report)) << std::endl;
   return ExitStatus(report.result);
 }
 

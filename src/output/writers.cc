@@ -267,9 +267,9 @@ std::string UnitsObject() {
   return JsonObject(members, 1);
 }
 
-void WriteSummary(const Scene& scene, const Model& model, const RunResult& result,
-                  const std::optional<DrapeAnalysis>& drape, const LevelsReport* levels,
+void WriteSummary(const Scene& scene, const Model& model, const SolveReport& report,
                   const Provenance& provenance, std::ostream& out) {
+  const RunResult& result = report.result;
   const Certificate& certificate = result.certificate;
   const SolverSummary& summary = result.summary;
   std::vector<std::pair<std::string, double>> energy{{"total", certificate.energy}};
@@ -307,15 +307,13 @@ void WriteSummary(const Scene& scene, const Model& model, const RunResult& resul
   if (!certificate.unsound.empty()) {
     members.emplace_back("state_problem", JsonString(certificate.unsound));
   }
-  if (drape) AddDrapeMembers(*drape, &members);
-  if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
-    members.emplace_back("mesh_rule", MeshRuleJson(*advice));
-  }
+  if (report.drape) AddDrapeMembers(*report.drape, &members);
+  if (report.mesh_advice) members.emplace_back("mesh_rule", MeshRuleJson(*report.mesh_advice));
   AddContactMembers(scene, result, &members);
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics",
                        JsonMap(summary.statistics, 1, [](double v) { return JsonNumber(v); }));
-  if (levels) AddLevelsMembers(*levels, &members);
+  if (report.levels) AddLevelsMembers(*report.levels, &members);
   members.emplace_back("units", UnitsObject());
   AddProvenanceMembers(scene, provenance, &members);
   out << JsonObject(members, 0) << "\n";
@@ -351,8 +349,7 @@ int InContact(const RunResult& result, int node) {
 std::string SummaryJsonText(const Scene& scene, const Model& model, const SolveReport& report,
                             const Provenance& provenance) {
   std::ostringstream out;
-  WriteSummary(scene, model, report.result, report.drape, report.levels ? &*report.levels : nullptr,
-               provenance, out);
+  WriteSummary(scene, model, report, provenance, out);
   return out.str();
 }
 
@@ -690,8 +687,7 @@ std::vector<std::string> DrapeCaption(const OutputContext& context) {
   std::string line = "drape coefficient ";
   if (analysis.disc_radius > 0.0) {
     line += CoefficientText(analysis.coefficient.cusick);
-    if (const std::optional<double> error =
-            ReportedDrapeCoefficientError(context.scene, context.model, context.report)) {
+    if (const std::optional<double> error = ReportedDrapeCoefficientError(context.report)) {
       line += " ± " + RoundedNumber(*error, 2);
     }
     line += " (Cusick), ";
@@ -822,7 +818,7 @@ const std::vector<OutputFileWriter>& OutputFileWriters() {
        HasDrape,
        [](const OutputContext& c, std::ostream& out) {
          ShadowViewOptions view;
-         view.drape_coefficient_error = ReportedDrapeCoefficientError(c.scene, c.model, c.report);
+         view.drape_coefficient_error = ReportedDrapeCoefficientError(c.report);
          DrawShadowView(c.scene, c.model, *c.report.drape, out, view);
        }},
   };

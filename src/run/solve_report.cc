@@ -4,14 +4,13 @@
 #include <cmath>
 #include <utility>
 
-#include "src/analysis/mesh_rule.h"
-
 namespace drape {
 
 SolveReport ReportOf(const Scene& scene, const Model& model, RunResult result) {
   SolveReport report;
   report.result = std::move(result);
   if (HasDrapeCoefficient(scene, model)) report.drape = AnalyseDrape(scene, model);
+  report.mesh_advice = AdviseMesh(scene, model);
   return report;
 }
 
@@ -55,13 +54,10 @@ double ReportedDrapeCoefficient(const SolveReport& report) {
   return report.drape->disc_radius > 0.0 ? dc.cusick : dc.ratio;
 }
 
-std::optional<double> ReportedDrapeCoefficientError(const Scene& scene, const Model& model,
-                                                    const SolveReport& report) {
+std::optional<double> ReportedDrapeCoefficientError(const SolveReport& report) {
   if (!report.drape || !(report.drape->disc_radius > 0.0)) return std::nullopt;
   if (report.levels && report.levels->drape_error) return report.levels->drape_error->error;
-  if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
-    return advice->expected_error;
-  }
+  if (report.mesh_advice) return report.mesh_advice->expected_error;
   return std::nullopt;
 }
 

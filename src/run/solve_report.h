@@ -10,6 +10,7 @@
 #include <string>
 
 #include "src/analysis/drape_analysis.h"
+#include "src/analysis/mesh_rule.h"
 #include "src/model/model.h"
 #include "src/run/run.h"
 #include "src/run/run_levels.h"
@@ -21,6 +22,8 @@ struct SolveReport {
   RunResult result;
   std::optional<DrapeAnalysis> drape;  // when HasDrapeCoefficient(scene, model)
   std::optional<LevelsReport> levels;  // when solved on more than one level
+  // The mesh rule of a drape test on a lattice (AdviseMesh, src/analysis/mesh_rule.h).
+  std::optional<MeshAdvice> mesh_advice;
 };
 
 // How many nested lattices a solve takes: solver.levels where given; where not, 2 for a drape test
@@ -39,7 +42,7 @@ SolveReport SolveAndReport(const Scene& scene, Model& model, const std::string& 
                            bool automatic_levels = true);
 
 // The report of a state already solved (`result` from RunSolve at the model's positions): the
-// drape analysis added.
+// drape analysis and the mesh rule added.
 SolveReport ReportOf(const Scene& scene, const Model& model, RunResult result);
 
 // The drape coefficient `drape compare` and the fit compare: Cusick's with a support disc, else
@@ -49,8 +52,7 @@ double ReportedDrapeCoefficient(const SolveReport& report);
 // The discretisation error of a drape test's drape coefficient, as the stdout line gives it: the
 // levels' error bar (widened to the mesh rule's, src/analysis/mesh_rule.h) where the solve has
 // one, else the mesh rule's expected error; none for a scene without a support disc or rule.
-std::optional<double> ReportedDrapeCoefficientError(const Scene& scene, const Model& model,
-                                                    const SolveReport& report);
+std::optional<double> ReportedDrapeCoefficientError(const SolveReport& report);
 
 }  // namespace drape
 

@@ -79,7 +79,7 @@ std::vector<std::string> TaskCells(const SweepSpec& spec, int task) {
 std::vector<std::string> SolvedRow(const SweepSpec& spec, int task, const Scene& scene,
                                    const Model& model, const SolveReport& report, int warm_from) {
   const RunResult& result = report.result;
-  const std::optional<double> dc_error = ReportedDrapeCoefficientError(scene, model, report);
+  const std::optional<double> dc_error = ReportedDrapeCoefficientError(report);
   std::vector<std::string> cells = TaskCells(spec, task);
   const Stability& stability = result.stability;
   const bool stable_known = stability.computed && result.certificate.unsound.empty();
