@@ -64,6 +64,29 @@ TEST(MeshRule, WidensAnErrorBarSmallerThanItsExpectedError) {
   EXPECT_DOUBLE_EQ(*bar.mesh_rule_error, advice.expected_error);
 }
 
+// Coarser than the study's spacings the error stops growing (docs/drape-tester.md): the limp
+// fabric (c = 9.6 mm) on a 5 cm lattice, where K h / c would be 1.6, expects at most
+// kMostDrapeError and says the lattice resolves no fold; at 1 cm the rule is linear.
+TEST(MeshRule, AnErrorCappedWhereTheLatticeResolvesNoFold) {
+  const Scene limp = testing::LoadConfig("configs/fv/drape_tester_limp_30.yaml", {});
+  const auto linear = AdviseMesh(limp, BuildModel(limp));
+  ASSERT_TRUE(linear);
+  EXPECT_FALSE(linear->unresolved);
+  EXPECT_NEAR(linear->expected_error, kDrapeErrorPerSpacing * 0.01 / linear->bending_length, 1e-12);
+  const Scene coarse =
+      testing::LoadConfig("configs/fv/drape_tester_limp_30.yaml", {"mesh.spacing=0.05"});
+  const auto capped = AdviseMesh(coarse, BuildModel(coarse));
+  ASSERT_TRUE(capped);
+  EXPECT_GT(kDrapeErrorPerSpacing * 0.05 / capped->bending_length, kMostDrapeError);
+  EXPECT_TRUE(capped->unresolved);
+  EXPECT_TRUE(capped->coarse);
+  EXPECT_DOUBLE_EQ(capped->expected_error, kMostDrapeError);
+  const std::string warning = CoarseMeshWarning(*capped);
+  EXPECT_NE(warning.find("resolves none of its folds"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("off by as much as 0.5"), std::string::npos) << warning;
+  EXPECT_EQ(warning.find("first order"), std::string::npos) << warning;
+}
+
 // No advice where the rule does not apply: a spring fabric, a scene without a support disc.
 TEST(MeshRule, NoAdviceOutsideADrapeTestOfAFiniteVolumeFabric) {
   const Scene springs = testing::LoadConfig("configs/examples/hanging_sheet.yaml", {});

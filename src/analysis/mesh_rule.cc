@@ -24,7 +24,9 @@ std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
   MeshAdvice advice;
   advice.spacing = spacing;
   advice.bending_length = std::cbrt(rigidity / weight);
-  advice.expected_error = kDrapeErrorPerSpacing * spacing / advice.bending_length;
+  const double linear = kDrapeErrorPerSpacing * spacing / advice.bending_length;
+  advice.unresolved = linear >= kMostDrapeError;
+  advice.expected_error = std::min(linear, kMostDrapeError);
   advice.spacing_needed = kCoarseDrapeError * advice.bending_length / kDrapeErrorPerSpacing;
   advice.coarse = advice.expected_error > kCoarseDrapeError;
   return advice;
@@ -35,11 +37,19 @@ std::string CoarseMeshWarning(const MeshAdvice& advice) {
   std::snprintf(error, sizeof error, "%.2g", advice.expected_error);
   char limit[16];
   std::snprintf(limit, sizeof limit, "%.2g", kCoarseDrapeError);
-  return "mesh.spacing " + LengthText(advice.spacing, 2) +
-         " is coarse for this fabric (bending length " + LengthText(advice.bending_length, 2) +
-         " in its limper direction): expect its drape coefficient to be off by about " + error +
-         " (the error is first order in the spacing, docs/drape-tester.md); " +
-         LengthText(advice.spacing_needed, 2) + " or finer keeps it within " + limit;
+  const std::string head = "mesh.spacing " + LengthText(advice.spacing, 2) +
+                           " is coarse for this fabric (bending length " +
+                           LengthText(advice.bending_length, 2) + " in its limper direction): ";
+  const std::string body =
+      advice.unresolved
+          ? std::string(
+                "the lattice resolves none of its folds, and its drape coefficient may be "
+                "off by as much as ") +
+                error + " (docs/drape-tester.md)"
+          : std::string("expect its drape coefficient to be off by about ") + error +
+                " (the error is first order in the spacing, docs/drape-tester.md)";
+  return head + body + "; " + LengthText(advice.spacing_needed, 2) + " or finer keeps it within " +
+         limit;
 }
 
 void WidenToMeshRule(const MeshAdvice& advice, DrapeErrorBar* bar) {

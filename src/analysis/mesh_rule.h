@@ -9,6 +9,12 @@
 // 0.23, 0.18 at 1 cm, 5 mm, 2.6 mm against Richardson's limit from 5, 2.6 and 1.3 mm; cotton
 // (c = 18.8 mm) 0.23, 0.13, 0.06 against its 1.3 mm DC (0.630). kDrapeErrorPerSpacing takes the
 // largest, so the rule is conservative for the cotton.
+// The rule is linear over the study's spacings, up to about one bending length. Coarser, the
+// lattice does not resolve the folds at all, and the error stops growing: the same scenes at 1.5,
+// 2, 3 and 5 cm were off by 0.06–0.48 (limp 0.34, 0.30, 0.48, 0.42 at h/c 1.6–5.2; cotton 0.20,
+// 0.16, 0.06 at 1.1–2.7), where K h / c says up to 1.6, beyond the drape coefficient's whole
+// range. The expected error is therefore capped at kMostDrapeError: half that range, above every
+// error measured.
 #ifndef DRAPE_SRC_ANALYSIS_MESH_RULE_H_
 #define DRAPE_SRC_ANALYSIS_MESH_RULE_H_
 
@@ -23,13 +29,15 @@ namespace drape {
 
 constexpr double kDrapeErrorPerSpacing = 0.3;  // K
 constexpr double kCoarseDrapeError = 0.05;     // e above which a mesh is coarse for its fabric
+constexpr double kMostDrapeError = 0.5;        // the cap of e: a lattice that resolves no fold
 
 struct MeshAdvice {
   double spacing = 0.0;         // h, m
   double bending_length = 0.0;  // c, m
-  double expected_error = 0.0;  // K h / c
+  double expected_error = 0.0;  // K h / c, at most kMostDrapeError
   double spacing_needed = 0.0;  // the h that keeps e at kCoarseDrapeError, m
   bool coarse = false;          // expected_error > kCoarseDrapeError
+  bool unresolved = false;      // K h / c reached kMostDrapeError: the lattice resolves no fold
 };
 
 // The advice for a drape test (a scene with a drape coefficient and a support disc) on a lattice
@@ -41,7 +49,7 @@ std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model);
 // expect its drape coefficient to be off by about 0.16 ...".
 std::string CoarseMeshWarning(const MeshAdvice& advice);
 
-// The error bar made the larger of the levels' estimate and the rule's expected error, K h / c
+// The error bar made the larger of the levels' estimate and the rule's expected error
 // (`mesh_rule_error`): two levels outside the asymptotic range can change by a fraction of the
 // finest level's error. Where the rule is larger, `basis` names it and the levels' figure:
 // "mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018".
