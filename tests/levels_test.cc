@@ -76,16 +76,17 @@ TEST(Levels, DrapeErrorBarOnAFirstOrderCase) {
   const std::optional<DrapeErrorBar> richardson = DrapeErrorOf(three, DrapeExtrapolation(three));
   ASSERT_TRUE(richardson);
   EXPECT_DOUBLE_EQ(richardson->value, 0.575);
-  EXPECT_NEAR(richardson->error, 0.075, 1e-12);
-  EXPECT_EQ(richardson->basis, "Richardson, observed order 1.00");
+  EXPECT_NEAR(richardson->error(), 0.075, 1e-12);
+  EXPECT_EQ(richardson->basis(), "Richardson, observed order 1.00");
+  EXPECT_FALSE(richardson->mesh_rule_error);  // no rule here: the bar is the levels' alone
   EXPECT_FALSE(richardson->folds_differ);
   EXPECT_EQ(richardson->folds, (std::vector<int>{8, 9, 9}));
 
   const std::vector<LevelRecord> two = FirstOrderLevels({0.02, 0.01}, {9, 8});
   const std::optional<DrapeErrorBar> change = DrapeErrorOf(two, DrapeExtrapolation(two));
   ASSERT_TRUE(change);
-  EXPECT_NEAR(change->error, 0.075, 1e-12);
-  EXPECT_EQ(change->basis, "change from the 2 cm level");
+  EXPECT_NEAR(change->error(), 0.075, 1e-12);
+  EXPECT_EQ(change->basis(), "change from the 2 cm level");
   EXPECT_TRUE(change->folds_differ);
 }
 

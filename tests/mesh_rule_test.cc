@@ -43,24 +43,23 @@ TEST(MeshRule, AdviceForTheCottonFollowsFromItsBendingLength) {
 TEST(MeshRule, WidensAnErrorBarSmallerThanItsExpectedError) {
   DrapeErrorBar bar;
   bar.value = 0.481;
-  bar.error = bar.levels_error = 0.018;
-  bar.basis = bar.levels_basis = "change from the 2 cm level";
+  bar.levels_error = 0.018;
+  bar.levels_basis = "change from the 2 cm level";
   MeshAdvice advice;
   advice.bending_length = 0.0096;
   advice.spacing = 0.01;
   advice.expected_error = kDrapeErrorPerSpacing * advice.spacing / advice.bending_length;
   WidenToMeshRule(advice, &bar);
-  EXPECT_DOUBLE_EQ(bar.error, advice.expected_error);
-  EXPECT_EQ(bar.basis, "mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018");
+  EXPECT_DOUBLE_EQ(bar.error(), advice.expected_error);
+  EXPECT_EQ(bar.basis(), "mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018");
   EXPECT_DOUBLE_EQ(bar.levels_error, 0.018);
   ASSERT_TRUE(bar.mesh_rule_error);
   EXPECT_DOUBLE_EQ(*bar.mesh_rule_error, advice.expected_error);
 
-  bar.error = bar.levels_error = 0.5;
-  bar.basis = bar.levels_basis;
+  bar.levels_error = 0.5;
   WidenToMeshRule(advice, &bar);
-  EXPECT_DOUBLE_EQ(bar.error, 0.5);
-  EXPECT_EQ(bar.basis, "change from the 2 cm level");
+  EXPECT_DOUBLE_EQ(bar.error(), 0.5);
+  EXPECT_EQ(bar.basis(), "change from the 2 cm level");
   EXPECT_DOUBLE_EQ(*bar.mesh_rule_error, advice.expected_error);
 }
 

@@ -33,7 +33,7 @@ TEST(SolveReport, TheDrapeCoefficientsErrorBarIsTheLinesOne) {
   EXPECT_EQ(two.mesh_advice->expected_error, advice->expected_error);  // the report's own
   const std::optional<double> bar = ReportedDrapeCoefficientError(two);
   ASSERT_TRUE(bar);
-  EXPECT_EQ(*bar, two.levels->drape_error->error);
+  EXPECT_EQ(*bar, two.levels->drape_error->error());
   EXPECT_GE(*bar, advice->expected_error);
   EXPECT_GE(*bar, two.levels->drape_error->levels_error);
 

@@ -508,19 +508,27 @@ std::optional<DrapeErrorBar> DrapeErrorOf(const std::vector<LevelRecord>& levels
   bar.folds_differ = bar.folds[n - 1] != bar.folds[n - 2];
   for (const Extrapolation& e : extrapolations) {
     if (e.quantity != "drape_coefficient" || !e.available) continue;
-    bar.error = e.error_estimate;
+    bar.levels_error = e.error_estimate;
     char basis[64];
     std::snprintf(basis, sizeof basis, "Richardson, observed order %.2f", e.observed_order);
-    bar.basis = basis;
+    bar.levels_basis = basis;
     break;
   }
-  if (bar.basis.empty()) {
-    bar.error = std::abs(bar.value - *coarser.drape_coefficient);
-    bar.basis = "change from the " + LengthText(coarser.spacing, 3) + " level";
+  if (bar.levels_basis.empty()) {
+    bar.levels_error = std::abs(bar.value - *coarser.drape_coefficient);
+    bar.levels_basis = "change from the " + LengthText(coarser.spacing, 3) + " level";
   }
-  bar.levels_error = bar.error;
-  bar.levels_basis = bar.basis;
   return bar;
+}
+
+double DrapeErrorBar::error() const { return MeshRuleIsLarger() ? *mesh_rule_error : levels_error; }
+
+std::string DrapeErrorBar::basis() const {
+  if (!MeshRuleIsLarger()) return levels_basis;
+  char levels[24];
+  std::snprintf(levels, sizeof levels, " %.2g", levels_error);
+  return "mesh rule for a " + LengthText(mesh_rule_bending_length, 2) + " bending length; " +
+         levels_basis + levels;
 }
 
 }  // namespace drape

@@ -62,17 +62,24 @@ struct Extrapolation {
 //
 // Levels this coarse can be outside the asymptotic range (the 2 cm level of a limp fabric has 4
 // folds where 1 cm has 10, and their change, 0.018, is a seventeenth of the 1 cm error):
-// WidenToMeshRule (src/analysis/mesh_rule.h) then takes the refinement study's rule instead, and
-// `levels_error` keeps what the levels said.
+// WidenToMeshRule (src/analysis/mesh_rule.h) then adds the refinement study's rule, and the bar
+// is the larger of the two.
 struct DrapeErrorBar {
   double value = 0.0;         // the finest level's drape coefficient
-  double error = 0.0;         // the estimate of |DC(h) − DC(0)|: the larger of the two below
-  std::string basis;          // "Richardson, observed order 1.27" or "change from the 2 cm level"
   double levels_error = 0.0;  // the levels' own estimate
-  std::string levels_basis;   // its basis
-  std::optional<double> mesh_rule_error;  // the rule's K h / c, where it applies
+  std::string levels_basis;   // "Richardson, observed order 1.27" or "change from the 2 cm level"
+  // The mesh rule's expected error and the bending length it is for, where the rule applies.
+  std::optional<double> mesh_rule_error;
+  double mesh_rule_bending_length = 0.0;  // m
   std::vector<int> folds;                 // per level, coarsest first (0 where a level has none)
   bool folds_differ = false;              // the two finest levels' fold counts differ
+
+  // The estimate of |DC(h) − DC(0)|: the larger of the levels' and the rule's.
+  double error() const;
+  // Its basis: the levels', or where the rule is larger, the rule's and the levels' figure
+  // ("mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018").
+  std::string basis() const;
+  bool MeshRuleIsLarger() const { return mesh_rule_error && *mesh_rule_error > levels_error; }
 };
 
 struct LevelsReport {

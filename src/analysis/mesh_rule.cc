@@ -54,12 +54,7 @@ std::string CoarseMeshWarning(const MeshAdvice& advice) {
 
 void WidenToMeshRule(const MeshAdvice& advice, DrapeErrorBar* bar) {
   bar->mesh_rule_error = advice.expected_error;
-  if (!(advice.expected_error > bar->levels_error)) return;
-  char levels[24];
-  std::snprintf(levels, sizeof levels, " %.2g", bar->levels_error);
-  bar->error = advice.expected_error;
-  bar->basis = "mesh rule for a " + LengthText(advice.bending_length, 2) + " bending length; " +
-               bar->levels_basis + levels;
+  bar->mesh_rule_bending_length = advice.bending_length;
 }
 
 }  // namespace drape

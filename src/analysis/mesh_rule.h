@@ -49,10 +49,10 @@ std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model);
 // expect its drape coefficient to be off by about 0.16 ...".
 std::string CoarseMeshWarning(const MeshAdvice& advice);
 
-// The error bar made the larger of the levels' estimate and the rule's expected error
-// (`mesh_rule_error`): two levels outside the asymptotic range can change by a fraction of the
-// finest level's error. Where the rule is larger, `basis` names it and the levels' figure:
-// "mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018".
+// Adds the rule's expected error to the error bar (`mesh_rule_error`), which is then the larger of
+// the levels' estimate and the rule's: two levels outside the asymptotic range can change by a
+// fraction of the finest level's error. Where the rule is larger, the bar's basis() names it and
+// the levels' figure: "mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018".
 void WidenToMeshRule(const MeshAdvice& advice, DrapeErrorBar* bar);
 
 }  // namespace drape

@@ -149,8 +149,8 @@ int ExitStatus(const RunResult& result) {
 // "drape coefficient 0.622 ± 0.042 (change from the 5.2 mm level), 8 folds on both finest levels".
 std::string DrapeErrorText(const DrapeErrorBar& bar) {
   char text[160];
-  std::snprintf(text, sizeof text, "drape coefficient %.3f ± %.2g (%s), ", bar.value, bar.error,
-                bar.basis.c_str());
+  std::snprintf(text, sizeof text, "drape coefficient %.3f ± %.2g (%s), ", bar.value, bar.error(),
+                bar.basis().c_str());
   const int n = static_cast<int>(bar.folds.size());
   if (!bar.folds_differ) {
     return text + std::to_string(bar.folds[n - 1]) + " folds on both finest levels";

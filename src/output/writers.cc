@@ -171,8 +171,8 @@ void AddLevelsMembers(const LevelsReport& report,
       folds += (k ? ", " : "") + std::to_string(bar->folds[k]);
     }
     std::vector<std::pair<std::string, std::string>> fields = {
-        {"estimate", JsonNumber(bar->error)},
-        {"basis", JsonString(bar->basis)},
+        {"estimate", JsonNumber(bar->error())},
+        {"basis", JsonString(bar->basis())},
         {"levels_estimate", JsonNumber(bar->levels_error)},
         {"levels_basis", JsonString(bar->levels_basis)}};
     if (bar->mesh_rule_error) {

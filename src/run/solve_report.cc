@@ -56,7 +56,7 @@ double ReportedDrapeCoefficient(const SolveReport& report) {
 
 std::optional<double> ReportedDrapeCoefficientError(const SolveReport& report) {
   if (!report.drape || !(report.drape->disc_radius > 0.0)) return std::nullopt;
-  if (report.levels && report.levels->drape_error) return report.levels->drape_error->error;
+  if (report.levels && report.levels->drape_error) return report.levels->drape_error->error();
   if (report.mesh_advice) return report.mesh_advice->expected_error;
   return std::nullopt;
 }
