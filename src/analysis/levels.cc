@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "src/analysis/drape_analysis.h"
+#include "src/analysis/mesh_rule.h"
 #include "src/model/contact.h"
 #include "src/model/mesh.h"
 #include "src/scene/material_models.h"
@@ -527,8 +528,7 @@ std::string DrapeErrorBar::basis() const {
   if (!MeshRuleIsLarger()) return levels_basis;
   char levels[24];
   std::snprintf(levels, sizeof levels, " %.2g", levels_error);
-  return "mesh rule for a " + LengthText(mesh_rule_bending_length, 2) + " bending length; " +
-         levels_basis + levels;
+  return MeshRuleBasis(mesh_rule_bending_length) + "; " + levels_basis + levels;
 }
 
 }  // namespace drape

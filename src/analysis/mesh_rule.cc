@@ -32,6 +32,10 @@ std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
   return advice;
 }
 
+std::string MeshRuleBasis(double bending_length) {
+  return "mesh rule for a " + LengthText(bending_length, 2) + " bending length";
+}
+
 std::string CoarseMeshWarning(const MeshAdvice& advice) {
   char error[96];
   std::snprintf(error, sizeof error, "%.2g", advice.expected_error);

@@ -45,6 +45,9 @@ struct MeshAdvice {
 // for any other scene.
 std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model);
 
+// The basis every report gives the rule's figure: "mesh rule for a 9.6 mm bending length".
+std::string MeshRuleBasis(double bending_length);
+
 // "mesh.spacing 1 cm is coarse for this fabric (bending length 1.9 cm in its limper direction):
 // expect its drape coefficient to be off by about 0.16 ...".
 std::string CoarseMeshWarning(const MeshAdvice& advice);

@@ -196,8 +196,8 @@ std::string DrapeLine(const SolveReport& report) {
   std::string text = std::string("; drape coefficient ") + coefficient;
   if (const std::optional<double> error = ReportedDrapeCoefficientError(report)) {
     assert(report.mesh_advice && "a one-level solve's error bar is the mesh rule's");
-    text += " ± " + RoundedNumber(*error, 2) + " (mesh rule for a " +
-            LengthText(report.mesh_advice->bending_length, 2) + " bending length)";
+    text += " ± " + RoundedNumber(*error, 2) + " (" +
+            MeshRuleBasis(report.mesh_advice->bending_length) + ")";
   }
   return text + ", " + std::to_string(report.drape->folds.count) + " folds";
 }

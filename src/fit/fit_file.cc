@@ -537,8 +537,8 @@ std::string FitMeshWarning(const Scene& scene, const Model& model,
   return where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": " +
          where.key + ": the drape coefficient on the " + LengthText(advice->spacing, 2) +
          " mesh of " + scene.file + " carries a discretisation error of about " +
-         RoundedNumber(advice->expected_error, 2) + " (mesh rule for a " +
-         LengthText(advice->bending_length, 2) + " bending length, at the initial parameters), " +
+         RoundedNumber(advice->expected_error, 2) + " (" + MeshRuleBasis(advice->bending_length) +
+         ", at the initial parameters), " +
          RoundedNumber(advice->expected_error / measurement.sigma, 3) +
          " times the measurement's sigma " + RoundedNumber(measurement.sigma, 3) +
          ": the fitted parameters absorb it as a bias; " + LengthText(advice->spacing_needed, 2) +

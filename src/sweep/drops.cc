@@ -367,8 +367,8 @@ std::string DropsLine(const DropStatistics& s, const std::optional<MeshAdvice>& 
                 s.standard_deviation);
   text += figures;
   if (mesh_advice) {
-    text += ", discretisation error about " + RoundedNumber(mesh_advice->expected_error, 2) +
-            " (mesh rule for a " + LengthText(mesh_advice->bending_length, 2) + " bending length)";
+    text += ", discretisation error about " + RoundedNumber(mesh_advice->expected_error, 2) + " (" +
+            MeshRuleBasis(mesh_advice->bending_length) + ")";
   }
   text += "; folds";
   std::string histogram;
