@@ -111,7 +111,8 @@ TEST(FitFileTest, WarnsOfAMeshWhoseErrorExceedsTheMeasurementsSigma) {
            "bounds: [0.02, 0.5]}\nmeasurements:\n  - drape_coefficient: {value: 0.7, sigma: " +
            sigma + "}\n";
   };
-  const FitSpec coarse = LoadFitFile(WriteFitFolder("mesh_warning", fit_text("0.02")));
+  const std::vector<std::string> at_1cm = {"mesh.spacing=0.01"};  // coarse for the cotton
+  const FitSpec coarse = LoadFitFile(WriteFitFolder("mesh_warning", fit_text("0.02")), at_1cm);
   ASSERT_EQ(coarse.warnings.size(), 1u);
   const std::string& warning = coarse.warnings[0];
   EXPECT_NE(warning.find("fit.yaml:5:"), std::string::npos) << warning;
@@ -122,7 +123,12 @@ TEST(FitFileTest, WarnsOfAMeshWhoseErrorExceedsTheMeasurementsSigma) {
   EXPECT_NE(warning.find("about 0.16 (mesh rule for a 1.9 cm bending length"), std::string::npos)
       << warning;
   EXPECT_NE(warning.find("times the measurement's sigma 0.02"), std::string::npos) << warning;
-  EXPECT_TRUE(LoadFitFile(WriteFitFolder("mesh_covered", fit_text("0.2"))).warnings.empty());
+  EXPECT_TRUE(
+      LoadFitFile(WriteFitFolder("mesh_covered", fit_text("0.2")), at_1cm).warnings.empty());
+  // The shipped cotton's own 3 mm expects 0.048: a sigma of 0.05 covers it, not at 1 cm (0.16).
+  EXPECT_TRUE(LoadFitFile(WriteFitFolder("mesh_fine", fit_text("0.05"))).warnings.empty());
+  EXPECT_EQ(LoadFitFile(WriteFitFolder("mesh_fine_1cm", fit_text("0.05")), at_1cm).warnings.size(),
+            1u);
   EXPECT_TRUE(LoadFitFile(WriteFitFolder("mesh_no_disc", kFullFit)).warnings.empty());
 }
 

@@ -144,7 +144,7 @@ def test_a_scene_from_a_dict_is_the_files():
 
 
 def test_check_is_the_scene_as_data():
-    data = drape.load(config("fv/drape_tester_cotton_30.yaml")).check()
+    data = drape.load(config("fv/drape_tester_cotton_30.yaml"), set={"mesh.spacing": 0.01}).check()
     assert data["nodes"] == 709 and data["model"] == "finite_volume"
     assert data["material_si"]["density"] == (pytest.approx(0.12), "kg/m^2")
     assert sum(data["terms"].values()) == 5905

@@ -10,6 +10,17 @@
 
 namespace drape {
 
+namespace {
+
+// x rounded down to two significant digits (0.0031331 → 0.0031): a spacing a person can type,
+// which keeps the rule's error at or under its limit, as the unrounded one does.
+double RoundedDownToTwoDigits(double x) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
+  return std::floor(x / unit) * unit;
+}
+
+}  // namespace
+
 std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
   const MaterialSpec& material = scene.material;
   if (material.model != MaterialModel::kFiniteVolume ||
@@ -27,7 +38,8 @@ std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
   const double linear = kDrapeErrorPerSpacing * spacing / advice.bending_length;
   advice.unresolved = linear >= kMostDrapeError;
   advice.expected_error = std::min(linear, kMostDrapeError);
-  advice.spacing_needed = kCoarseDrapeError * advice.bending_length / kDrapeErrorPerSpacing;
+  advice.spacing_needed =
+      RoundedDownToTwoDigits(kCoarseDrapeError * advice.bending_length / kDrapeErrorPerSpacing);
   advice.coarse = advice.expected_error > kCoarseDrapeError;
   return advice;
 }
