@@ -125,7 +125,7 @@ TEST(FitFileTest, WarnsOfAMeshWhoseErrorExceedsTheMeasurementsSigma) {
   EXPECT_NE(warning.find("times the measurement's sigma 0.02"), std::string::npos) << warning;
   EXPECT_TRUE(
       LoadFitFile(WriteFitFolder("mesh_covered", fit_text("0.2")), at_1cm).warnings.empty());
-  // The shipped cotton's own 3 mm expects 0.048: a sigma of 0.05 covers it, not at 1 cm (0.16).
+  // The shipped cotton's own 3 mm expects 0.049: a sigma of 0.05 covers it, not at 1 cm (0.16).
   EXPECT_TRUE(LoadFitFile(WriteFitFolder("mesh_fine", fit_text("0.05"))).warnings.empty());
   EXPECT_EQ(LoadFitFile(WriteFitFolder("mesh_fine_1cm", fit_text("0.05")), at_1cm).warnings.size(),
             1u);
