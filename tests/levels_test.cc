@@ -113,9 +113,9 @@ TEST(Levels, CoarsenedScenesKeepTheSpecimen) {
   EXPECT_EQ(coarse.mesh.nodes[0], 21);
   EXPECT_EQ(coarse.mesh.nodes[1], 1);
   EXPECT_EQ(coarse.fixed[0].nodes.ids, (std::vector<int>{0, 1}));
-  const Scene disc =
-      CoarsenedScene(testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml"), 2);
-  EXPECT_DOUBLE_EQ(disc.mesh.spacing, 0.006);  // the scene's 3 mm, doubled
+  const Scene disc = CoarsenedScene(
+      testing::LoadConfig("configs/fv/drape_tester_cotton_30.yaml", {"mesh.spacing=0.01"}), 2);
+  EXPECT_DOUBLE_EQ(disc.mesh.spacing, 0.02);
   const Scene sheet = testing::LoadConfig("configs/hard/two_corner_sheet.yaml");
   const Scene coarse_sheet = CoarsenedScene(sheet, 2);
   EXPECT_EQ(coarse_sheet.mesh.nodes[0], 16);  // 30 nodes: 29 steps → 14.5 → 15
