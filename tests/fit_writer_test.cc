@@ -92,18 +92,6 @@ TEST(FitWriterTest, SensitivityUndoesTheScalingOfTheResiduals) {
   EXPECT_EQ(table[0].unit, "m");
 }
 
-TEST(FitWriterTest, AxisTicksAreRoundAndCoverTheRange) {
-  const std::vector<double> ticks = AxisTicks(-0.013, 0.25);  // a fifth: 0.0526 → step 0.1
-  ASSERT_EQ(ticks.size(), 3u);
-  EXPECT_EQ(ticks[0], 0.0);
-  EXPECT_NEAR(ticks[1], 0.1, 1e-15);
-  EXPECT_NEAR(ticks[2], 0.2, 1e-15);
-  const std::vector<double> fine = AxisTicks(1.0, 1.001);  // step 2e-4
-  ASSERT_EQ(fine.size(), 6u);
-  EXPECT_NEAR(fine.front(), 1.0, 1e-12);
-  EXPECT_NEAR(fine.back(), 1.001, 1e-12);
-}
-
 // fit.png says what was fitted: the caption holds each parameter's key, value and unit and the
 // final residual; the picture is as tall as its caption needs.
 TEST(FitWriterTest, FitPngShowsTheFittedValuesAndTheResidual) {

@@ -16,6 +16,7 @@
 
 #include "src/fit/fit_measurements.h"
 #include "src/output/atomic_file.h"
+#include "src/output/axis_ticks.h"
 #include "src/output/csv_field.h"
 #include "src/output/json.h"
 #include "src/output/png_text.h"
@@ -420,24 +421,6 @@ std::vector<Sensitivity> SensitivityTable(const FitProblem& problem, const FitRe
     }
   }
   return table;
-}
-
-std::vector<double> AxisTicks(double low, double high) {
-  assert(high > low && "an axis of positive length");
-  const double raw = (high - low) / 5.0;
-  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = 10.0 * decade;
-  for (double factor : {1.0, 2.0, 5.0}) {
-    if (factor * decade >= raw) {
-      step = factor * decade;
-      break;
-    }
-  }
-  std::vector<double> ticks;
-  for (double k = std::ceil(low / step - 1e-9); k * step <= high + 1e-9 * step; k += 1.0) {
-    ticks.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);  // no "-0"
-  }
-  return ticks;
 }
 
 FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result) {

@@ -36,10 +36,6 @@ struct FitPlotText {
 };
 FitPlotText FitPlotTextOf(const FitProblem& problem, const FitResult& result);
 
-// The tick values of an axis over [low, high] (high > low): the multiples in it of the smallest
-// step of 1, 2 or 5 × 10^k that is at least a fifth of the range (2 to 6 ticks).
-std::vector<double> AxisTicks(double low, double high);
-
 // `provenance` (src/output/provenance.h) goes into fit.json and the reports.
 void WriteFitOutputs(const FitProblem& problem, const FitResult& result,
                      const std::string& directory, const Provenance& provenance = {});

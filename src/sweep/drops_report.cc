@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "src/output/axis_ticks.h"
 #include "src/output/html_text.h"
 #include "src/output/json.h"
 #include "src/output/provenance.h"
@@ -84,22 +85,6 @@ struct Axes {
   double X(double x) const { return left + (x - x0) / (x1 - x0) * width; }
   double Y(double y) const { return top + height - (y - y0) / (y1 - y0) * height; }
 };
-
-// About `count` round ticks in [low, high].
-std::vector<double> Ticks(double low, double high, int count) {
-  const double raw = (high - low) / count;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = magnitude;
-  for (double m : {1.0, 2.0, 5.0, 10.0}) {
-    step = m * magnitude;
-    if (step >= raw) break;
-  }
-  std::vector<double> ticks;
-  for (double t = std::ceil(low / step - 1e-9) * step; t <= high + 1e-9 * step; t += step) {
-    ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
-  }
-  return ticks;
-}
 
 std::string TickText(double value) {
   char text[32];
@@ -223,7 +208,7 @@ std::string DrapeCoefficientHistogram(const DropsSummary& summary) {
       "Drape coefficients of the counted drops; the mean in red, ± one standard "
       "deviation shaded",
       "drape coefficient", centres, counts, bar,
-      Ticks(centres.front() - bar, centres.back() + bar, 5), s.mean, s.standard_deviation);
+      AxisTicks(centres.front() - bar, centres.back() + bar, 5), s.mean, s.standard_deviation);
 }
 
 std::string FoldsHistogram(const DropsSummary& summary) {
@@ -245,8 +230,8 @@ std::string ProfilesFigure(const Scene& scene, const DropsSummary& summary) {
   Axes a{0.0, 360.0, 100 * TestDiscRadius(scene) * 0.95, 100 * TestSpecimenRadius(scene) * 1.02};
   a.width = 640;
   Svg svg(740, 320, "Radial profiles r(θ) of the drops' shadows around the disc's centre");
-  DrawAxes(&svg, a, "θ (degrees from the warp, x)", "r (cm)", Ticks(0, 360, 8),
-           Ticks(a.y0, a.y1, 5));
+  DrawAxes(&svg, a, "θ (degrees from the warp, x)", "r (cm)", AxisTicks(0, 360, 8),
+           AxisTicks(a.y0, a.y1, 5));
   svg.Line(a.X(0), a.Y(100 * TestDiscRadius(scene)), a.X(360), a.Y(100 * TestDiscRadius(scene)),
            "stroke:#555;stroke-dasharray:6,4");
   svg.Line(a.X(0), a.Y(100 * TestSpecimenRadius(scene)), a.X(360),
