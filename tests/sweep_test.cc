@@ -13,9 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "src/analysis/mesh_rule.h"
 #include "src/cli/cli.h"
 #include "src/output/json.h"
 #include "src/output/version.h"
+#include "src/scene/scene_loader.h"
 #include "src/solvers/solver.h"
 #include "tests/sweep_test_support.h"
 
@@ -291,6 +293,37 @@ TEST(Sweep, AnInterruptedSweepSavesNothingItDidNotFinish) {
   EXPECT_FALSE(rest.interrupted);
   EXPECT_EQ(rest.solved, 4);
   EXPECT_EQ(rest.skipped, 0);
+}
+
+// A sweep on a mesh coarser than its fabric's mesh rule says so once, before its first solve, as
+// `drape solve` does: for task 0, or for the --only task. The interrupt keeps the tasks unsolved.
+TEST(Sweep, WarnsOnceOfAMeshCoarserThanTheFabricNeeds) {
+  const std::string folder = SweepTempDir("coarse_mesh");
+  const SweepSpec spec = LoadSweepFile(WriteSweep(folder, R"(scene: base.yaml
+grid:
+  mesh.spacing: [0.05, 0.003]
+)"));
+  const auto warnings = [&](std::optional<int> only, const std::string& out) {
+    std::ostringstream log;
+    RequestInterrupt();
+    SweepInto(spec, folder + out, only, &log);
+    ClearInterrupt();
+    std::vector<std::string> found;
+    std::istringstream lines(log.str());
+    for (std::string line; std::getline(lines, line);) {
+      if (line.find("warning") != std::string::npos) found.push_back(line);
+    }
+    return found;
+  };
+  const std::vector<std::string> all = warnings(std::nullopt, "/all");
+  ASSERT_EQ(all.size(), 1u);
+  const Scene coarse = LoadScene(spec.scene_file, TaskOverrides(spec, 0));
+  const std::optional<MeshAdvice> advice = AdviseMesh(coarse, BuildModel(coarse));
+  ASSERT_TRUE(advice && advice->coarse);
+  EXPECT_EQ(all[0].rfind("drape sweep: warning: task 0: " + CoarseMeshWarning(*advice), 0), 0u)
+      << all[0];
+  // The cotton's rule asks for 3 mm or finer: task 1 alone is not warned of.
+  EXPECT_TRUE(warnings(1, "/only1").empty());
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "src/analysis/mesh_rule.h"
 #include "src/model/model.h"
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
@@ -374,6 +375,24 @@ void CountRows(const SweepTable& table, SweepSummary* summary) {
   }
 }
 
+// The mesh rule's warning (src/analysis/mesh_rule.h) for task 0, or --only's task, as `drape
+// solve` gives it, once: a sweep's tasks usually share their mesh, and asking for each would build
+// every task's model once more. Every row's drape_coefficient_error includes the rule's error. A
+// task whose model cannot be built says so in its row, not here.
+void WarnOfACoarseMesh(const SweepSpec& spec, const SweepOptions& options, std::ostream& log) {
+  const int task = options.only ? *options.only : 0;
+  std::optional<MeshAdvice> advice;
+  try {
+    const Scene scene = LoadScene(spec.scene_file, TaskOverrides(spec, task));
+    advice = AdviseMesh(scene, BuildModel(scene));
+  } catch (const InputError&) {
+    return;
+  }
+  if (!advice || !advice->coarse) return;
+  log << "drape sweep: warning: task " << task << ": " << CoarseMeshWarning(*advice)
+      << " (each task's drape_coefficient_error in sweep.csv includes the rule's error)\n";
+}
+
 }  // namespace
 
 std::vector<std::string> SweepColumns(const SweepSpec& spec) {
@@ -440,7 +459,10 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   summary.tasks = static_cast<int>(spec.tasks.size());
   // Before any solve (it leaves no folder behind), by the coordinator alone: on every rank, one
   // rank's removal of the folder it made raced another's probe of it.
-  if (Processes().IsCoordinator()) CheckOutputWritable(summary.directory);
+  if (Processes().IsCoordinator()) {
+    CheckOutputWritable(summary.directory);
+    if (!spec.tasks.empty()) WarnOfACoarseMesh(spec, options, log);
+  }
   fs::create_directories(summary.directory);  // sweep.csv is written even if no task finishes
   const Context context{spec, summary.directory, options.command_line, CsvLine(SweepColumns(spec)),
                         TaskIdentities(spec)};
