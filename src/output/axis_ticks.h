@@ -8,8 +8,8 @@
 namespace drape {
 
 // The ticks over [low, high] (high > low, count ≥ 1): the multiples in it of the smallest step of
-// 1, 2 or 5 × 10^k that is at least (high − low)/count, so about `count` of them, never more
-// than 2·count + 1. Zero is written as 0, never −0.
+// 1, 2 or 5 × 10^k that is at least (high − low)/count: the step is at most 2.5 times that, so
+// there are count/2.5 to count + 1 ticks (2 to 6 for the default 5). Zero is 0, never −0.
 std::vector<double> AxisTicks(double low, double high, int count = 5);
 
 }  // namespace drape
