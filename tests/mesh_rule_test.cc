@@ -151,6 +151,28 @@ TEST(MeshRule, NoAdviceOutsideADrapeTestOfAFiniteVolumeFabric) {
   EXPECT_FALSE(AdviseMesh(springs, BuildModel(springs)));
   const Scene table = testing::LoadConfig("configs/fv/square_table.yaml", {});
   EXPECT_FALSE(AdviseMesh(table, BuildModel(table)));
+  EXPECT_FALSE(AdviseMeshOfScene(springs));
+  EXPECT_FALSE(AdviseMeshOfScene(table));
+}
+
+// The scene alone gives the advice the scene and its model give (a sweep asks it of every task
+// before any model is built): the limp fabric and the cotton, coarse and fine.
+TEST(MeshRule, TheSceneAloneGivesTheSameAdvice) {
+  for (const auto& [file, spacing] : std::vector<std::pair<std::string, std::string>>{
+           {"configs/fv/drape_tester_limp_30.yaml", "0.01"},
+           {"configs/fv/drape_tester_cotton_30.yaml", "0.01"},
+           {"configs/fv/drape_tester_cotton_30.yaml", "0.003"}}) {
+    const Scene scene = testing::LoadConfig(file, {"mesh.spacing=" + spacing});
+    const auto with_model = AdviseMesh(scene, BuildModel(scene));
+    const auto alone = AdviseMeshOfScene(scene);
+    ASSERT_TRUE(with_model && alone) << file;
+    EXPECT_EQ(alone->spacing, with_model->spacing) << file;
+    EXPECT_EQ(alone->bending_length, with_model->bending_length) << file;
+    EXPECT_EQ(alone->expected_error, with_model->expected_error) << file;
+    EXPECT_EQ(alone->spacing_needed, with_model->spacing_needed) << file;
+    EXPECT_EQ(alone->coarse, with_model->coarse) << file;
+    EXPECT_EQ(alone->unresolved, with_model->unresolved) << file;
+  }
 }
 
 }  // namespace

@@ -22,12 +22,17 @@ double RoundedDownToTwoDigits(double x) {
 }  // namespace
 
 std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
+  if (!HasDrapeCoefficient(scene, model)) return std::nullopt;
+  return AdviseMeshOfScene(scene);
+}
+
+std::optional<MeshAdvice> AdviseMeshOfScene(const Scene& scene) {
   const MaterialSpec& material = scene.material;
   if (material.model != MaterialModel::kFiniteVolume ||
       material.mass_kind != MaterialSpec::MassKind::kDensity || !scene.loads.gravity) {
     return std::nullopt;
   }
-  if (!HasDrapeCoefficient(scene, model) || !(DiscRadius(scene) > 0.0)) return std::nullopt;
+  if (!(DiscRadius(scene) > 0.0)) return std::nullopt;
   const double spacing = LatticeSpacing(scene.mesh);
   const double rigidity = std::min(material.finite_volume.D_warp, material.finite_volume.D_weft);
   const double weight = material.mass_value * scene.loads.gravity->norm();  // N/m²

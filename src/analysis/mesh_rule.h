@@ -46,6 +46,11 @@ struct MeshAdvice {
 // for any other scene.
 std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model);
 
+// The same advice from the scene alone, before its model is built (a sweep's tasks before their
+// solves): a lattice always has the triangles a drape coefficient needs, which is all AdviseMesh
+// asks of the model.
+std::optional<MeshAdvice> AdviseMeshOfScene(const Scene& scene);
+
 // The basis every report gives the rule's figure: "mesh rule for a 9.6 mm bending length".
 std::string MeshRuleBasis(double bending_length);
 

@@ -375,22 +375,46 @@ void CountRows(const SweepTable& table, SweepSummary* summary) {
   }
 }
 
-// The mesh rule's warning (src/analysis/mesh_rule.h) for task 0, or --only's task, as `drape
-// solve` gives it, once: a sweep's tasks usually share their mesh, and asking for each would build
-// every task's model once more. Every row's drape_coefficient_error includes the rule's error. A
-// task whose model cannot be built says so in its row, not here.
-void WarnOfACoarseMesh(const SweepSpec& spec, const SweepOptions& options, std::ostream& log) {
-  const int task = options.only ? *options.only : 0;
-  std::optional<MeshAdvice> advice;
-  try {
-    const Scene scene = LoadScene(spec.scene_file, TaskOverrides(spec, task));
-    advice = AdviseMesh(scene, BuildModel(scene));
-  } catch (const InputError&) {
-    return;
+// "3, 7, 12": the first eight tasks of a list, then "…".
+std::string TaskNumbers(const std::vector<int>& tasks) {
+  constexpr size_t kNamed = 8;
+  std::string text;
+  for (size_t k = 0; k < std::min(tasks.size(), kNamed); ++k) {
+    text += (k ? ", " : "") + std::to_string(tasks[k]);
   }
-  if (!advice || !advice->coarse) return;
-  log << "drape sweep: warning: task " << task << ": " << CoarseMeshWarning(*advice)
-      << " (each task's drape_coefficient_error in sweep.csv includes the rule's error)\n";
+  return tasks.size() > kNamed ? text + ", …" : text;
+}
+
+// The mesh rule's warning (src/analysis/mesh_rule.h), once, for the tasks this run may solve (all,
+// or --only's) whose mesh is coarser than their fabric needs: how many, which, and `drape solve`'s
+// warning for the one expected to be furthest off. From each task's scene alone (no model built):
+// a sweep over the bending or the density moves the spacing its fabrics need. A scene that cannot
+// be loaded is its task's failed row, not a warning.
+void WarnOfCoarseMeshes(const SweepSpec& spec, const SweepOptions& options, std::ostream& log) {
+  std::vector<int> tasks, coarse;
+  for (int task = 0; task < static_cast<int>(spec.tasks.size()); ++task) {
+    if (!options.only || task == *options.only) tasks.push_back(task);
+  }
+  std::optional<MeshAdvice> worst;
+  int worst_task = -1;
+  for (const int task : tasks) {
+    std::optional<MeshAdvice> advice;
+    try {
+      advice = AdviseMeshOfScene(LoadScene(spec.scene_file, TaskOverrides(spec, task)));
+    } catch (const InputError&) {
+      continue;
+    }
+    if (!advice || !advice->coarse) continue;
+    coarse.push_back(task);
+    if (!worst || advice->expected_error > worst->expected_error) worst = advice, worst_task = task;
+  }
+  if (coarse.empty()) return;
+  log << "drape sweep: warning: " << coarse.size() << " of " << tasks.size()
+      << (tasks.size() == 1 ? " task" : " tasks")
+      << " on a mesh coarser than their fabric's mesh rule (task"
+      << (coarse.size() == 1 ? " " : "s ") << TaskNumbers(coarse)
+      << "; each row's drape_coefficient_error includes the rule's error); the furthest off, task "
+      << worst_task << ": " << CoarseMeshWarning(*worst) << "\n";
 }
 
 }  // namespace
@@ -461,7 +485,7 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   // rank's removal of the folder it made raced another's probe of it.
   if (Processes().IsCoordinator()) {
     CheckOutputWritable(summary.directory);
-    if (!spec.tasks.empty()) WarnOfACoarseMesh(spec, options, log);
+    WarnOfCoarseMeshes(spec, options, log);
   }
   fs::create_directories(summary.directory);  // sweep.csv is written even if no task finishes
   const Context context{spec, summary.directory, options.command_line, CsvLine(SweepColumns(spec)),
