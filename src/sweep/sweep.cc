@@ -385,8 +385,8 @@ std::string TaskNumbers(const std::vector<int>& tasks) {
   return tasks.size() > kNamed ? text + ", …" : text;
 }
 
-// The mesh rule's warning (src/analysis/mesh_rule.h), once, for the tasks this run may solve (all,
-// or --only's) whose mesh is coarser than their fabric needs: how many, which, and `drape solve`'s
+// The mesh rule's warning (src/analysis/mesh_rule.h), once, for the sweep's tasks (with --only,
+// that task) whose mesh is coarser than their fabric needs: how many, which, and `drape solve`'s
 // warning for the one expected to be furthest off. From each task's scene alone (no model built):
 // a sweep over the bending or the density moves the spacing its fabrics need. A scene that cannot
 // be loaded is its task's failed row, not a warning.
