@@ -341,7 +341,7 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   summary.outlines = outlines;
   summary.statistics = ComputeDropStatistics(summary.drops);
   const Scene first = DropScene(scene, 1);
-  summary.mesh_advice = AdviseMesh(first, BuildModel(first));
+  summary.mesh_advice = AdviseMeshOfScene(first);  // no model built for the rule alone
   const fs::path directory(options.directory);
   WriteAtomically(directory / "drops.csv", [&](std::ostream& out) {
     out << DropsCsvHeader() << '\n';
