@@ -337,6 +337,10 @@ struct SolveRun {
   int all_iterations = 0;  // with solver.levels, of every level (iterations: the finest's)
   double wall = 0, assembly = 0, factorization = 0, factorizations = 0, peak_mb = 0;
   double drape_coefficient = -1, energy = 0;
+  // summary.json's contact: nodes under a support disk, the fabric's edges through it (-1: not
+  // in the summary, as before edge contact) and how far inside its rim the farthest one is (m).
+  int nodes_under_disk = -1, edges_through_disk = -1;
+  double under_disk_inside = 0;
 };
 
 // Runs `binary solve` on the scene file with its overrides in a child process with the time limit
@@ -396,6 +400,13 @@ SolveRun RunDrape(const std::string& binary, const std::string& file,
     run.drape_coefficient = summary["drape_coefficient"].as<double>();
   if (summary["drape"] && summary["drape"]["folds"])
     run.folds = summary["drape"]["folds"].as<int>();
+  if (const YAML::Node contact = summary["contact"]) {
+    if (contact["nodes_under_disk"]) run.nodes_under_disk = contact["nodes_under_disk"].as<int>();
+    if (contact["edges_through_disk"])
+      run.edges_through_disk = contact["edges_through_disk"].as<int>();
+    if (contact["under_disk_inside_m"])
+      run.under_disk_inside = contact["under_disk_inside_m"].as<double>();
+  }
   const YAML::Node statistics = summary["statistics"];
   auto statistic = [&statistics](const char* key) {
     return statistics && statistics[key] ? statistics[key].as<double>() : 0.0;
@@ -505,6 +516,35 @@ AssemblyProbe ProbeAssembly(const BenchScene& scene, int repeats) {
   return probe;
 }
 
+// ProbeAssembly in a child process, so that this process stays small: a solve's child inherits
+// its parent's peak resident memory through fork and exec (ru_maxrss), and the 1.3 mm probe's
+// 150 MB would otherwise be every later solve's peak. Nodes 0 where the child failed.
+AssemblyProbe ProbeAssemblyInChild(const BenchScene& scene, int repeats) {
+  AssemblyProbe probe;
+  int pipe_ends[2];
+  if (pipe(pipe_ends) != 0) return probe;
+  std::fflush(stdout);  // or the child's copy of the buffer is printed twice
+  const pid_t child = fork();
+  if (child == 0) {
+    close(pipe_ends[0]);
+    AssemblyProbe result;
+    try {
+      result = ProbeAssembly(scene, repeats);
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "%s: %s\n", scene.name.c_str(), error.what());
+      _exit(2);
+    }
+    _exit(write(pipe_ends[1], &result, sizeof result) == sizeof result ? 0 : 3);
+  }
+  close(pipe_ends[1]);
+  const bool read_ok = read(pipe_ends[0], &probe, sizeof probe) == sizeof probe;
+  close(pipe_ends[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  if (!read_ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0) probe = AssemblyProbe();
+  return probe;
+}
+
 std::string Ratio(double mine, double theirs, bool lower_bound) {
   if (!(mine > 0.0) || !(theirs > 0.0)) return "";
   char text[32];
@@ -519,10 +559,21 @@ std::string OrBlank(double value, const char* format) {
   return text;
 }
 
+// "nodes, edges (mm inside the rim)" of the fabric under a support disk; blank without one.
+std::string UnderDiskText(const SolveRun& run) {
+  if (run.nodes_under_disk < 0) return "";
+  std::string text = std::to_string(run.nodes_under_disk) + ", " +
+                     (run.edges_through_disk < 0 ? std::string("not counted")
+                                                 : std::to_string(run.edges_through_disk));
+  if (run.under_disk_inside > 0.0)
+    text += " (" + OrBlank(1e3 * run.under_disk_inside, "%.1f") + " mm)";
+  return text;
+}
+
 void PrintRun(const BenchScene& scene, const char* binary, const SolveRun& run,
               const std::string& ratios) {
   if (!run.ran) {
-    std::printf("| %s | %s | failed to run | | | | | | | | | | %.0f | |\n", scene.name.c_str(),
+    std::printf("| %s | %s | failed to run | | | | | | | | | | | %.0f | |\n", scene.name.c_str(),
                 binary, run.peak_mb);
     return;
   }
@@ -534,14 +585,15 @@ void PrintRun(const BenchScene& scene, const char* binary, const SolveRun& run,
            ? " (" + std::to_string(run.all_iterations) + " all levels)"
            : "");
   std::printf(
-      "| %s | %s | %d | %s | %.2f%s | %s | %.6e | %.4f | %.4f | %s | %s | %s | %.0f | %s |\n",
+      "| %s | %s | %d | %s | %.2f%s | %s | %.6e | %.4f | %.4f | %s | %s | %s | %s | %.0f | %s |\n",
       scene.name.c_str(), binary, run.nodes, iterations_text.c_str(), run.wall,
       run.converged ? "" : (run.capped ? " (cap)" : " (not converged)"),
       run.converged ? "yes" : "no", run.energy, run.assembly / iterations, per_factorization,
       OrBlank(per_factorization > 0 ? run.assembly / iterations / per_factorization : -1, "%.2f")
           .c_str(),
       OrBlank(run.drape_coefficient, "%.4f").c_str(),
-      run.folds >= 0 ? std::to_string(run.folds).c_str() : "", run.peak_mb, ratios.c_str());
+      run.folds >= 0 ? std::to_string(run.folds).c_str() : "", UnderDiskText(run).c_str(),
+      run.peak_mb, ratios.c_str());
   std::fflush(stdout);
 }
 
@@ -597,7 +649,11 @@ int ScenesMain(int argc, char** argv) {
       "| ÷ factorisation, CPU | local derivatives CPU µs per node: this path | nested Jets "
       "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& scene : scenes) {
-    const AssemblyProbe probe = ProbeAssembly(scene, repeats);
+    const AssemblyProbe probe = ProbeAssemblyInChild(scene, repeats);
+    if (probe.nodes == 0 || !(probe.factorization > 0.0)) {
+      std::printf("| %s | failed | | | | | | | | | | |\n", scene.name.c_str());
+      continue;
+    }
     std::printf("| %s | %d | %d | %.4f | %.4f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n",
                 scene.name.c_str(), probe.nodes, probe.terms, probe.assembly, probe.factorization,
                 probe.assembly / probe.factorization, probe.assembly_cpu / probe.factorization_cpu,
@@ -610,8 +666,9 @@ int ScenesMain(int argc, char** argv) {
   std::printf(
       "\nSolves (`drape solve`, cap %.0f s%s):\n\n| scene | binary | nodes | iterations | wall s | "
       "converged | energy J | assembly s/iteration | s/factorisation | assembly ÷ factorisation | "
-      "drape coefficient | folds | peak MB | baseline ÷ this: time, iterations |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+      "drape coefficient | folds | under the disc: nodes, edges through (mm inside the rim) | "
+      "peak MB | baseline ÷ this: time, iterations |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
       cap,
       baseline.empty() ? ""
                        : (", baseline cap " + std::to_string(int(baseline_cap)) + " s").c_str());
