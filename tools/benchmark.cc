@@ -30,6 +30,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -103,26 +104,29 @@ Row RunOne(const std::string& scene_file, int n, const std::string& solver, doub
   return row;
 }
 
-// Runs in a child; returns the row and the child's peak resident memory (MB).
-bool RunInChild(const std::string& scene_file, int n, const std::string& solver, double cap,
-                Row* row, double* peak_mb) {
+// Runs work() in a forked child and passes its result (trivially copyable) back through a pipe;
+// the child's peak resident memory (MB) into *peak_mb. False where the child threw, failed or
+// wrote no result.
+template <typename Result, typename Work>
+bool RunInChild(Work work, Result* result, double* peak_mb) {
+  static_assert(std::is_trivially_copyable_v<Result>);
   int pipe_ends[2];
   if (pipe(pipe_ends) != 0) return false;
+  std::fflush(stdout);  // or the child's copy of the buffer is printed twice
   const pid_t child = fork();
   if (child == 0) {
     close(pipe_ends[0]);
-    Row result;
+    Result child_result;
     try {
-      result = RunOne(scene_file, n, solver, cap);
+      child_result = work();
     } catch (const std::exception& error) {
       std::fprintf(stderr, "%s\n", error.what());
       _exit(2);
     }
-    if (write(pipe_ends[1], &result, sizeof result) != sizeof result) _exit(3);
-    _exit(0);
+    _exit(write(pipe_ends[1], &child_result, sizeof child_result) == sizeof child_result ? 0 : 3);
   }
   close(pipe_ends[1]);
-  const bool read_ok = read(pipe_ends[0], row, sizeof *row) == sizeof *row;
+  const bool read_ok = read(pipe_ends[0], result, sizeof *result) == sizeof *result;
   close(pipe_ends[0]);
   int status = 0;
   struct rusage usage {};
@@ -223,7 +227,8 @@ int SolverComparisonMain(int argc, char** argv) {
       Row row;
       double peak_mb = 0.0;
       const double limit = solver == "newton" ? newton_cap : cap;
-      const bool ok = RunInChild(scene_file, n, solver, limit, &row, &peak_mb);
+      const bool ok =
+          RunInChild([&] { return RunOne(scene_file, n, solver, limit); }, &row, &peak_mb);
       if (!ok) {
         std::printf("| %d | %d | %s | failed to run | | | | | %.0f | |\n", n * n, 3 * n * n - 6,
                     solver.c_str(), peak_mb);
@@ -521,27 +526,10 @@ AssemblyProbe ProbeAssembly(const BenchScene& scene, int repeats) {
 // 150 MB would otherwise be every later solve's peak. Nodes 0 where the child failed.
 AssemblyProbe ProbeAssemblyInChild(const BenchScene& scene, int repeats) {
   AssemblyProbe probe;
-  int pipe_ends[2];
-  if (pipe(pipe_ends) != 0) return probe;
-  std::fflush(stdout);  // or the child's copy of the buffer is printed twice
-  const pid_t child = fork();
-  if (child == 0) {
-    close(pipe_ends[0]);
-    AssemblyProbe result;
-    try {
-      result = ProbeAssembly(scene, repeats);
-    } catch (const std::exception& error) {
-      std::fprintf(stderr, "%s: %s\n", scene.name.c_str(), error.what());
-      _exit(2);
-    }
-    _exit(write(pipe_ends[1], &result, sizeof result) == sizeof result ? 0 : 3);
+  double peak_mb = 0.0;
+  if (!RunInChild([&] { return ProbeAssembly(scene, repeats); }, &probe, &peak_mb)) {
+    probe = AssemblyProbe();
   }
-  close(pipe_ends[1]);
-  const bool read_ok = read(pipe_ends[0], &probe, sizeof probe) == sizeof probe;
-  close(pipe_ends[0]);
-  int status = 0;
-  waitpid(child, &status, 0);
-  if (!read_ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0) probe = AssemblyProbe();
   return probe;
 }
 
