@@ -28,6 +28,7 @@
 #include "costs/fv_bending_friction_step.h"
 #include "costs/fv_membrane.h"
 #include "costs/fv_shear_friction.h"
+#include "costs/fv_twist.h"
 #include "costs/plane_contact.h"
 #include "costs/pressure_potential.h"
 #include "costs/sphere_contact.h"
@@ -219,6 +220,18 @@ struct Sample<FvBending> {
 };
 
 template <>
+struct Sample<FvTwist> {
+  static constexpr const char* kName = "FvTwist";
+  // D66 A = 1e-5 N·m × 1.2e-4 m² on a 1 cm × 1.2 cm cell.
+  static FvTwist Make() { return FvTwist::Create(1.2e-9, 0.01, 0.012); }
+  static std::vector<std::vector<double>> States() {  // nodes P, E, N, C
+    return {{0.0003, 0.0002, 0.0004, 0.0101, 0.0005, -0.0003, 0.0012, 0.0118, 0.0009, 0.0098,
+             0.0123, 0.0021},
+            {0, 0, 0, 0.01, 0, 0, 0, 0.012, 0, 0.01, 0.012, 0}};
+  }
+};
+
+template <>
 struct Sample<FvBendingFriction> {
   static constexpr const char* kName = "FvBendingFriction";
   // δ = 5 1/m: the generic state's κ ≈ 50 1/m is far beyond it, the flat state at its kink.
@@ -275,7 +288,7 @@ using Functors =
                      ConstantForcePotential, PressurePotential, SphereContact, PlaneContact,
                      DiskContact, EdgeContact<DiskContact>, CylinderContact, BoxContact, FvMembrane,
                      FvBendingEdge, FvBending, FvBendingFriction, FvBendingFrictionStep,
-                     FvShearFriction>;
+                     FvShearFriction, FvTwist>;
 
 class FunctorNames {
  public:

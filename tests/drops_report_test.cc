@@ -75,7 +75,7 @@ TEST(DropsReport, ItsPicturesAreThereAndLabelled) {
   // The outlines of the two drops that have one; the failed drop is a row, its state escaped.
   EXPECT_EQ(Occurrences(page, "<polygon"), 2);
   EXPECT_NE(page.find("failed: &lt;no model&gt;"), std::string::npos);
-  EXPECT_EQ(Occurrences(page, "<tr><td>"), 3 + 9);  // 3 drops, 9 material values
+  EXPECT_EQ(Occurrences(page, "<tr><td>"), 3 + 10);  // 3 drops, 10 material values
   EXPECT_NE(page.find("3 drops (2 at a stable minimum, counted): drape coefficient 0.505"),
             std::string::npos);
   EXPECT_EQ(page.find("nan"), std::string::npos);

@@ -57,5 +57,45 @@ TEST(FabricParameters, PeirceAndKesAgreeOnTheSameFabric) {
               1e-12 * KesBendingRigidity(b));
 }
 
+// The bias conversion inverts the orthotropic plate's compliance at 45°: a plate of D1, D2, D12,
+// D66 has 1/B45 = (S11 + S22 + 2 S12 + 1/D66)/4 with S = [D1 D12; D12 D2]⁻¹ (fabric_parameters.h).
+// Written out for D1 = 1e-5, D2 = 0.6e-5, D12 = 0.2e-5, D66 = 0.3e-5 N·m: Δ = 6e-11 − 4e-12 =
+// 5.6e-11, S11 = 0.6e-5/Δ = 107142.86, S22 = 1e-5/Δ = 178571.43, S12 = −0.2e-5/Δ = −35714.29,
+// 1/D66 = 333333.33, so 4/B45 = 547619.05 and B45 = 7.304348e-6 N·m.
+TEST(FabricParameters, BiasTorsionalRigidityInvertsThePlatesCompliance) {
+  const double b45 = 4.0 / 547619.05;
+  EXPECT_NEAR(b45, 7.304348e-6, 1e-12);
+  EXPECT_NEAR(BiasTorsionalRigidity(b45, 1e-5, 0.6e-5, 0.2e-5), 0.3e-5, 1e-12);
+}
+
+// An isotropic plate (D1 = D2 = D, D12 = ν D, D66 = D (1 − ν)/2) bends alike in every direction: a
+// strip free across has the rigidity D (1 − ν²) (S11 = 1/(D (1 − ν²))) at 0° and at 45° alike,
+// which converts back to D66 = D (1 − ν)/2 for any ν.
+TEST(FabricParameters, AnIsotropicPlatesBiasGivesItsTorsionalRigidity) {
+  const double d = 2e-5;
+  for (double nu : {0.0, 0.3}) {
+    const double strip = d * (1 - nu * nu);
+    EXPECT_NEAR(BiasTorsionalRigidity(strip, d, d, nu * d), d * (1 - nu) / 2, 1e-12 * d) << nu;
+  }
+}
+
+// No finite D66 makes the bias stiffer than 4/(S11 + S22 + 2 S12), with D12 = 0 twice the harmonic
+// mean of D1 and D2: for D1 = 1e-5 and D2 = 0.6e-5 N·m, 4/(1e5 + 166666.67) = 1.5e-5 N·m. At that
+// bound D66 is infinite, beyond it negative: the loader refuses both.
+TEST(FabricParameters, ABiasStifferThanAnyTwistAllowsIsRecognised) {
+  EXPECT_NEAR(StiffestBiasRigidity(1e-5, 0.6e-5, 0.0), 1.5e-5, 1e-15);
+  EXPECT_LT(BiasTorsionalRigidity(1.6e-5, 1e-5, 0.6e-5, 0.0), 0.0);
+  EXPECT_GT(BiasTorsionalRigidity(1.4e-5, 1e-5, 0.6e-5, 0.0), 0.0);
+}
+
+// The default: D66 = √(D_warp D_weft)/3; for a balanced fabric (D1 = D2 = D) a bias rigidity of
+// 4/(2/D + 3/D) = 0.8 D, the median bias ratio it is taken from.
+TEST(FabricParameters, TheDefaultTwistGivesTheMedianBiasRatio) {
+  EXPECT_NEAR(DefaultTorsionalRigidity(1e-5, 0.64e-5), 0.8e-5 / 3.0, 1e-18);
+  const double d = 1e-5, d66 = DefaultTorsionalRigidity(d, d);
+  const double b45 = 4.0 / (2.0 / d + 1.0 / d66);
+  EXPECT_NEAR(b45 / d, 0.8, 1e-12);
+}
+
 }  // namespace
 }  // namespace drape

@@ -231,7 +231,7 @@ TEST(FvScenes, DrapeCoefficientIsInvariantUnderGeometricScaling) {
   scaled.mesh.spacing *= lambda;
   scaled.mesh.origin *= lambda;
   FiniteVolumeSpec& fv = scaled.material.finite_volume;
-  for (double* d : {&fv.D_warp, &fv.D_weft, &fv.D_12}) *d *= lambda * lambda * lambda;
+  for (double* d : {&fv.D_warp, &fv.D_weft, &fv.D_12, &fv.D_66}) *d *= lambda * lambda * lambda;
   for (double* e : {&fv.E_warp, &fv.E_weft, &fv.G}) *e *= lambda;
   for (FixedSpec& fixed : scaled.fixed) {
     fixed.nodes.center *= lambda;

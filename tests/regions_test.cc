@@ -211,6 +211,22 @@ TEST(Regions, TheLaterRegionWinsKeyByKey) {
   EXPECT_DOUBLE_EQ(model.mass[9], 0.2 / 0.12 * model.mass[17]);  // (0, 1) and (8, 1): same area
 }
 
+// The default twist D_66 = √(D_warp D_weft)/3 (docs/reference.md, "Twist") follows a region's own
+// bending rigidities; a region's D_66 is its own.
+TEST(Regions, ARegionKeepsTheDefaultTwistRuleOrGivesItsOwn) {
+  const Scene scene = SceneFromText(Plate("regions:\n"
+                                          "  - nodes: {column: 0}\n"
+                                          "    D_warp: 6.0e-6\n"
+                                          "  - nodes: {column: 1}\n"
+                                          "    D_warp: 6.0e-6\n"
+                                          "    D_66: 1.0e-7\n"),
+                                    "f");
+  const NodeMaterials materials = AssignMaterials(scene, BuildMesh(scene.mesh));
+  EXPECT_NEAR(materials.at(2).finite_volume.D_66, std::sqrt(2.0e-6 * 1.5e-6) / 3, 1e-20);
+  EXPECT_NEAR(materials.at(0).finite_volume.D_66, std::sqrt(6.0e-6 * 1.5e-6) / 3, 1e-20);
+  EXPECT_EQ(materials.at(1).finite_volume.D_66, 1.0e-7);
+}
+
 // A region that gives the scene's own values changes nothing: the same terms and the same
 // energy, bitwise.
 TEST(Regions, ARegionOfTheScenesOwnValuesChangesNothing) {

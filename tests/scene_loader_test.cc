@@ -870,8 +870,47 @@ TEST_F(SceneLoaderTest, BendingLengthUsesTheMaterialDensity) {
   EXPECT_NEAR(fv.E_warp, 1225.831, 1e-3);  // 50 gf/cm = 49.03325 N/m over 0.04
 }
 
+// The twist (docs/reference.md, "Twist"). Without a bias measurement, D_66 = √(D_warp D_weft)/3
+// = 1e-5/3 N·m. A bias bending length of 2 cm at ρ = 0.12 kg/m² is B45 = 9.414384e-6 N·m (as
+// above), and kes.B_bias = 9.414384e-6 / 9.80665e-5 = 0.096 gf·cm²/cm is the same rigidity; with
+// D_warp = D_weft = 1e-5 N·m both give D_66 = 1/(4/B45 − 2/1e-5) = 1/(424881.76 − 200000) =
+// 4.446781e-6 N·m.
+TEST_F(SceneLoaderTest, TwistIsGivenMeasuredOnTheBiasOrTheDefault) {
+  const FiniteVolumeSpec plain = Load(kFiniteVolume).material.finite_volume;
+  EXPECT_NEAR(plain.D_66, 1e-5 / 3, 1e-18);
+  EXPECT_EQ(plain.twist_source, FiniteVolumeSpec::TwistSource::kDefault);
+  const FiniteVolumeSpec given =
+      Load(FiniteVolumeWith(10, 10, "    D_weft: 1.0e-5\n    D_66: 2.5e-6")).material.finite_volume;
+  EXPECT_DOUBLE_EQ(given.D_66, 2.5e-6);
+  EXPECT_EQ(given.twist_source, FiniteVolumeSpec::TwistSource::kGiven);
+  for (const char* bias : {"    bending_length: {bias: 2.0}", "    kes: {B_bias: 0.096}"}) {
+    const FiniteVolumeSpec measured =
+        Load(FiniteVolumeWith(10, 10, std::string("    D_weft: 1.0e-5\n") + bias))
+            .material.finite_volume;
+    EXPECT_NEAR(measured.D_66, 4.446781e-6, 1e-12) << bias;
+    EXPECT_EQ(measured.twist_source, FiniteVolumeSpec::TwistSource::kBias) << bias;
+  }
+}
+
 std::vector<BadScene> FabricParameterBadScenes() {
   return {
+      {"TwistGivenAndMeasured",
+       FiniteVolumeWith(10, 10, "    D_weft: 1.0e-5\n    D_66: 1e-6\n    kes: {B_bias: 0.05}"),
+       "12:19: material.finite_volume.kes.B_bias",
+       "give D_66 in one way only: 'D_66' is given too"},
+      {"TwistMeasuredTwice",
+       FiniteVolumeWith(10, 10,
+                        "    D_weft: 1.0e-5\n    kes: {B_bias: 0.05}\n    bending_length: {bias: "
+                        "2}"),
+       "12:28: material.finite_volume.bending_length.bias",
+       "give D_66 in one way only: 'kes.B_bias' is given too"},
+      {"BiasStifferThanAnyTwist",
+       FiniteVolumeWith(10, 10, "    D_weft: 1.0e-5\n    kes: {B_bias: 0.3}"),
+       "11:19: material.finite_volume.kes.B_bias",
+       "is too stiff for the warp's and weft's (1e-05 and 1e-05 N·m): no torsional rigidity gives "
+       "it; an orthotropic plate's bias is below 2e-05 N·m"},
+      {"NegativeTwist", FiniteVolumeWith(10, 10, "    D_weft: 1.0e-5\n    D_66: -1e-6"),
+       "11:11: material.finite_volume.D_66", "must not be negative"},
       {"DirectAndKesBending",
        FiniteVolumeWith(10, 10, "    D_weft: 1.0e-5\n    kes: {B_weft: 0.1}"),
        "11:19: material.finite_volume.kes.B_weft",

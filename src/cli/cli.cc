@@ -297,6 +297,27 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
   return ExitStatus(report.result);
 }
 
+// drape check's line on the torsional rigidity: the value and where it came from.
+std::string TwistLine(const FiniteVolumeSpec& fv) {
+  std::string why;
+  switch (fv.twist_source) {
+    case FiniteVolumeSpec::TwistSource::kGiven:
+      why = "given as D_66";
+      break;
+    case FiniteVolumeSpec::TwistSource::kBias:
+      why = "from the bias bending rigidity, by the orthotropic plate's compliance at 45°";
+      break;
+    case FiniteVolumeSpec::TwistSource::kDefault:
+      why =
+          "the default √(D_warp·D_weft)/3, from bias bending measured on ten fabrics (Wang et "
+          "al. 2011; 0.21-0.55 √(D_warp·D_weft) among them); a bias measurement, kes.B_bias or "
+          "bending_length.bias, replaces it";
+      break;
+  }
+  return "twist: D_66 " + RoundedNumber(fv.D_66, 6) + " N*m, " + why +
+         " (docs/reference.md, \"Twist\")\n";
+}
+
 int Check(const Arguments& arguments, std::ostream& out) {
   const Scene scene = LoadScene(arguments.file, arguments.overrides);
   RequireKnownSolver(scene);
@@ -319,6 +340,7 @@ int Check(const Arguments& arguments, std::ostream& out) {
         << (value.unit == "1" ? "" : " " + value.unit) << ";";
   }
   out << "\n";
+  if (material.model == MaterialModel::kFiniteVolume) out << TwistLine(material.finite_volume);
   if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model); advice && advice->coarse) {
     out << "warning: " << CoarseMeshWarning(*advice) << "\n";
   }

@@ -9,6 +9,7 @@
 
 #include "costs/fv_bending.h"
 #include "costs/fv_membrane.h"
+#include "costs/fv_twist.h"
 #include "src/derivatives/psd_projection.h"
 #include "src/derivatives/second_order.h"
 #include "src/derivatives/small_product.h"
@@ -292,6 +293,56 @@ bool FastHessian<FvMembrane>::Evaluate(const FvMembrane& functor, const double* 
       TriangleNodes::AddRelativeToCentre(MembraneRelative(j, h_q, m), 1, 0, 2, &stand_in);
       return stand_in;
     });
+  }
+  return finite;
+}
+
+// FvTwist (nodes P, E, N, C = 0..3): the functor evaluated in SecondOrder<9> numbers over the
+// relative positions x_a − x_P (a = E, N, C), P's coordinates held constant; then E = ½ r²,
+// ∇E = r ∇r, ∇²E = ∇r ∇rᵀ + r ∇²r, mapped back to the nodes (P's rows are minus the sum of the
+// others'). Stand-in where ∇²E is indefinite: ∇r ∇rᵀ (fast_hessian.h, "Projection").
+bool FastHessian<FvTwist>::Evaluate(const FvTwist& functor, const double* const* x, double* energy,
+                                    double* gradient, double* hessian,
+                                    StagedProjection* projection) {
+  using Number = SecondOrder<9>;
+  Number nodes[4][3];
+  for (int c = 0; c < 3; ++c) nodes[0][c] = Number(x[0][c]);
+  for (int a = 1; a < 4; ++a) {
+    for (int c = 0; c < 3; ++c) nodes[a][c] = Number::Variable(x[a][c], 3 * (a - 1) + c);
+  }
+  Number r;
+  if (!functor(nodes[0], nodes[1], nodes[2], nodes[3], &r)) return false;
+  const Eigen::Map<const Eigen::Matrix<double, 9, 1>> dr(r.gradient);
+  Eigen::Matrix<double, 9, 9> gauss_newton = dr * dr.transpose();
+  Eigen::Matrix<double, 9, 9> h_relative = gauss_newton;
+  for (int i = 0; i < 9; ++i) {
+    for (int j = 0; j < 9; ++j) h_relative(i, j) += r.value * r.Hessian(i, j);
+  }
+  // Back to the nodes: x_a − x_P for a = 1..3, so node P's rows and columns are minus the sums.
+  const auto to_nodes = [](const Eigen::Matrix<double, 9, 9>& relative, double* out) {
+    Eigen::Map<NodeDerivatives<4>::Hessian> h(out);
+    h.setZero();
+    h.bottomRightCorner<9, 9>() = relative;
+    for (int a = 0; a < 3; ++a) {
+      const Eigen::Matrix<double, 3, 9> rows = relative.middleRows<3>(3 * a);
+      h.block<3, 9>(0, 3).noalias() -= rows;
+      h.block<9, 3>(3, 0).noalias() -= rows.transpose();
+    }
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) h.block<3, 3>(0, 0) += relative.block<3, 3>(3 * a, 3 * b);
+    }
+  };
+  Eigen::Map<Eigen::Matrix<double, 12, 1>> full_gradient(gradient);
+  const Eigen::Matrix<double, 9, 1> g_relative = r.value * dr;
+  full_gradient << -(g_relative.segment<3>(0) + g_relative.segment<3>(3) +
+                     g_relative.segment<3>(6)),
+      g_relative;
+  to_nodes(h_relative, hessian);
+  *energy = 0.5 * r.value * r.value;
+  const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h_relative.allFinite();
+  if (finite && projection) {  // H where semidefinite, else ∇r ∇rᵀ (fast_hessian.h, "Projection")
+    projection->changed = !IsSemidefinite(h_relative);
+    to_nodes(projection->changed ? gauss_newton : h_relative, projection->hessian);
   }
   return finite;
 }

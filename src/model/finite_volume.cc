@@ -1,5 +1,6 @@
 #include "src/model/finite_volume.h"
 
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <map>
@@ -11,6 +12,7 @@
 #include "costs/fv_bending_friction_step.h"
 #include "costs/fv_membrane.h"
 #include "costs/fv_shear_friction.h"
+#include "costs/fv_twist.h"
 #include "costs/spring_stretch.h"
 
 namespace drape {
@@ -38,6 +40,7 @@ void CheckMaterial(const FiniteVolumeSpec& spec) {
   if (spec.D_12 * spec.D_12 > spec.D_warp * spec.D_weft) {
     fail("D_12^2 must not exceed D_warp * D_weft (the bending energy would be indefinite)");
   }
+  if (!(spec.D_66 >= 0.0)) fail("D_66 must not be negative");
 }
 
 // Node ids by lattice position: (i, j) in [0, nu) × [0, nv) from Mesh::grid_index, -1 where the
@@ -247,6 +250,39 @@ void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, cons
   }
 }
 
+// The lattice's cells (i, j)–(i+1, j+1) whose four corners are all nodes, each as its corners
+// P, E, N, C (fv_twist.h).
+std::vector<std::array<int, 4>> LatticeCells(const Lattice& lattice, const Mesh& mesh) {
+  std::vector<std::array<int, 4>> cells;
+  for (int p = 0; p < static_cast<int>(mesh.nodes.size()); ++p) {
+    const int i = mesh.grid_index[p][0], j = mesh.grid_index[p][1];
+    const std::array<int, 4> cell = {p, lattice.At(i + 1, j), lattice.At(i, j + 1),
+                                     lattice.At(i + 1, j + 1)};
+    if (cell[1] >= 0 && cell[2] >= 0 && cell[3] >= 0) cells.push_back(cell);
+  }
+  return cells;
+}
+
+// The twist of every cell (costs/fv_twist.h). Each node's control volume is shared equally among
+// the cells it is a corner of (four inside the fabric, fewer at its edge), so that the cells'
+// areas add up to the fabric's (the control volumes' sum) and each part of the area carries the D66
+// of its own node's material: weight = Σ_corners D66_k A_k / (cells at k).
+void AddTwist(const NodeSpecs& of_node, const Lattice& lattice, const Mesh& mesh, Model* model) {
+  const std::vector<std::array<int, 4>> cells = LatticeCells(lattice, mesh);
+  std::vector<int> cells_at(mesh.nodes.size(), 0);
+  for (const auto& cell : cells) {
+    for (int node : cell) ++cells_at[node];
+  }
+  for (const auto& [p, e, n, c] : cells) {
+    double weight = 0.0;
+    for (int node : {p, e, n, c}) weight += of_node[node]->D_66 * mesh.area[node] / cells_at[node];
+    if (!(weight > 0.0)) continue;
+    model->terms.push_back(
+        MakeTerm("fv_twist", {p, e, n, c},
+                 FvTwist::Create(weight, RestDistance(mesh, p, e), RestDistance(mesh, p, n))));
+  }
+}
+
 }  // namespace
 
 void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model,
@@ -274,6 +310,7 @@ void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, c
     AddBending(*of_node[p], mesh, p, nb, friction_reference, model);
     AddMembrane(rigidities.at(of_node[p]), *of_node[p], mesh, p, nb, friction_reference, model);
   }
+  AddTwist(of_node, lattice, mesh, model);
 }
 
 }  // namespace drape

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "src/model/selection.h"
+#include "src/scene/fabric_parameters.h"
 #include "src/scene/material_keys.h"
 
 namespace drape {
@@ -13,9 +14,17 @@ void ApplyRegion(const RegionSpec& region, MaterialSpec* material) {
   material->where = region.where;
   if (region.density) material->mass_value = *region.density;
   if (!region.finite_volume.empty()) material->finite_volume.where = region.where;
+  FiniteVolumeSpec& fv = material->finite_volume;
   for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
     const auto given = region.finite_volume.find(key.key);
-    if (given != region.finite_volume.end()) material->finite_volume.*key.member = given->second;
+    if (given != region.finite_volume.end()) fv.*key.member = given->second;
+  }
+  // A fabric whose twist follows the default rule keeps following it in a region that changes its
+  // bending rigidities (src/scene/fabric_parameters.h); a region's own D_66 is given.
+  if (region.finite_volume.count("D_66") > 0) {
+    fv.twist_source = FiniteVolumeSpec::TwistSource::kGiven;
+  } else if (fv.twist_source == FiniteVolumeSpec::TwistSource::kDefault) {
+    fv.D_66 = DefaultTorsionalRigidity(fv.D_warp, fv.D_weft);
   }
   SpringsSpec& springs = material->springs;
   if (region.structural.present) springs.structural = region.structural;

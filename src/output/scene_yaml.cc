@@ -212,6 +212,11 @@ void WriteFiniteVolume(const FiniteVolumeSpec& fv, YAML::Emitter& out) {
   out << YAML::Value << YAML::BeginMap;
   for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
     if (!key.reported_when_zero && fv.*key.member == 0.0) continue;
+    // A default twist is left to the rule, which a region re-applies to its own rigidities.
+    if (key.member == &FiniteVolumeSpec::D_66 &&
+        fv.twist_source == FiniteVolumeSpec::TwistSource::kDefault) {
+      continue;
+    }
     Key(out, key.key);
     Number(out, fv.*key.member);
   }

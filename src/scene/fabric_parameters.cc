@@ -39,4 +39,21 @@ double PeirceBendingRigidity(double bending_length_cm, double density_kg_per_m2)
   return density_kg_per_m2 * kStandardGravity * c * c * c;
 }
 
+// S11 + S22 + 2 S12 of the bending compliance (fabric_parameters.h): (D1 + D2 − 2 D12) / Δ.
+double PrincipalCompliance(double d_warp, double d_weft, double d_12) {
+  return (d_warp + d_weft - 2.0 * d_12) / (d_warp * d_weft - d_12 * d_12);
+}
+
+double BiasTorsionalRigidity(double b45, double d_warp, double d_weft, double d_12) {
+  return 1.0 / (4.0 / b45 - PrincipalCompliance(d_warp, d_weft, d_12));
+}
+
+double StiffestBiasRigidity(double d_warp, double d_weft, double d_12) {
+  return 4.0 / PrincipalCompliance(d_warp, d_weft, d_12);
+}
+
+double DefaultTorsionalRigidity(double d_warp, double d_weft) {
+  return kDefaultTwistRatio * std::sqrt(d_warp * d_weft);
+}
+
 }  // namespace drape

@@ -55,6 +55,31 @@ double KesTensileRigidity(double emt_percent, double lt,
 // with the scene's gravity).
 double PeirceBendingRigidity(double bending_length_cm, double density_kg_per_m2);
 
+// The torsional rigidity D66 (N·m) from the bending rigidity B45 (N·m) of a strip cut at 45° to
+// the warp, by the orthotropic plate's bending compliance in direction θ (S. G. Lekhnitskii,
+// Anisotropic Plates, 1968, §11; the form Cooper 1960 and Lloyd, Shanahan & Konopasek 1978 used
+// for fabrics): a narrow strip bent by a moment M along θ, free across, has
+//   1/B(θ) = S11 cos⁴θ + (2 S12 + S66) cos²θ sin²θ + S22 sin⁴θ,
+// S = D⁻¹ the compliance of [D1 D12 0; D12 D2 0; 0 0 D66] (S11 = D2/Δ, S22 = D1/Δ, S12 = −D12/Δ,
+// Δ = D1 D2 − D12², S66 = 1/D66), so at θ = 45°
+//   D66 = 1 / (4/B45 − S11 − S22 − 2 S12)   (with D12 = 0: 1 / (4/B45 − 1/D1 − 1/D2)).
+// Returns a value ≤ 0 or infinite where no finite D66 ≥ 0 gives that B45: the bias must be less
+// stiff than 4 / (S11 + S22 + 2 S12) (with D12 = 0, twice the harmonic mean of D1 and D2).
+double BiasTorsionalRigidity(double b45, double d_warp, double d_weft, double d_12);
+
+// The largest B45 that a finite D66 gives (BiasTorsionalRigidity's bound), N·m.
+double StiffestBiasRigidity(double d_warp, double d_weft, double d_12);
+
+// The default D66 where a fabric gives no bias measurement (docs/reference.md, "Twist"):
+//   D66 = √(D_warp D_weft) / 3,
+// from the bias bending rigidities measured on ten garment fabrics (Wang, O'Brien & Ramamoorthi,
+// "Data-driven elastic models for cloth", ACM Trans. Graphics 30(4), 71, 2011): B45/√(B1 B2) =
+// 0.58–1.05, median 0.8, which BiasTorsionalRigidity turns into D66/√(B1 B2) = 0.21–0.55, median
+// 0.35 (0.26–0.53 on their five wovens). An isotropic plate with ν = 0 (Huber's rule) would have
+// D/2, the bias as stiff as warp and weft; measured fabrics are softer at the bias.
+double DefaultTorsionalRigidity(double d_warp, double d_weft);
+constexpr double kDefaultTwistRatio = 1.0 / 3.0;  // D66 / √(D_warp D_weft)
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_SCENE_FABRIC_PARAMETERS_H_

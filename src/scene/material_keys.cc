@@ -13,6 +13,7 @@ const std::vector<FiniteVolumeKey>& FiniteVolumeKeys() {
       {"D_warp", &FiniteVolumeSpec::D_warp, Range::kNonNegative, "N*m"},
       {"D_weft", &FiniteVolumeSpec::D_weft, Range::kNonNegative, "N*m"},
       {"D_12", &FiniteVolumeSpec::D_12, Range::kAny, "N*m"},
+      {"D_66", &FiniteVolumeSpec::D_66, Range::kNonNegative, "N*m"},
       {"bending_friction_warp", &FiniteVolumeSpec::bending_friction_warp, Range::kNonNegative, "N",
        false},
       {"bending_friction_weft", &FiniteVolumeSpec::bending_friction_weft, Range::kNonNegative, "N",

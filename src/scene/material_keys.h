@@ -1,5 +1,5 @@
 // The finite-volume material's SI values by key (E_warp, E_weft, nu_warp, nu_weft, G, D_warp,
-// D_weft, D_12, bending_friction_warp, bending_friction_weft): one list for the loader
+// D_weft, D_12, D_66, bending_friction_warp, bending_friction_weft): one list for the loader
 // (material.finite_volume and regions), the scene.yaml writer and the regions' overrides
 // (src/model/regions.h).
 #ifndef DRAPE_SRC_SCENE_MATERIAL_KEYS_H_

@@ -112,6 +112,13 @@ struct FiniteVolumeSpec {
   bool present = false;
   double E_warp = 0, E_weft = 0, nu_warp = 0, nu_weft = 0, G = 0;  // N/m
   double D_warp = 0, D_weft = 0, D_12 = 0;                         // N·m
+  // The torsional rigidity D66 (N·m; M12 = D66 · 2κ12, costs/fv_twist.h) and how the loader set
+  // it: given as D_66, converted from a bias bending measurement (kes.B_bias,
+  // bending_length.bias), or the default rule of src/scene/fabric_parameters.h from D_warp and
+  // D_weft, which a region that changes those re-applies (src/model/regions.cc).
+  double D_66 = 0;
+  enum class TwistSource { kGiven, kBias, kDefault };
+  TwistSource twist_source = TwistSource::kGiven;
   // Fibre friction in bending (KES 2HB/2), N·m/m = N: 0 is the elastic fabric
   // (costs/fv_bending_friction.h), and δ, the curvature (1/m) below which its kink is smoothed.
   double bending_friction_warp = 0, bending_friction_weft = 0;

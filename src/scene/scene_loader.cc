@@ -9,6 +9,7 @@
 #include <cassert>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -330,10 +331,9 @@ struct ParameterWay {
   std::function<double(const YamlValue&)> convert;
 };
 
-double ReadParameter(const YamlMap& map, const std::string& key, const std::string& unit,
-                     const std::vector<ParameterWay>& measured) {
-  std::vector<ParameterWay> ways = {{key, map.Find(key), ReadPositive}};
-  ways.insert(ways.end(), measured.begin(), measured.end());
+// The one way of `ways` (named for `key`) that is given, or null; two given is an error, located
+// at the second.
+const ParameterWay* GivenWay(const std::string& key, const std::vector<ParameterWay>& ways) {
   const ParameterWay* given = nullptr;
   for (const auto& way : ways) {
     if (!way.value) continue;
@@ -342,6 +342,14 @@ double ReadParameter(const YamlMap& map, const std::string& key, const std::stri
     }
     given = &way;
   }
+  return given;
+}
+
+double ReadParameter(const YamlMap& map, const std::string& key, const std::string& unit,
+                     const std::vector<ParameterWay>& measured) {
+  std::vector<ParameterWay> ways = {{key, map.Find(key), ReadPositive}};
+  ways.insert(ways.end(), measured.begin(), measured.end());
+  const ParameterWay* given = GivenWay(key, ways);
   if (!given) {
     std::string names;
     for (size_t k = 1; k < ways.size(); ++k) names += " or " + ways[k].key;
@@ -413,6 +421,29 @@ void ReadFrictions(const YamlMap& map, const std::optional<YamlMap>& kes, Finite
   }
 }
 
+// A rigidity in a message: four significant digits.
+std::string ShortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+// The torsional rigidity: D_66 (N·m, ≥ 0) or one of the bias measurements `bias` converts, at most
+// one of them; else the default rule (src/scene/fabric_parameters.h).
+void ReadTwist(const YamlMap& map, const std::vector<ParameterWay>& bias, FiniteVolumeSpec* fv) {
+  std::vector<ParameterWay> ways = {{"D_66", map.Find("D_66"), ReadNonNegative}};
+  ways.insert(ways.end(), bias.begin(), bias.end());
+  const ParameterWay* given = GivenWay("D_66", ways);
+  if (!given) {
+    fv->D_66 = DefaultTorsionalRigidity(fv->D_warp, fv->D_weft);
+    fv->twist_source = FiniteVolumeSpec::TwistSource::kDefault;
+    return;
+  }
+  fv->D_66 = given->convert(*given->value);
+  fv->twist_source = given == &ways.front() ? FiniteVolumeSpec::TwistSource::kGiven
+                                            : FiniteVolumeSpec::TwistSource::kBias;
+}
+
 FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& density) {
   const YamlMap map(value, SchemaKeys("material.finite_volume"));
   FiniteVolumeSpec fv;
@@ -467,6 +498,23 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
       Fail(*v, "D_12² must be less than D_warp * D_weft (else the bending energy is not positive)");
     }
   }
+  const auto bias_rigidity = [&fv](double b45, const YamlValue& v) {
+    const double d66 = BiasTorsionalRigidity(b45, fv.D_warp, fv.D_weft, fv.D_12);
+    if (!(d66 > 0.0) || !std::isfinite(d66)) {
+      Fail(v, "a bias bending rigidity of " + ShortNumber(b45) +
+                  " N·m is too stiff for the warp's and weft's (" + ShortNumber(fv.D_warp) +
+                  " and " + ShortNumber(fv.D_weft) + " N·m): no torsional rigidity gives it; " +
+                  "an orthotropic plate's bias is below " +
+                  ShortNumber(StiffestBiasRigidity(fv.D_warp, fv.D_weft, fv.D_12)) + " N·m");
+    }
+    return d66;
+  };
+  ReadTwist(map,
+            {{"kes.B_bias", find(kes, "B_bias"),
+              [&](const YamlValue& v) { return bias_rigidity(kes_rigidity(v), v); }},
+             {"bending_length.bias", find(peirce, "bias"),
+              [&](const YamlValue& v) { return bias_rigidity(peirce_rigidity(v), v); }}},
+            &fv);
   return fv;
 }
 

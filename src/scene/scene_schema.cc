@@ -488,6 +488,12 @@ std::vector<SchemaRow> FiniteVolume() {
           .Default("`0`")
           .Doc("coupling rigidity; `D_12² < D_warp * D_weft`")
           .Example(set("D_12", "1e-06")),
+      row("D_66")
+          .Is("", "N*m", "≥ 0")
+          .Default("`√(D_warp · D_weft) / 3` unless given by `kes.B_bias` or `bending_length.bias`")
+          .Doc("torsional (twisting) rigidity, M₁₂ = D_66 · 2κ₁₂; an isotropic plate's is "
+               "D (1 − ν)/2; the default and its source: [Twist](#twist)")
+          .Example(set("D_66", "5e-06")),
       row("kes")
           .Is("map")
           .Doc("KES-FB measurements (below)")
@@ -495,7 +501,7 @@ std::vector<SchemaRow> FiniteVolume() {
                     "={E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, kes: {B_weft: 0.1}}"},
                    "material.finite_volume.D_weft", "9.80665e-06"),
       row("bending_length")
-          .Is("`{warp: cm, weft: cm}`")
+          .Is("`{warp: cm, weft: cm, bias: cm}`")
           .Doc("Peirce bending lengths (below)")
           .Example({at.substr(0, at.size() - 1) +
                     "={E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, bending_length: {weft: "
@@ -556,6 +562,14 @@ std::vector<SchemaRow> Kes() {
           .Doc("→ `D_weft` (N·m), as `B_warp`")
           .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, kes: {B_weft: 0.1}}"},
                    si + "D_weft", "9.80665e-06"),
+      row("B_bias")
+          .Is("", "gf·cm²/cm", "> 0")
+          .Doc("the bending rigidity of a strip cut at 45° to the warp → `D_66` (N·m) by the "
+               "orthotropic plate's compliance: D_66 = 1 / (4/B₄₅ − 1/D_warp − 1/D_weft) "
+               "(with `D_12` = 0; [Twist](#twist))")
+          .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, kes: "
+                         "{B_bias: 0.08}}"},
+                   si + "D_66", "3.227283647121932e-06"),
       row("G")
           .Is("", "gf/(cm·deg)", "> 0")
           .Doc("→ `G` (N/m, per radian): G = G_kes × 0.980665 × 180/π = G_kes × 56.188")
@@ -635,6 +649,14 @@ std::vector<SchemaRow> BendingLength() {
           .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, bending_length: "
                          "{weft: 1.5}}"},
                    "material.finite_volume.D_weft", "6.61948875e-06"),
+      Row(t, "bias")
+          .Is("", "cm", "> 0")
+          .Doc("the bending length of a strip cut at 45° to the warp → B₄₅ = ρ g_n c³ → `D_66` "
+               "(N·m), as `kes.B_bias`")
+          .On(Base::kFiniteVolume)
+          .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, "
+                         "bending_length: {bias: 1.5}}"},
+                   "material.finite_volume.D_66", "2.473555989872958e-06"),
   };
 }
 
