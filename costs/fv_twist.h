@@ -43,24 +43,41 @@ struct FvTwist {
     assert(weight >= 0.0 && size1 > 0.0 && size2 > 0.0);
   }
 
-  // Nodes P, E, N, C (the cell's corners (i, j), (i+1, j), (i, j+1), (i+1, j+1)).
+  // Nodes P, E, N, C (the cell's corners (i, j), (i+1, j), (i, j+1), (i+1, j+1)). Written in
+  // stages, so that the fast derivatives (src/derivatives/fast_hessian.h) can differentiate the
+  // one non-linear stage, the normal, on its own: d and the diagonals (linear in the nodes), the
+  // unit normal n of the diagonals, and the residual (linear in d for a given n).
   template <typename T>
   bool operator()(const T* const p, const T* const e, const T* const n, const T* const c,
                   T* residual) const {
-    T d[3], diagonal1[3], diagonal2[3];
+    T d[3], diagonal1[3], diagonal2[3], normal[3];
     for (int k = 0; k < 3; ++k) {
       d[k] = c[k] - e[k] - n[k] + p[k];
       diagonal1[k] = c[k] - p[k];
       diagonal2[k] = n[k] - e[k];
     }
-    const T m[3] = {diagonal1[1] * diagonal2[2] - diagonal1[2] * diagonal2[1],
-                    diagonal1[2] * diagonal2[0] - diagonal1[0] * diagonal2[2],
-                    diagonal1[0] * diagonal2[1] - diagonal1[1] * diagonal2[0]};
+    if (!Normal(diagonal1, diagonal2, normal)) return false;
+    Residual(d, normal, residual);
+    return true;
+  }
+
+  // n = (a × b) / |a × b| for the diagonals a = C − P, b = N − E; false where a × b = 0.
+  template <typename T>
+  static bool Normal(const T* a, const T* b, T* normal) {
+    const T m[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                    a[0] * b[1] - a[1] * b[0]};
     const T m_squared = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
     if (!(m_squared > 0.0)) return false;
     using std::sqrt;
-    residual[0] = scale * (d[0] * m[0] + d[1] * m[1] + d[2] * m[2]) / sqrt(m_squared);
+    const T inverse = 1.0 / sqrt(m_squared);
+    for (int k = 0; k < 3; ++k) normal[k] = m[k] * inverse;
     return true;
+  }
+
+  // r = 2 √(D66 A) (d · n) / (h1 h2).
+  template <typename T>
+  void Residual(const T* d, const T* normal, T* residual) const {
+    residual[0] = scale * (d[0] * normal[0] + d[1] * normal[1] + d[2] * normal[2]);
   }
 
   static FvTwist Create(double weight, double size1, double size2) {

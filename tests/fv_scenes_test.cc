@@ -34,7 +34,8 @@ std::vector<CoarseScene> CoarseScenes() {
                                      {"square_table_seam.yaml", square},
                                      {"drape_tester_cotton_30_hem.yaml", {"mesh.spacing=0.025"}},
                                      {"drape_tester_limp_30.yaml", {"mesh.spacing=0.025"}},
-                                     {"sphere.yaml", square}};
+                                     {"sphere.yaml", square},
+                                     {"corner_plate.yaml", square}};
   for (const char* fabric : {"cotton", "polyester"}) {
     for (const auto& [size, spacing] :
          {std::pair<const char*, const char*>{"24", "0.02"}, {"30", "0.025"}, {"36", "0.03"}}) {

@@ -23,12 +23,21 @@ def config(relative):
     return os.path.join(SOURCE, "configs", relative)
 
 
+def module_blas_core():
+    """The OpenBLAS kernels this process loaded (the module cannot restart itself with faster ones,
+    as `drape` does where OpenBLAS takes the CPU for a Prescott: src/numerics/library_threads.cc)."""
+    summary = drape.solve(config("examples/chain.yaml")).summary
+    return summary["blas_kernels"].split(" ")[0]
+
+
 def cli_solve(scene, folder, *overrides):
-    """`drape solve` into `folder`: its nodes.csv positions and summary.json."""
+    """`drape solve` into `folder`, on the OpenBLAS kernels this process runs (another core's
+    kernels round differently): its nodes.csv positions and summary.json."""
     command = [BINARY, "solve", scene, "--out", str(folder)]
     for override in overrides:
         command += ["--set", override]
-    subprocess.run(command, check=True, capture_output=True)
+    environment = dict(os.environ, OPENBLAS_CORETYPE=module_blas_core())
+    subprocess.run(command, check=True, capture_output=True, env=environment)
     with open(os.path.join(folder, "nodes.csv")) as nodes:
         rows = list(csv.DictReader(nodes))
     positions = np.array([[float(row[c]) for c in ("x_m", "y_m", "z_m")] for row in rows])

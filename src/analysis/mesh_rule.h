@@ -5,17 +5,20 @@
 //   e ≈ kDrapeErrorPerSpacing × h / c,   c = (D_min / (ρ g))^(1/3),
 // c the fabric's bending length in its limper direction (D_min the smaller of D_warp and D_weft,
 // ρ its areal density, g gravity): the fold troughs and the hinge where the fabric leaves the rim
-// are placed to within a spacing, on the scale of c. Measured K = e c / h: limp (c = 9.6 mm) 0.30,
-// 0.23, 0.18 at 1 cm, 5 mm, 2.6 mm against Richardson's limit from 5, 2.6 and 1.3 mm; cotton
-// (c = 18.8 mm) 0.23, 0.13, 0.06 against its 1.3 mm DC (0.630); the light polyester (c = 13 mm)
-// 0.31, 0.24, 0.12 against its 1.3 mm DC (0.367). kDrapeErrorPerSpacing takes the largest, the
-// polyester's at 1 cm, so the rule holds every error measured.
+// are placed to within a spacing, on the scale of c. Measured K = e c / h with the bending's twist
+// (costs/fv_twist.h, its default D66; session 29): limp (c = 9.6 mm) 0.30, 0.24, 0.21 at 1 cm,
+// 5 mm, 2.6 mm against Richardson's limit from 5, 2.6 and 1.3 mm (0.176); cotton (c = 18.8 mm)
+// 0.08, 0.05, 0.04 against its 1.3 mm DC (0.708); the light polyester (c = 13 mm) 0.19, 0.17,
+// 0.06 against its 1.3 mm DC (0.434). Without the twist (D66 = 0) the same study gave 0.30, 0.23,
+// 0.18; 0.23, 0.13, 0.06; 0.31, 0.24, 0.12: the twist cut the cotton's and the polyester's errors,
+// not the limp fabric's. kDrapeErrorPerSpacing is the largest measured, the polyester's at 1 cm
+// without the twist, above every error measured with it (the limp fabric's 0.30 at 1 cm).
 // The rule is linear over the study's spacings, up to about one bending length. Coarser, the
 // lattice does not resolve the folds at all, and the error stops growing: the same scenes at 1.5,
-// 2, 3 and 5 cm were off by 0.06–0.48 (limp 0.34, 0.30, 0.48, 0.42 at h/c 1.6–5.2; cotton 0.20,
-// 0.16, 0.06 at 1.1–2.7), where K h / c says up to 1.6, beyond the drape coefficient's whole
-// range. The expected error is therefore capped at kMostDrapeError: half that range, above every
-// error measured.
+// 2, 3 and 5 cm (without the twist) were off by 0.06–0.48 (limp 0.34, 0.30, 0.48, 0.42 at
+// h/c 1.6–5.2; cotton 0.20, 0.16, 0.06 at 1.1–2.7), where K h / c says up to 1.6, beyond the drape
+// coefficient's whole range. The expected error is therefore capped at kMostDrapeError: half that
+// range, above every error measured.
 #ifndef DRAPE_SRC_ANALYSIS_MESH_RULE_H_
 #define DRAPE_SRC_ANALYSIS_MESH_RULE_H_
 

@@ -297,39 +297,84 @@ bool FastHessian<FvMembrane>::Evaluate(const FvMembrane& functor, const double* 
   return finite;
 }
 
-// FvTwist (nodes P, E, N, C = 0..3): the functor evaluated in SecondOrder<9> numbers over the
-// relative positions x_a − x_P (a = E, N, C), P's coordinates held constant; then E = ½ r²,
-// ∇E = r ∇r, ∇²E = ∇r ∇rᵀ + r ∇²r, mapped back to the nodes (P's rows are minus the sum of the
-// others'). Stand-in where ∇²E is indefinite: ∇r ∇rᵀ (fast_hessian.h, "Projection").
+// FvTwist (nodes P, E, N, C = 0..3), by its stages: Q = (d, a, b), linear in the relative
+// positions X = (E − P, N − P, C − P) (d = X_C − X_E − X_N, a = X_C, b = X_N − X_E: Q = T X with T
+// constant); the unit normal n(a, b) (FvTwist::Normal, in SecondOrder<6> numbers over a and b);
+// the residual r(d, n) (FvTwist::Residual, in SecondOrder<6> numbers over d and n). Then
+//   ∇_Q r = (r_d, J_nᵀ r_n),   ∇²_Q r = [r_dd, r_dn J_n; ·, J_nᵀ r_nn J_n + Σ_k r_n,k ∇²n_k],
+// ∇_X r = Tᵀ ∇_Q r, ∇²_X r = Tᵀ ∇²_Q r T, and E = ½ r²: ∇E = r ∇r, ∇²E = ∇r ∇rᵀ + r ∇²r, mapped
+// back to the nodes (P's rows are minus the sum of the others'). Stand-in where ∇²E is indefinite:
+// ∇r ∇rᵀ (fast_hessian.h, "Projection").
 bool FastHessian<FvTwist>::Evaluate(const FvTwist& functor, const double* const* x, double* energy,
                                     double* gradient, double* hessian,
                                     StagedProjection* projection) {
-  using Number = SecondOrder<9>;
-  Number nodes[4][3];
-  for (int c = 0; c < 3; ++c) nodes[0][c] = Number(x[0][c]);
-  for (int a = 1; a < 4; ++a) {
-    for (int c = 0; c < 3; ++c) nodes[a][c] = Number::Variable(x[a][c], 3 * (a - 1) + c);
+  enum { kP, kE, kN, kC };
+  using Number = SecondOrder<6>;
+  Number a[3], b[3], normal[3];
+  double d[3];
+  for (int k = 0; k < 3; ++k) {
+    d[k] = x[kC][k] - x[kE][k] - x[kN][k] + x[kP][k];
+    a[k] = Number::Variable(x[kC][k] - x[kP][k], k);
+    b[k] = Number::Variable(x[kN][k] - x[kE][k], 3 + k);
   }
-  Number r;
-  if (!functor(nodes[0], nodes[1], nodes[2], nodes[3], &r)) return false;
-  const Eigen::Map<const Eigen::Matrix<double, 9, 1>> dr(r.gradient);
-  Eigen::Matrix<double, 9, 9> gauss_newton = dr * dr.transpose();
-  Eigen::Matrix<double, 9, 9> h_relative = gauss_newton;
-  for (int i = 0; i < 9; ++i) {
-    for (int j = 0; j < 9; ++j) h_relative(i, j) += r.value * r.Hessian(i, j);
+  if (!FvTwist::Normal(a, b, normal)) return false;
+  Number stage_in[6], r;
+  for (int k = 0; k < 3; ++k) {
+    stage_in[k] = Number::Variable(d[k], k);
+    stage_in[3 + k] = Number::Variable(normal[k].value, 3 + k);
   }
+  functor.Residual(stage_in, stage_in + 3, &r);
+  // Over Q = (d, a, b).
+  Eigen::Matrix<double, 3, 6> j_n;
+  for (int k = 0; k < 3; ++k) {
+    for (int v = 0; v < 6; ++v) j_n(k, v) = normal[k].gradient[v];
+  }
+  const Eigen::Vector3d r_n(r.gradient[3], r.gradient[4], r.gradient[5]);
+  Eigen::Matrix<double, 9, 1> g_q;
+  g_q << r.gradient[0], r.gradient[1], r.gradient[2], j_n.transpose() * r_n;
+  Eigen::Matrix<double, 9, 9> h_q;
+  Eigen::Matrix3d r_dd, r_dn, r_nn;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      r_dd(i, j) = r.Hessian(i, j);
+      r_dn(i, j) = r.Hessian(i, 3 + j);
+      r_nn(i, j) = r.Hessian(3 + i, 3 + j);
+    }
+  }
+  Eigen::Matrix<double, 6, 6> curvature = j_n.transpose() * r_nn * j_n;
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j) curvature(i, j) += r_n[k] * normal[k].Hessian(i, j);
+    }
+  }
+  h_q.topLeftCorner<3, 3>() = r_dd;
+  h_q.topRightCorner<3, 6>() = r_dn * j_n;
+  h_q.bottomLeftCorner<6, 3>() = h_q.topRightCorner<3, 6>().transpose();
+  h_q.bottomRightCorner<6, 6>() = curvature;
+  // Q = T X over X = (E − P, N − P, C − P).
+  Eigen::Matrix<double, 9, 9> t = Eigen::Matrix<double, 9, 9>::Zero();
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  t.block<3, 3>(0, 0) = -identity;  // d
+  t.block<3, 3>(0, 3) = -identity;
+  t.block<3, 3>(0, 6) = identity;
+  t.block<3, 3>(3, 6) = identity;   // a
+  t.block<3, 3>(6, 0) = -identity;  // b
+  t.block<3, 3>(6, 3) = identity;
+  const Eigen::Matrix<double, 9, 1> dr = t.transpose() * g_q;
+  const Eigen::Matrix<double, 9, 9> gauss_newton = dr * dr.transpose();
+  const Eigen::Matrix<double, 9, 9> h_relative = gauss_newton + r.value * (t.transpose() * h_q * t);
   // Back to the nodes: x_a − x_P for a = 1..3, so node P's rows and columns are minus the sums.
   const auto to_nodes = [](const Eigen::Matrix<double, 9, 9>& relative, double* out) {
     Eigen::Map<NodeDerivatives<4>::Hessian> h(out);
     h.setZero();
     h.bottomRightCorner<9, 9>() = relative;
-    for (int a = 0; a < 3; ++a) {
-      const Eigen::Matrix<double, 3, 9> rows = relative.middleRows<3>(3 * a);
+    for (int node = 0; node < 3; ++node) {
+      const Eigen::Matrix<double, 3, 9> rows = relative.middleRows<3>(3 * node);
       h.block<3, 9>(0, 3).noalias() -= rows;
       h.block<9, 3>(3, 0).noalias() -= rows.transpose();
     }
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) h.block<3, 3>(0, 0) += relative.block<3, 3>(3 * a, 3 * b);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) h.block<3, 3>(0, 0) += relative.block<3, 3>(3 * i, 3 * j);
     }
   };
   Eigen::Map<Eigen::Matrix<double, 12, 1>> full_gradient(gradient);

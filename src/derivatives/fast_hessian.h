@@ -46,9 +46,10 @@
 //
 //   FvTwist: one residual r, so ∇²E = ∇r ∇rᵀ + r ∇²r; its stand-in is ∇r ∇rᵀ, the Gauss–Newton
 //     part, as FvBending's.
-// FvTwist has no stages: the functor itself is evaluated in SecondOrder<9> numbers (second_order.h)
-// over the three other corners' positions relative to the first, which gives r, ∇r and ∇²r in one
-// pass at about a third of the cost of nested Jets over the 9 relative coordinates.
+// FvTwist computes its residual in stages too: the mixed difference d and the diagonals a, b
+// (linear in the coordinates), the unit normal n(a, b), and the residual linear in d; the normal
+// and the residual stage are each differentiated in SecondOrder<6> numbers (second_order.h) and
+// chained through the constant map from the relative positions.
 //
 // FastHessian<Functor>::kAvailable says whether a functor has such a path (src/model/term.h uses
 // it in place of the nested Jets). The paths are defined in fast_hessian.cc, compiled once: this
