@@ -79,6 +79,18 @@ struct Plate {
   Model model;
 };
 
+// A balanced fabric of bending rigidity D (N·m), coupling ν D and torsional rigidity D66; membrane
+// 1000 N/m, shear 10 N/m.
+FiniteVolumeSpec Balanced(double d, double nu, double d66) {
+  FiniteVolumeSpec material;
+  material.E_warp = material.E_weft = 1000.0;
+  material.G = 10.0;
+  material.D_warp = material.D_weft = d;
+  material.D_12 = nu * d;
+  material.D_66 = d66;
+  return material;
+}
+
 // An h × h lattice of n × n nodes with the isotropic plate's rigidities: D1 = D2 = D,
 // D12 = ν D, D66 = D (1 − ν)/2.
 Plate IsotropicPlate(int n, double side, double d, double nu) {
@@ -87,13 +99,7 @@ Plate IsotropicPlate(int n, double side, double d, double nu) {
   spec.nodes = {n, n};
   Plate plate{BuildMesh(spec), Model()};
   plate.model.num_nodes = static_cast<int>(plate.mesh.nodes.size());
-  FiniteVolumeSpec material;
-  material.E_warp = material.E_weft = 1000.0;
-  material.G = 10.0;
-  material.D_warp = material.D_weft = d;
-  material.D_12 = nu * d;
-  material.D_66 = d * (1 - nu) / 2;
-  AddFiniteVolumeTerms(material, plate.mesh, &plate.model);
+  AddFiniteVolumeTerms(Balanced(d, nu, d * (1 - nu) / 2), plate.mesh, &plate.model);
   return plate;
 }
 
@@ -198,12 +204,7 @@ TEST(FvTwist, CellsCarryTheWholeAreaOfACircle) {
   const Mesh mesh = BuildMesh(spec);
   Model model;
   model.num_nodes = static_cast<int>(mesh.nodes.size());
-  FiniteVolumeSpec material;
-  material.E_warp = material.E_weft = 1000.0;
-  material.G = 10.0;
-  material.D_warp = material.D_weft = 1e-5;
-  material.D_66 = 0.3e-5;
-  AddFiniteVolumeTerms(material, mesh, &model);
+  AddFiniteVolumeTerms(Balanced(1e-5, 0.0, 0.3e-5), mesh, &model);
   double area = 0.0;
   for (int k = 0; k < model.num_nodes; ++k) area += mesh.area[k];
   int lonely = 0;  // nodes that are the corner of no cell carry no twist
@@ -250,12 +251,7 @@ double CornerDeflection(int n, double side, double load) {
   model.fixed.assign(model.num_dofs(), 0);
   model.applied.assign(model.num_dofs(), 0.0);
   model.grid_index = mesh.grid_index;
-  FiniteVolumeSpec material;
-  material.E_warp = material.E_weft = 1000.0;
-  material.G = 10.0;
-  material.D_warp = material.D_weft = 1e-5;
-  material.D_66 = 0.5e-5;  // ν = 0
-  AddFiniteVolumeTerms(material, mesh, &model);
+  AddFiniteVolumeTerms(Balanced(1e-5, 0.0, 0.5e-5), mesh, &model);  // D66 = D (1 − ν)/2, ν = 0
   for (int held : {0, n - 1, n * (n - 1)}) {
     for (int c = 0; c < 3; ++c) model.fixed[3 * held + c] = 1;
   }
