@@ -57,6 +57,30 @@ TEST(FabricParameters, PeirceAndKesAgreeOnTheSameFabric) {
               1e-12 * KesBendingRigidity(b));
 }
 
+// FAST's B is Peirce's rigidity in µN·m: W C³ × 9.81e-6 with W in g/m², C in mm (De Boos &
+// Tester 1994). A 168 g/m² fabric with C = 15 mm has B = 5.56 µN·m; the same as a bending length.
+TEST(FabricParameters, FastBendingRigidityIsPeircesInMicroNewtonMetres) {
+  const double w = 168.0, c_mm = 15.0;
+  const double b = w * c_mm * c_mm * c_mm * kStandardGravity * 1e-6;  // µN·m
+  EXPECT_NEAR(b, 5.56, 0.005);
+  EXPECT_NEAR(FastBendingRigidity(b), PeirceBendingRigidity(c_mm / 10, FastArealDensity(w)),
+              1e-12 * FastBendingRigidity(b));
+  EXPECT_DOUBLE_EQ(FastArealDensity(120.0), KesArealDensity(12.0));
+}
+
+// FAST's shear rigidity G = 123/EB5 N/m is the bias strip's T/(4ε) at T = 5 gf/cm.
+TEST(FabricParameters, FastShearRigidityIsTheBiasStripsSmallStrainRelation) {
+  EXPECT_DOUBLE_EQ(FastShearRigidity(4.7), 123.0 / 4.7);
+  const double tension = 5.0 * kGramForce / 1e-2;  // N/m
+  EXPECT_NEAR(FastShearRigidity(2.0), tension / (4.0 * 0.02), 0.01 * FastShearRigidity(2.0));
+}
+
+// E100's secant modulus: 100 gf/cm over the strain, as KES's EMT with LT = 1 at Fm = 100 gf/cm.
+TEST(FabricParameters, FastTensileRigidityIsTheSecantAtOneHundredGramForcePerCentimetre) {
+  EXPECT_NEAR(FastTensileRigidity(2.0), 98.0665 / 0.02, 1e-9);
+  EXPECT_DOUBLE_EQ(FastTensileRigidity(3.0), KesTensileRigidity(3.0, 1.0, 100.0));
+}
+
 // The bias conversion inverts the orthotropic plate's compliance at 45°: a plate of D1, D2, D12,
 // D66 has 1/B45 = (S11 + S22 + 2 S12 + 1/D66)/4 with S = [D1 D12; D12 D2]⁻¹ (fabric_parameters.h).
 // Written out for D1 = 1e-5, D2 = 0.6e-5, D12 = 0.2e-5, D66 = 0.3e-5 N·m: Δ = 6e-11 − 4e-12 =

@@ -1,5 +1,6 @@
 // Scene loading: every key of docs/reference.md's scene reference, the defaults, `--set` overrides,
 // and every bad input rejected with "file:line:column: key.path: what is wrong".
+#include "src/scene/fabric_parameters.h"
 #include "src/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -858,6 +859,33 @@ material:
   EXPECT_DOUBLE_EQ(fv.nu_warp, 0.1);
 }
 
+// FAST's units by hand: W 150 g/m² → 0.15 kg/m²; B 7.5 µN·m → 7.5e-6 N·m; EB5 2 % → 123/2 =
+// 61.5 N/m; E100 2 % → 98.0665/0.02 = 4903.325 N/m. The measurements are kept as given, with the
+// schema's units, in the schema's order.
+TEST_F(SceneLoaderTest, FastGivesTheSiParametersAndKeepsTheMeasurementsAsGiven) {
+  const Scene scene = Load(R"(mesh: {kind: circle, radius: 0.1, spacing: 0.02}
+material:
+  model: finite_volume
+  finite_volume:
+    fast: {E100_weft: 4, EB5: 2, B_warp: 7.5, W: 150, E100_warp: 2}
+    bending_length: {weft: 2.0}
+)");
+  const FiniteVolumeSpec& fv = scene.material.finite_volume;
+  EXPECT_NEAR(scene.material.mass_value, 0.15, 1e-15);
+  EXPECT_NEAR(fv.D_warp, 7.5e-6, 1e-18);
+  EXPECT_NEAR(fv.D_weft, PeirceBendingRigidity(2.0, 0.15), 1e-18);
+  EXPECT_NEAR(fv.G, 61.5, 1e-12);
+  EXPECT_NEAR(fv.E_warp, 4903.325, 1e-9);
+  EXPECT_NEAR(fv.E_weft, 2451.6625, 1e-9);
+  const std::vector<std::string> keys = {"fast.W",         "fast.B_warp",      "fast.EB5",
+                                         "fast.E100_warp", "fast.E100_weft",   "bending_length.weft"};
+  ASSERT_EQ(fv.measured.size(), keys.size());
+  for (size_t k = 0; k < keys.size(); ++k) EXPECT_EQ(fv.measured[k].key, keys[k]);
+  EXPECT_EQ(fv.measured[0].unit, "g/m²");
+  EXPECT_DOUBLE_EQ(fv.measured[0].value, 150.0);
+  EXPECT_EQ(fv.measured[5].unit, "cm");
+}
+
 // A bending length uses material.density when there is no kes.W; Fm changes the KES load.
 TEST_F(SceneLoaderTest, BendingLengthUsesTheMaterialDensity) {
   const Scene scene =
@@ -925,7 +953,7 @@ std::vector<BadScene> FabricParameterBadScenes() {
       {"DirectAndKesShear", FiniteVolumeWith(8, 8, "    G: 5\n    kes: {G: 0.9}"),
        "9:14: material.finite_volume.kes.G", "give G in one way only"},
       {"MissingBending", FiniteVolumeWith(9, 9, ""), "5:3: material.finite_volume.D_warp",
-       "required key 'D_warp' is missing: give D_warp (N·m) or kes.B_warp or "
+       "required key 'D_warp' is missing: give D_warp (N·m) or kes.B_warp or fast.B_warp or "
        "bending_length.warp"},
       {"MissingTensile", FiniteVolumeWith(7, 7, ""), "5:3: material.finite_volume.E_weft",
        "give E_weft (N/m) or kes.EMT_weft"},
@@ -937,12 +965,20 @@ std::vector<BadScene> FabricParameterBadScenes() {
        "4:3: material.density",
        "give the mass in one way only: 'density' and "
        "finite_volume.kes.W are both given"},
+      {"KesAndFastWeight", FiniteVolumeWith(4, 4, "",
+                                            FiniteVolumeWith(8, 8, "    G: 5\n    kes: {W: 12}\n    fast: {W: 120}")),
+       "9:15: material.finite_volume.fast.W",
+       "give the mass in one way only: finite_volume.kes.W and finite_volume.fast.W are both "
+       "given"},
+      {"KesAndFastBending", FiniteVolumeWith(8, 9, "    G: 5\n    kes: {B_warp: 0.1}\n    fast: {B_warp: 9}"),
+       "10:20: material.finite_volume.fast.B_warp",
+       "give D_warp in one way only: 'kes.B_warp' is given too"},
       {"BendingLengthWithoutArealDensity",
        FiniteVolumeWith(4, 4, "  node_mass: 0.001",
                         FiniteVolumeWith(9, 10, "    bending_length: {warp: 2.0, weft: 1.8}")),
        "9:28: material.finite_volume.bending_length.warp",
-       "a bending length needs the areal density: give material.density (kg/m²) or "
-       "finite_volume.kes.W (mg/cm²)"},
+       "a bending length needs the areal density: give material.density (kg/m²), "
+       "finite_volume.kes.W (mg/cm²) or finite_volume.fast.W (g/m²)"},
       {"BendingLengthNotPerDirection", FiniteVolumeWith(9, 10, "    bending_length: 2.0"),
        "9:21: material.finite_volume.bending_length", "give the bending length per direction"},
       {"KesKeyTypo", FiniteVolumeWith(9, 9, "    kes: {B_wrap: 0.1}"),

@@ -546,7 +546,7 @@ TEST(SceneSchema, NumericRangesAreChecked) {
         << row.Path() << "'s range \"" << row.range << "\" is not a structured range";
     if (row.Bounds()) ++checked;
   }
-  EXPECT_EQ(checked, 71u) << "numeric rows whose range is checked: update the count";
+  EXPECT_EQ(checked, 77u) << "numeric rows whose range is checked: update the count";
 }
 
 }  // namespace scene_schema_test

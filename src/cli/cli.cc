@@ -49,6 +49,7 @@
 #include "src/solvers/solver.h"
 #include "src/sweep/drops.h"
 #include "src/sweep/drops_report.h"
+#include "src/sweep/fabrics.h"
 #include "src/sweep/sweep.h"
 #include "src/sweep/sweep_file.h"
 
@@ -340,6 +341,14 @@ int Check(const Arguments& arguments, std::ostream& out) {
         << (value.unit == "1" ? "" : " " + value.unit) << ";";
   }
   out << "\n";
+  if (!material.finite_volume.measured.empty()) {
+    out << "material as given:";
+    for (const GivenMeasurement& value : material.finite_volume.measured) {
+      out << " " << value.key << " " << RoundedNumber(value.value, 6)
+          << (value.unit.empty() ? "" : " " + value.unit) << ";";
+    }
+    out << "\n";
+  }
   if (material.model == MaterialModel::kFiniteVolume) out << TwistLine(material.finite_volume);
   if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model); advice && advice->coarse) {
     out << "warning: " << CoarseMeshWarning(*advice) << "\n";
@@ -489,6 +498,57 @@ int Sweep(const SweepArguments& arguments, const std::string& command_line, std:
   const bool all = options.only ? summary.converged_tasks.count(*options.only) > 0
                                 : static_cast<int>(summary.converged_tasks.size()) == summary.tasks;
   return all && !summary.interrupted ? kExitConverged : kExitNotConverged;
+}
+
+// What the command line of `drape fabrics` gives.
+struct FabricsArguments {
+  FabricsOptions options;
+  std::optional<std::string> task_id;  // --task-id: a number, or empty for $SLURM_ARRAY_TASK_ID
+};
+
+// `drape fabrics`: the table and every fabric's scene checked before any solve; one progress line
+// per finished fabric on `err`, the summary line on `out`. Exit 0 when every fabric has a
+// prediction, 1 otherwise.
+int Fabrics(FabricsArguments arguments, const std::string& command_line, std::ostream& out,
+            std::ostream& err) {
+  FabricsOptions& options = arguments.options;
+  options.command_line = command_line;
+  if (arguments.task_id) {
+    if (options.only) throw UsageError("give --only or --task-id, not both");
+    std::string text = *arguments.task_id;
+    if (text.empty()) {
+      const char* slurm = std::getenv("SLURM_ARRAY_TASK_ID");
+      if (!slurm) throw UsageError("--task-id without a value needs $SLURM_ARRAY_TASK_ID");
+      text = slurm;
+    }
+    int value = -1;
+    if (!CLI::detail::lexical_cast(text, value) || value < 0) {
+      throw UsageError("--task-id: expected a task number >= 0, got '" + text + "'");
+    }
+    options.only = value;
+  }
+  const FabricsSpec spec = LoadFabrics(options);
+  EnableInterrupt();
+  FabricsSummary summary;
+  try {
+    summary = RunFabrics(spec, options, err);
+  } catch (const TaskFarmError& error) {
+    err << "drape fabrics: " << error.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& error) {
+    err << "drape: cannot write the results: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  if (!summary.coordinator) return kExitConverged;
+  if (options.only) {
+    out << "fabrics: task " << *options.only << " done; results in " << summary.directory
+        << " (run without --only to write fabrics.csv)" << std::endl;
+    return summary.interrupted ? kExitNotConverged : kExitConverged;
+  }
+  out << FabricsLine(summary) << "; results in " << summary.directory << "/fabrics.csv"
+      << std::endl;
+  return summary.predicted == summary.fabrics && !summary.interrupted ? kExitConverged
+                                                                       : kExitNotConverged;
 }
 
 // The catalogue (src/scene/solver_methods.h): each method, its default limits and every option
@@ -723,6 +783,47 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   sweep->add_flag("--no-plots", sweep_arguments.no_plots,
                   "write sweep.csv without running gnuplot");
 
+  FabricsArguments fabrics_arguments;
+  CLI::App* fabrics = app.add_subcommand(
+      "fabrics",
+      "predict the drape coefficient of every fabric in a table (KES, FAST, Peirce or SI "
+      "columns) and set it beside the measured one; writes fabrics.csv, fabrics.json, "
+      "report.html; reruns solve only what is missing");
+  fabrics->add_option("table", fabrics_arguments.options.table, "the fabric table (CSV)")
+      ->required()
+      ->type_name("FABRICS.csv");
+  fabrics
+      ->add_option("--scene", fabrics_arguments.options.scene,
+                   "the base scene, a drape test whose material each row replaces (default: the "
+                   "standard tester, 30 cm on the 18 cm disc, 5 mm lattice)")
+      ->type_name("BASE.yaml");
+  AddSetOption(fabrics, &fabrics_arguments.options.overrides);
+  fabrics->get_option("--set")->description(
+      "override a key of every fabric's scene, after its material (repeatable; value is YAML)");
+  fabrics
+      ->add_option("--drops", fabrics_arguments.options.drops,
+                   "solve N drops of each fabric and predict their mean (default: the base "
+                   "scene's drape_test.drops)")
+      ->check(CLI::Range(1, kMostDrops))
+      ->type_name("N");
+  fabrics->add_option("--threads", fabrics_arguments.options.threads, kLocalThreadsHelp)
+      ->check(kThreadCount)
+      ->capture_default_str()
+      ->type_name("N");
+  fabrics
+      ->add_option("-o,--out", fabrics_arguments.options.out,
+                   "write into this folder (default: out/<table name>)")
+      ->type_name("DIR");
+  fabrics
+      ->add_option("--only", fabrics_arguments.options.only,
+                   "run only this task (0-based: fabric × drops + drop − 1)")
+      ->type_name("I");
+  fabrics
+      ->add_option("--task-id", fabrics_arguments.task_id,
+                   "run only this task; without a value, $SLURM_ARRAY_TASK_ID (a Slurm job array)")
+      ->expected(0, 1)
+      ->type_name("I");
+
   std::string help_topic;
   CLI::App* help = app.add_subcommand("help", "print this help, or a command's");
   help->add_option("command", help_topic, "the command")->type_name("COMMAND");
@@ -769,6 +870,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     }
     if (fit->parsed()) return Fit(arguments, out, err);
     if (sweep->parsed()) return Sweep(sweep_arguments, arguments.command_line, out, err);
+    if (fabrics->parsed()) return Fabrics(fabrics_arguments, arguments.command_line, out, err);
     if (check->parsed()) return Check(arguments, out);
     return Solve(arguments, out, err, options);
   } catch (const UsageError& error) {

@@ -67,4 +67,15 @@ std::string JsonString(const std::string& text) {
 
 std::string JsonBool(bool value) { return value ? "true" : "false"; }
 
+std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth) {
+  if (members.empty()) return "{}";
+  const std::string inner(2 * (depth + 1), ' ');
+  std::string text = "{\n";
+  for (size_t k = 0; k < members.size(); ++k) {
+    text += inner + JsonString(members[k].first) + ": " + members[k].second;
+    text += k + 1 < members.size() ? ",\n" : "\n";
+  }
+  return text + std::string(2 * depth, ' ') + "}";
+}
+
 }  // namespace drape

@@ -5,6 +5,8 @@
 #define DRAPE_SRC_OUTPUT_JSON_H_
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace drape {
 
@@ -25,6 +27,10 @@ std::string JsonNumber(double value);
 std::string JsonString(const std::string& text);
 
 std::string JsonBool(bool value);
+
+// A JSON object of `"key": value` members (each value JSON text already), one per line with the
+// indentation of `depth` (0: the file's top level).
+std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth);
 
 }  // namespace drape
 

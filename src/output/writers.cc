@@ -37,18 +37,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// `"key": value` members of one JSON object, joined with the indentation of `depth`.
-std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth) {
-  if (members.empty()) return "{}";
-  const std::string inner(2 * (depth + 1), ' ');
-  std::string text = "{\n";
-  for (size_t k = 0; k < members.size(); ++k) {
-    text += inner + JsonString(members[k].first) + ": " + members[k].second;
-    text += k + 1 < members.size() ? ",\n" : "\n";
-  }
-  return text + std::string(2 * depth, ' ') + "}";
-}
-
 template <typename Map, typename Format>
 std::string JsonMap(const Map& map, int depth, Format format) {
   std::vector<std::pair<std::string, std::string>> members;
@@ -224,6 +212,15 @@ void AddProvenanceMembers(const Scene& scene, const Provenance& provenance,
   }
   values.emplace_back("units", JsonObject(units, 2));
   members->emplace_back("material_si", JsonObject(values, 1));
+  const std::vector<GivenMeasurement>& measured = scene.material.finite_volume.measured;
+  if (measured.empty()) return;
+  std::vector<std::pair<std::string, std::string>> given, given_units;
+  for (const GivenMeasurement& value : measured) {
+    given.emplace_back(value.key, JsonNumber(value.value));
+    given_units.emplace_back(value.key, JsonString(value.unit.empty() ? "1" : value.unit));
+  }
+  given.emplace_back("units", JsonObject(given_units, 2));
+  members->emplace_back("material_as_given", JsonObject(given, 1));
 }
 
 // summary.json's `units`: the unit of each member whose name carries none (a path through the

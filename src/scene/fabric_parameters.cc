@@ -1,4 +1,4 @@
-// Conversions of KES-FB and Peirce measurements; formulas and sources in fabric_parameters.h.
+// Conversions of KES-FB, SiroFAST and Peirce measurements; formulas and sources in fabric_parameters.h.
 #include "src/scene/fabric_parameters.h"
 
 #include <cassert>
@@ -32,6 +32,19 @@ double KesTensileRigidity(double emt_percent, double lt, double fm_gf_per_cm) {
   assert(emt_percent > 0.0 && lt > 0.0 && fm_gf_per_cm > 0.0);
   const double fm = fm_gf_per_cm * kGramForce / kCentimetre;  // N/m
   return lt * fm / (emt_percent / 100.0);
+}
+
+double FastArealDensity(double w_g_per_m2) { return w_g_per_m2 * 1e-3; }
+
+double FastBendingRigidity(double b_micro_newton_metre) { return b_micro_newton_metre * 1e-6; }
+
+double FastShearRigidity(double eb5_percent) {
+  assert(eb5_percent > 0.0);
+  return kFastShearConstant / eb5_percent;
+}
+
+double FastTensileRigidity(double e100_percent) {
+  return KesTensileRigidity(e100_percent, 1.0, kFastTensileLoad);
 }
 
 double PeirceBendingRigidity(double bending_length_cm, double density_kg_per_m2) {

@@ -14,6 +14,16 @@
 // Peirce's cantilever (F. T. Peirce, "The 'handle' of cloth as a measurable quantity", J. Textile
 // Institute 21, T377–T416, 1930; ASTM D1388, BS 3356): the bending length c (cm) and the
 // flexural rigidity per unit width G = W c³ (W the weight per unit area).
+// CSIRO's SiroFAST (Fabric Assurance by Simple Testing; A. De Boos and D. Tester, "SiroFAST —
+// Fabric Assurance by Simple Testing", CSIRO Division of Wool Technology, Report WT92.02, 1994;
+// the definitions as tabulated by S. Kuijpers, C. Luible-Bär and R. H. Gong, "The Measurement of
+// Fabric Properties for Virtual Simulation", IEEE SA Industry Connections report, 2020, Table 2):
+//   W     mass per unit area, in g/m²;
+//   B     bending rigidity per unit width (FAST-2, from the bending length C by Peirce's
+//         cantilever: B = W C³ × 9.81e-6 with C in mm), in µN·m;
+//   EB5   the bias extensibility at 5 gf/cm (FAST-3), in %, from which FAST defines the shear
+//         rigidity G = 123 / EB5 in N/m;
+//   E100  the extensibility at 100 gf/cm (FAST-3) along the warp or the weft, in %.
 // The gram-force is the standard one, 1 gf = 9.80665e-3 N (g_n = 9.80665 m/s²).
 #ifndef DRAPE_SRC_SCENE_FABRIC_PARAMETERS_H_
 #define DRAPE_SRC_SCENE_FABRIC_PARAMETERS_H_
@@ -48,6 +58,25 @@ double KesArealDensity(double w_mg_per_cm2);
 // with Fm in N/m (500 gf/cm = 490.33 N/m). LT = 1 gives the secant modulus Fm / ε_m.
 double KesTensileRigidity(double emt_percent, double lt,
                           double fm_gf_per_cm = kKesStandardMaximumLoad);
+
+// FAST W (g/m²) → areal density (kg/m²): ρ = W / 1000.
+double FastArealDensity(double w_g_per_m2);
+
+// FAST B (µN·m, per unit width) → D (N·m): D = B × 1e-6.
+double FastBendingRigidity(double b_micro_newton_metre);
+
+// FAST EB5 (%) → the model's G (N/m): FAST's own shear rigidity G = 123 / EB5. The constant is
+// the bias strip's small-strain relation: under a tension T per unit width a strip cut at 45°
+// carries the shear force T/2 per unit width across the warp and weft and shears by γ = 2ε (ε its
+// strain), so G = (T/2)/γ = T/(4ε); T = 5 gf/cm = 4.903 N/m and ε = EB5/100 give 122.6/EB5.
+double FastShearRigidity(double eb5_percent);
+constexpr double kFastShearConstant = 123.0;  // N/m · %
+
+// FAST E100 (%) → the membrane rigidity E (N/m). FAST defines no modulus; drape takes the secant
+// modulus at FAST's 100 gf/cm, E = (100 gf/cm = 98.0665 N/m) / (E100/100), as KesTensileRigidity
+// with LT = 1 (a drape hardly feels it: the fabric hardly stretches under its own weight).
+double FastTensileRigidity(double e100_percent);
+constexpr double kFastTensileLoad = 100.0;  // gf/cm, FAST-3's largest load
 
 // Peirce's bending length c (cm) of a fabric of areal density ρ (kg/m²) → D (N·m):
 //   D = ρ g_n c³ (Peirce's G = W c³ per unit width, in SI), c in m, g_n the standard gravity

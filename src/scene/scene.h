@@ -108,6 +108,14 @@ struct SpringsSpec {
   Location where;
 };
 
+// A fabric measurement as the scene gave it, in a laboratory's units (kes.B_warp 0.12 gf·cm²/cm):
+// what `drape check` and summary.json report beside the SI values it was converted to.
+struct GivenMeasurement {
+  std::string key;  // below material.finite_volume: "kes.B_warp", "fast.EB5", "bending_length.warp"
+  double value = 0;
+  std::string unit;  // the schema's: "gf·cm²/cm", "%", "cm"
+};
+
 struct FiniteVolumeSpec {
   bool present = false;
   double E_warp = 0, E_weft = 0, nu_warp = 0, nu_weft = 0, G = 0;  // N/m
@@ -131,6 +139,7 @@ struct FiniteVolumeSpec {
   // once; N ≥ 1, the incremental form, loads ramped in N equal steps, each a minimisation with the
   // frictions' kinks at the previous step's state (costs/fv_bending_friction_step.h).
   int friction_load_steps = 0;
+  std::vector<GivenMeasurement> measured;  // the kes, fast and bending_length keys given
   Location where;
 };
 

@@ -444,13 +444,33 @@ void ReadTwist(const YamlMap& map, const std::vector<ParameterWay>& bias, Finite
                                             : FiniteVolumeSpec::TwistSource::kBias;
 }
 
+// The measurements as given (kes, fast, bending_length: each key with its number and unit), in
+// the order the schema lists them, for drape check and summary.json.
+std::vector<GivenMeasurement> GivenMeasurements(const YamlMap& map) {
+  std::vector<GivenMeasurement> values;
+  for (const char* block : {"kes", "fast", "bending_length"}) {
+    const auto given = map.Find(block);
+    if (!given || !given->get().IsMap()) continue;
+    const std::string table = std::string("material.finite_volume.") + block;
+    const YamlMap measured(*given, SchemaKeys(table));
+    for (const SchemaRow& row : SceneSchema()) {
+      if (row.table != table) continue;
+      if (const auto v = measured.Find(row.key)) {
+        values.push_back({std::string(block) + "." + row.key, ReadNumber(*v), row.unit});
+      }
+    }
+  }
+  return values;
+}
+
 FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& density) {
   const YamlMap map(value, SchemaKeys("material.finite_volume"));
   FiniteVolumeSpec fv;
   fv.present = true;
   fv.where = value.where;
-  std::optional<YamlMap> kes, peirce;
+  std::optional<YamlMap> kes, fast, peirce;
   if (const auto v = map.Find("kes")) kes.emplace(*v, KesKeys());
+  if (const auto v = map.Find("fast")) fast.emplace(*v, SchemaKeys("material.finite_volume.fast"));
   if (const auto v = map.Find("bending_length")) {
     if (v->get().IsScalar()) {
       Fail(*v, "give the bending length per direction: {warp: cm, weft: cm}");
@@ -471,16 +491,26 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
         "kes.EMT_" + direction, kes ? CheckedEmt(*kes, direction) : std::nullopt,
         [&kes, direction](const YamlValue& v) { return KesTensile(*kes, direction, v); }};
   };
-  fv.E_warp = ReadParameter(map, "E_warp", "N/m", {kes_way("warp")});
-  fv.E_weft = ReadParameter(map, "E_weft", "N/m", {kes_way("weft")});
-  fv.G = ReadParameter(map, "G", "N/m", {{"kes.G", find(kes, "G"), [](const YamlValue& v) {
-                                            return KesShearRigidity(ReadPositive(v));
-                                          }}});
+  const auto fast_rigidity = [](const YamlValue& v) {
+    return FastBendingRigidity(ReadPositive(v));
+  };
+  const auto fast_tensile = [](const YamlValue& v) { return FastTensileRigidity(ReadPositive(v)); };
+  fv.E_warp = ReadParameter(map, "E_warp", "N/m",
+                            {kes_way("warp"), {"fast.E100_warp", find(fast, "E100_warp"), fast_tensile}});
+  fv.E_weft = ReadParameter(map, "E_weft", "N/m",
+                            {kes_way("weft"), {"fast.E100_weft", find(fast, "E100_weft"), fast_tensile}});
+  fv.G = ReadParameter(map, "G", "N/m",
+                       {{"kes.G", find(kes, "G"),
+                         [](const YamlValue& v) { return KesShearRigidity(ReadPositive(v)); }},
+                        {"fast.EB5", find(fast, "EB5"),
+                         [](const YamlValue& v) { return FastShearRigidity(ReadPositive(v)); }}});
   fv.D_warp = ReadParameter(map, "D_warp", "N·m",
                             {{"kes.B_warp", find(kes, "B_warp"), kes_rigidity},
+                             {"fast.B_warp", find(fast, "B_warp"), fast_rigidity},
                              {"bending_length.warp", find(peirce, "warp"), peirce_rigidity}});
   fv.D_weft = ReadParameter(map, "D_weft", "N·m",
                             {{"kes.B_weft", find(kes, "B_weft"), kes_rigidity},
+                             {"fast.B_weft", find(fast, "B_weft"), fast_rigidity},
                              {"bending_length.weft", find(peirce, "weft"), peirce_rigidity}});
   if (const auto fm = find(kes, "Fm"); fm && !kes->Has("EMT_warp") && !kes->Has("EMT_weft")) {
     Fail(*fm, "Fm (gf/cm) applies only with EMT_warp or EMT_weft");
@@ -515,6 +545,7 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
              {"bending_length.bias", find(peirce, "bias"),
               [&](const YamlValue& v) { return bias_rigidity(peirce_rigidity(v), v); }}},
             &fv);
+  fv.measured = GivenMeasurements(map);
   return fv;
 }
 
@@ -549,24 +580,37 @@ void ReadMass(const YamlMap& map, MaterialSpec* material) {
 // bending length is converted with.
 ArealDensity ReadFiniteVolumeMass(const YamlMap& map, MaterialSpec* material) {
   std::optional<YamlValue> weight;
+  std::string weight_key;
   if (const auto fv = map.Find("finite_volume"); fv && fv->get().IsMap()) {
-    if (const auto kes = YamlMap(*fv).Find("kes"); kes && kes->get().IsMap()) {
-      weight = YamlMap(*kes).Find("W");
+    for (const char* block : {"kes", "fast"}) {
+      const auto measured = YamlMap(*fv).Find(block);
+      if (!measured || !measured->get().IsMap()) continue;
+      const auto w = YamlMap(*measured).Find("W");
+      if (!w) continue;
+      if (weight) {
+        Fail(*w, "give the mass in one way only: finite_volume.kes.W and finite_volume.fast.W are "
+                 "both given");
+      }
+      weight = w;
+      weight_key = std::string("finite_volume.") + block + ".W";
     }
   }
   if (!weight) {
     ReadMass(map, material);
     if (material->mass_kind == MaterialSpec::MassKind::kDensity) return {material->mass_value, ""};
-    return {std::nullopt, "give material.density (kg/m²) or finite_volume.kes.W (mg/cm²)"};
+    return {std::nullopt,
+            "give material.density (kg/m²), finite_volume.kes.W (mg/cm²) or finite_volume.fast.W "
+            "(g/m²)"};
   }
   for (const char* key : {"density", "node_mass", "total_mass"}) {
     if (map.Has(key)) {
       throw InputError(map.KeyLocation(key), std::string("give the mass in one way only: '") + key +
-                                                 "' and finite_volume.kes.W are both given");
+                                                 "' and " + weight_key + " are both given");
     }
   }
   material->mass_kind = MaterialSpec::MassKind::kDensity;
-  material->mass_value = KesArealDensity(ReadPositive(*weight));
+  const double w = ReadPositive(*weight);
+  material->mass_value = weight_key == "finite_volume.kes.W" ? KesArealDensity(w) : FastArealDensity(w);
   return {material->mass_value, ""};
 }
 

@@ -450,12 +450,12 @@ std::vector<SchemaRow> FiniteVolume() {
   return {
       row("E_warp")
           .Is("", "N/m", "> 0")
-          .Default("**required** unless given by `kes`")
+          .Default("**required** unless given by `kes` or `fast`")
           .Doc("membrane (tensile) rigidity per unit width along the warp")
           .Example(set("E_warp", "2000")),
       row("E_weft")
           .Is("", "N/m", "> 0")
-          .Default("**required** unless given by `kes`")
+          .Default("**required** unless given by `kes` or `fast`")
           .Doc("membrane (tensile) rigidity per unit width along the weft")
           .Example(set("E_weft", "3000")),
       row("nu_warp")
@@ -470,17 +470,17 @@ std::vector<SchemaRow> FiniteVolume() {
           .Example(set("nu_weft", "0.3")),
       row("G")
           .Is("", "N/m", "> 0")
-          .Default("**required** unless given by `kes`")
+          .Default("**required** unless given by `kes` or `fast`")
           .Doc("in-plane shear rigidity")
           .Example(set("G", "20")),
       row("D_warp")
           .Is("", "N*m", "> 0")
-          .Default("**required** unless given by `kes` or `bending_length`")
+          .Default("**required** unless given by `kes`, `fast` or `bending_length`")
           .Doc("bending rigidity along the warp")
           .Example(set("D_warp", "2e-05")),
       row("D_weft")
           .Is("", "N*m", "> 0")
-          .Default("**required** unless given by `kes` or `bending_length`")
+          .Default("**required** unless given by `kes`, `fast` or `bending_length`")
           .Doc("bending rigidity along the weft")
           .Example(set("D_weft", "3e-05")),
       row("D_12")
@@ -500,6 +500,12 @@ std::vector<SchemaRow> FiniteVolume() {
           .Example({at.substr(0, at.size() - 1) +
                     "={E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, kes: {B_weft: 0.1}}"},
                    "material.finite_volume.D_weft", "9.80665e-06"),
+      row("fast")
+          .Is("map")
+          .Doc("SiroFAST measurements (below)")
+          .Example({at.substr(0, at.size() - 1) +
+                    "={E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, fast: {B_weft: 7.5}}"},
+                   "material.finite_volume.D_weft", "7.5e-06"),
       row("bending_length")
           .Is("`{warp: cm, weft: cm, bias: cm}`")
           .Doc("Peirce bending lengths (below)")
@@ -628,6 +634,47 @@ std::vector<SchemaRow> Kes() {
           .Default("`0`")
           .Doc("→ `shear_friction` (N/m): HG = 2HG/2 × 0.980665")
           .Example({si + "kes={2HG: 2}"}, si + "shear_friction", "0.980665"),
+  };
+}
+
+// material.finite_volume.fast: each measurement is written as the SI value it converts to.
+std::vector<SchemaRow> Fast() {
+  const std::string t = "material.finite_volume.fast";
+  const std::string fv = "material.finite_volume=";
+  const std::string si = "material.finite_volume.";
+  auto row = [&](const char* key) { return Row(t, key).On(Base::kFiniteVolume); };
+  return {
+      row("W")
+          .Is("", "g/m²", "> 0")
+          .Doc("→ the areal density (kg/m²), replacing `material.density`: ρ = W / 1000")
+          .Example({"material={model: finite_volume, finite_volume: {E_warp: 1000, E_weft: 1000, "
+                    "G: 10, D_warp: 1e-5, D_weft: 1e-5, fast: {W: 150}}}"},
+                   "material.density", "0.15"),
+      row("B_warp")
+          .Is("", "µN·m", "> 0")
+          .Doc("→ `D_warp` (N·m): D = B × 1e-6")
+          .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_weft: 1e-5, fast: {B_warp: 7.5}}"},
+                   si + "D_warp", "7.5e-06"),
+      row("B_weft")
+          .Is("", "µN·m", "> 0")
+          .Doc("→ `D_weft` (N·m), as `B_warp`")
+          .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, fast: {B_weft: 7.5}}"},
+                   si + "D_weft", "7.5e-06"),
+      row("EB5")
+          .Is("", "%", "> 0")
+          .Doc("the bias extensibility at 5 gf/cm → `G` (N/m): FAST's G = 123 / EB5")
+          .Example({fv + "{E_warp: 1000, E_weft: 1000, D_warp: 1e-5, D_weft: 1e-5, fast: {EB5: 2}}"},
+                   si + "G", "61.5"),
+      row("E100_warp")
+          .Is("", "%", "> 0")
+          .Doc("the extensibility at 100 gf/cm → `E_warp` (N/m): E = 98.0665 / (E100/100)")
+          .Example({fv + "{E_weft: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, fast: {E100_warp: 2}}"},
+                   si + "E_warp", "4903.325"),
+      row("E100_weft")
+          .Is("", "%", "> 0")
+          .Doc("→ `E_weft` (N/m), as `E100_warp`")
+          .Example({fv + "{E_warp: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, fast: {E100_weft: 2}}"},
+                   si + "E_weft", "4903.325"),
   };
 }
 
@@ -1011,7 +1058,7 @@ std::vector<SchemaRow> ContactSolverOutput() {
 std::vector<SchemaRow> AllRows() {
   std::vector<SchemaRow> rows;
   for (auto part :
-       {TopLevel, DrapeTest, Mesh, Material, Lines, Springs, FiniteVolume, Kes, BendingLength,
+       {TopLevel, DrapeTest, Mesh, Material, Lines, Springs, FiniteVolume, Kes, Fast, BendingLength,
         Regions, NodeSelections, Fixed, Loads, Forces, Obstacles, ContactSolverOutput}) {
     for (SchemaRow& row : part()) rows.push_back(std::move(row));
   }

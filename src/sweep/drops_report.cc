@@ -9,6 +9,7 @@
 #include "src/output/axis_ticks.h"
 #include "src/output/html_text.h"
 #include "src/output/json.h"
+#include "src/output/svg_chart.h"
 #include "src/output/provenance.h"
 #include "src/output/writers.h"
 #include "src/scene/drape_test.h"
@@ -23,89 +24,6 @@ constexpr double kStiffAbove = 0.85;
 constexpr double kSmallSpecimen = 0.24;
 constexpr double kStandardSpecimen = 0.30;
 constexpr double kLargeSpecimen = 0.36;
-
-std::string Fixed(double value, int decimals) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
-
-// Distinct colours for up to ten drops, then repeated.
-std::string Colour(int index) {
-  static const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
-                                         "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"};
-  return kColours[index % 10];
-}
-
-// An SVG picture written as text: elements in pixel coordinates, the title first (what a screen
-// reader and a tooltip say).
-class Svg {
- public:
-  Svg(int width, int height, const std::string& title) {
-    out_ << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
-         << height << "\" viewBox=\"0 0 " << width << ' ' << height << "\" role=\"img\">"
-         << "<title>" << HtmlText(title) << "</title>"
-         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>";
-  }
-  void Line(double x0, double y0, double x1, double y1, const std::string& style) {
-    out_ << "<line x1=\"" << Px(x0) << "\" y1=\"" << Px(y0) << "\" x2=\"" << Px(x1) << "\" y2=\""
-         << Px(y1) << "\" style=\"" << style << "\"/>";
-  }
-  void Circle(double x, double y, double r, const std::string& style) {
-    out_ << "<circle cx=\"" << Px(x) << "\" cy=\"" << Px(y) << "\" r=\"" << Px(r) << "\" style=\""
-         << style << "\"/>";
-  }
-  void Rect(double x, double y, double w, double h, const std::string& style) {
-    out_ << "<rect x=\"" << Px(x) << "\" y=\"" << Px(y) << "\" width=\"" << Px(w) << "\" height=\""
-         << Px(h) << "\" style=\"" << style << "\"/>";
-  }
-  void Polyline(const std::vector<std::array<double, 2>>& points, bool closed,
-                const std::string& style) {
-    out_ << (closed ? "<polygon" : "<polyline") << " points=\"";
-    for (const auto& p : points) out_ << Px(p[0]) << ',' << Px(p[1]) << ' ';
-    out_ << "\" style=\"fill:none;" << style << "\"/>";
-  }
-  void Text(double x, double y, const std::string& text, const std::string& anchor = "middle",
-            int size = 12) {
-    out_ << "<text x=\"" << Px(x) << "\" y=\"" << Px(y) << "\" font-family=\"sans-serif\" "
-         << "font-size=\"" << size << "\" text-anchor=\"" << anchor << "\">" << HtmlText(text)
-         << "</text>";
-  }
-  std::string Close() { return out_.str() + "</svg>"; }
-
- private:
-  static std::string Px(double v) { return Fixed(v, 1); }
-  std::ostringstream out_;
-};
-
-// A plot's data window in its pixel frame.
-struct Axes {
-  double x0, x1, y0, y1;                                  // data
-  double left = 60, top = 30, width = 400, height = 240;  // pixels
-  double X(double x) const { return left + (x - x0) / (x1 - x0) * width; }
-  double Y(double y) const { return top + height - (y - y0) / (y1 - y0) * height; }
-};
-
-std::string TickText(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-void DrawAxes(Svg* svg, const Axes& a, const std::string& x_label, const std::string& y_label,
-              const std::vector<double>& x_ticks, const std::vector<double>& y_ticks) {
-  const std::string axis = "stroke:black;stroke-width:1";
-  const std::string grid = "stroke:#ddd;stroke-width:1";
-  for (double t : y_ticks) {
-    svg->Line(a.left, a.Y(t), a.left + a.width, a.Y(t), grid);
-    svg->Text(a.left - 6, a.Y(t) + 4, TickText(t), "end", 11);
-  }
-  for (double t : x_ticks) svg->Text(a.X(t), a.top + a.height + 16, TickText(t), "middle", 11);
-  svg->Line(a.left, a.top + a.height, a.left + a.width, a.top + a.height, axis);
-  svg->Line(a.left, a.top, a.left, a.top + a.height, axis);
-  svg->Text(a.left + a.width / 2, a.top + a.height + 34, x_label);
-  svg->Text(14, a.top - 12, y_label, "start");
-}
 
 double TestDiscRadius(const Scene& scene) { return scene.drape_test->disc_diameter / 2; }
 double TestSpecimenRadius(const Scene& scene) { return scene.drape_test->specimen_diameter / 2; }
@@ -129,7 +47,7 @@ std::string OutlinesFigure(const Scene& scene, const DropsSummary& summary) {
   auto to_pixels = [&](double x, double y) -> std::array<double, 2> {
     return {(x + reach) * scale, (reach - y) * scale};
   };
-  Svg svg(size, size,
+  SvgPicture svg(size, size,
           "Shadow outlines of " + std::to_string(summary.drops.size()) +
               " drops seen from above, over the disc and the flat specimen");
   svg.Circle(size / 2.0, size / 2.0, TestSpecimenRadius(scene) * scale,
@@ -145,11 +63,11 @@ std::string OutlinesFigure(const Scene& scene, const DropsSummary& summary) {
       points.push_back(to_pixels(p[0], p[1]));
     const bool counted = summary.drops[k].counted;
     svg.Polyline(points, true,
-                 "stroke:" + Colour(static_cast<int>(k)) + ";stroke-width:1.5;stroke-opacity:0.8" +
+                 "stroke:" + SeriesColour(static_cast<int>(k)) + ";stroke-width:1.5;stroke-opacity:0.8" +
                      (counted ? "" : ";stroke-dasharray:3,3"));
   }
-  svg.Text(size / 2.0, disc_centre[1] + 4, "disc " + Fixed(200 * TestDiscRadius(scene), 0) + " cm");
-  svg.Text(size / 2.0, 14, "flat specimen " + Fixed(200 * TestSpecimenRadius(scene), 0) + " cm");
+  svg.Text(size / 2.0, disc_centre[1] + 4, "disc " + FixedText(200 * TestDiscRadius(scene), 0) + " cm");
+  svg.Text(size / 2.0, 14, "flat specimen " + FixedText(200 * TestSpecimenRadius(scene), 0) + " cm");
   return svg.Close();
 }
 
@@ -157,9 +75,9 @@ std::string OutlinesFigure(const Scene& scene, const DropsSummary& summary) {
 std::string Histogram(const std::string& title, const std::string& x_label,
                       const std::vector<double>& centres, const std::vector<int>& counts,
                       double bar, const std::vector<double>& x_ticks, double mean, double sd) {
-  Axes a{centres.front() - bar, centres.back() + bar, 0.0,
+  ChartAxes a{centres.front() - bar, centres.back() + bar, 0.0,
          static_cast<double>(*std::max_element(counts.begin(), counts.end())) + 0.5};
-  Svg svg(480, 320, title);
+  SvgPicture svg(480, 320, title);
   if (sd > 0.0) {
     svg.Rect(a.X(std::max(a.x0, mean - sd)), a.top,
              a.X(std::min(a.x1, mean + sd)) - a.X(std::max(a.x0, mean - sd)), a.height,
@@ -167,7 +85,7 @@ std::string Histogram(const std::string& title, const std::string& x_label,
   }
   std::vector<double> y_ticks;
   for (int c = 0; c <= a.y1; ++c) y_ticks.push_back(c);
-  DrawAxes(&svg, a, x_label, "drops", x_ticks, y_ticks);
+  DrawChartAxes(&svg, a, x_label, "drops", x_ticks, y_ticks);
   for (size_t k = 0; k < centres.size(); ++k) {
     if (counts[k] == 0) continue;
     svg.Rect(a.X(centres[k] - 0.45 * bar), a.Y(counts[k]),
@@ -227,10 +145,10 @@ std::string FoldsHistogram(const DropsSummary& summary) {
 
 // r(θ) of every drop, with the disc's and the specimen's radii.
 std::string ProfilesFigure(const Scene& scene, const DropsSummary& summary) {
-  Axes a{0.0, 360.0, 100 * TestDiscRadius(scene) * 0.95, 100 * TestSpecimenRadius(scene) * 1.02};
+  ChartAxes a{0.0, 360.0, 100 * TestDiscRadius(scene) * 0.95, 100 * TestSpecimenRadius(scene) * 1.02};
   a.width = 640;
-  Svg svg(740, 320, "Radial profiles r(θ) of the drops' shadows around the disc's centre");
-  DrawAxes(&svg, a, "θ (degrees from the warp, x)", "r (cm)", AxisTicks(0, 360, 8),
+  SvgPicture svg(740, 320, "Radial profiles r(θ) of the drops' shadows around the disc's centre");
+  DrawChartAxes(&svg, a, "θ (degrees from the warp, x)", "r (cm)", AxisTicks(0, 360, 8),
            AxisTicks(a.y0, a.y1, 5));
   svg.Line(a.X(0), a.Y(100 * TestDiscRadius(scene)), a.X(360), a.Y(100 * TestDiscRadius(scene)),
            "stroke:#555;stroke-dasharray:6,4");
@@ -245,7 +163,7 @@ std::string ProfilesFigure(const Scene& scene, const DropsSummary& summary) {
       points.push_back({a.X(360.0 * j / radius.size()), a.Y(100 * r)});
     }
     svg.Polyline(points, false,
-                 "stroke:" + Colour(static_cast<int>(k)) + ";stroke-width:1.2;stroke-opacity:0.8");
+                 "stroke:" + SeriesColour(static_cast<int>(k)) + ";stroke-width:1.2;stroke-opacity:0.8");
   }
   return svg.Close();
 }
@@ -256,9 +174,9 @@ void WriteDropsTable(const DropsSummary& summary, std::ostream& html) {
   for (size_t k = 0; k < summary.drops.size(); ++k) {
     const DropRecord& d = summary.drops[k];
     const std::string folder = DropFolderName(d.drop, static_cast<int>(summary.drops.size()));
-    html << "<tr><td><span style=\"color:" << Colour(static_cast<int>(k)) << "\">&#9632;</span> "
-         << d.drop << "</td><td>(" << Fixed(1e3 * d.offset.x(), 2) << ", "
-         << Fixed(1e3 * d.offset.y(), 2) << ")</td><td>" << Fixed(d.drape_coefficient, 3)
+    html << "<tr><td><span style=\"color:" << SeriesColour(static_cast<int>(k)) << "\">&#9632;</span> "
+         << d.drop << "</td><td>(" << FixedText(1e3 * d.offset.x(), 2) << ", "
+         << FixedText(1e3 * d.offset.y(), 2) << ")</td><td>" << FixedText(d.drape_coefficient, 3)
          << "</td><td>" << d.folds << "</td><td>" << RoundedNumber(d.energy, 6) << "</td><td>"
          << (d.counted ? "yes" : "no") << "</td><td>" << HtmlText(d.state) << "</td><td><a href=\""
          << folder << "/\">" << folder << "</a></td></tr>\n";
@@ -282,12 +200,12 @@ void WriteFabric(const Scene& scene, std::ostream& html) {
 std::optional<std::string> SpecimenSizeAdvice(double specimen_diameter, double dc) {
   if (std::abs(specimen_diameter - kStandardSpecimen) > 1e-9) return std::nullopt;
   auto advise = [&](double diameter, const std::string& why) {
-    return "the drape coefficient " + Fixed(dc, 3) + " is " + why + ": BS 5058 and ISO 9073-9 " +
-           "test such a fabric with a " + Fixed(100 * diameter, 0) +
-           " cm specimen (--set drape_test.specimen_diameter=" + Fixed(diameter, 2) + ")";
+    return "the drape coefficient " + FixedText(dc, 3) + " is " + why + ": BS 5058 and ISO 9073-9 " +
+           "test such a fabric with a " + FixedText(100 * diameter, 0) +
+           " cm specimen (--set drape_test.specimen_diameter=" + FixedText(diameter, 2) + ")";
   };
-  if (dc < kLimpBelow) return advise(kSmallSpecimen, "below " + Fixed(kLimpBelow, 2));
-  if (dc > kStiffAbove) return advise(kLargeSpecimen, "above " + Fixed(kStiffAbove, 2));
+  if (dc < kLimpBelow) return advise(kSmallSpecimen, "below " + FixedText(kLimpBelow, 2));
+  if (dc > kStiffAbove) return advise(kLargeSpecimen, "above " + FixedText(kStiffAbove, 2));
   return std::nullopt;
 }
 

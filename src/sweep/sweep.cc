@@ -54,21 +54,6 @@ const std::vector<std::string> kResultColumns = {"converged",
                                                  "warm_start_from",
                                                  "drape_version"};
 
-std::string CsvLine(const std::vector<std::string>& cells) {
-  std::string line;
-  for (size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + CsvField(cells[k]);
-  return line;
-}
-
-// FNV-1a, 64 bits: a fingerprint of the base scene's text for the task identities.
-std::string Fingerprint(const std::string& bytes) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
-  char text[20];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
-  return text;
-}
-
 // The cells of task `task` before its results: number, values, repeat.
 std::vector<std::string> TaskCells(const SweepSpec& spec, int task) {
   std::vector<std::string> cells = {std::to_string(task)};
@@ -455,6 +440,20 @@ std::vector<std::string> TaskIdentities(const SweepSpec& spec) {
     }
   }
   return identities;
+}
+
+std::string CsvLine(const std::vector<std::string>& cells) {
+  std::string line;
+  for (size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + CsvField(cells[k]);
+  return line;
+}
+
+std::string Fingerprint(const std::string& bytes) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
+  char text[20];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
 }
 
 std::vector<std::string> SplitCsvLine(const std::string& line) {

@@ -1,0 +1,57 @@
+// Charts drawn as inline SVG text: the pictures of the reports that stand alone without any
+// program beside drape (the drops report, the fabrics report). Pixel coordinates, the title first
+// (what a screen reader and a tooltip say), numbers with one decimal.
+#ifndef DRAPE_SRC_OUTPUT_SVG_CHART_H_
+#define DRAPE_SRC_OUTPUT_SVG_CHART_H_
+
+#include <array>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace drape {
+
+// `value` with `decimals` decimals ("%.*f").
+std::string FixedText(double value, int decimals);
+
+// Distinct colours for up to ten series, then repeated.
+std::string SeriesColour(int index);
+
+class SvgPicture {
+ public:
+  SvgPicture(int width, int height, const std::string& title);
+  void Line(double x0, double y0, double x1, double y1, const std::string& style);
+  void Circle(double x, double y, double r, const std::string& style);
+  void Rect(double x, double y, double w, double h, const std::string& style);
+  void Polyline(const std::vector<std::array<double, 2>>& points, bool closed,
+                const std::string& style);
+  void Text(double x, double y, const std::string& text, const std::string& anchor = "middle",
+            int size = 12);
+  // Text with a tooltip (an SVG <title> child): what a pointer over it shows.
+  void TitledCircle(double x, double y, double r, const std::string& style,
+                    const std::string& tooltip);
+  std::string Close();
+
+ private:
+  std::ostringstream out_;
+};
+
+// A chart's data window in its pixel frame.
+struct ChartAxes {
+  double x0, x1, y0, y1;                                  // data
+  double left = 60, top = 30, width = 400, height = 240;  // pixels
+  double X(double x) const { return left + (x - x0) / (x1 - x0) * width; }
+  double Y(double y) const { return top + height - (y - y0) / (y1 - y0) * height; }
+};
+
+// "%g" of a tick.
+std::string TickText(double value);
+
+// The frame, the grid at `y_ticks`, the tick labels and the axis labels.
+void DrawChartAxes(SvgPicture* svg, const ChartAxes& axes, const std::string& x_label,
+                   const std::string& y_label, const std::vector<double>& x_ticks,
+                   const std::vector<double>& y_ticks);
+
+}  // namespace drape
+
+#endif  // DRAPE_SRC_OUTPUT_SVG_CHART_H_
