@@ -304,6 +304,40 @@ TEST_F(CliTest, KesInputsAreReportedInSiUnits) {
   EXPECT_EQ(material["G"].as<double>(), KesShearRigidity(0.9));
   EXPECT_EQ(material["E_weft"].as<double>(), KesTensileRigidity(7.0, 0.70));
   EXPECT_EQ(material["density"].as<double>(), KesArealDensity(12.0));
+  // The measurements as given, in the lab's units, beside the SI values.
+  EXPECT_NE(check.out.find("material as given: kes.B_warp 0.2 gf·cm²/cm;"), std::string::npos)
+      << check.out;
+  const YAML::Node given = Summary(out_)["material_as_given"];
+  EXPECT_EQ(given["kes.B_warp"].as<double>(), 0.12);
+  EXPECT_EQ(given["kes.W"].as<double>(), 12.0);
+  EXPECT_EQ(given["units"]["kes.G"].as<std::string>(), "gf/(cm·deg)");
+}
+
+// `drape fabrics` refuses a bad table with its row and column, exit 2, and writes nothing; a good
+// one prints the statistics line and writes the table, its statistics and its report.
+TEST_F(CliTest, FabricsRefusesABadTableAndWritesNothing) {
+  const fs::path table = directory_ / "fabrics.csv";
+  const std::string header =
+      "name,kes.W,kes.B_warp,kes.B_weft,kes.G,kes.EMT_warp,kes.EMT_weft,measured_dc\n";
+  std::ofstream(table) << header << "a,12,0.12,0.08,0.9,4,7,0.7\nb,12,-0.1,0.08,0.9,4,7,0.5\n";
+  const ProgramOutcome bad = Drape({"fabrics", table.string(), "-o", out_.string()});
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_NE(bad.err.find("fabrics.csv:3:3: kes.B_warp: must be positive, got -0.1"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(out_));
+  std::ofstream(table) << header << "a,12,0.12,0.08,0.9,4,7,0.7\n";
+  const ProgramOutcome good =
+      Drape({"fabrics", table.string(), "-o", out_.string(), "--set", "mesh.spacing=0.05"});
+  ASSERT_EQ(good.exit_status, 0) << good.err;
+  EXPECT_NE(good.out.find("1 fabric: 1 predicted"), std::string::npos) << good.out;
+  EXPECT_NE(good.out.find("against 1 measured: mean |Δ|"), std::string::npos) << good.out;
+  for (const char* file : {"fabrics.csv", "fabrics.json", "report.html"}) {
+    EXPECT_TRUE(fs::exists(out_ / file)) << file;
+  }
+  EXPECT_EQ(
+      YAML::LoadFile((out_ / "fabrics.json").string())["statistics"]["fabrics_compared"].as<int>(),
+      1);
 }
 
 TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {

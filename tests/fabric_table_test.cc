@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "src/scene/scene_schema.h"
 #include "src/sweep/fabrics.h"
 #include "tests/scratch_folder.h"
+#include "tests/test_paths.h"
 
 namespace drape {
 namespace {
@@ -40,9 +43,9 @@ class FabricTableTest : public ::testing::Test {
 TEST_F(FabricTableTest, TheMaterialColumnsAreTheSchemasKeys) {
   std::vector<std::string> names;
   for (const FabricColumn& column : FabricColumns()) names.push_back(column.name);
-  for (const char* expected : {"density", "D_warp", "D_66", "kes.W", "kes.B_warp", "kes.2HB_warp",
-                               "fast.W", "fast.EB5", "fast.E100_weft", "bending_length.bias",
-                               "bending_friction_warp"}) {
+  for (const char* expected :
+       {"density", "D_warp", "D_66", "kes.W", "kes.B_warp", "kes.2HB_warp", "fast.W", "fast.EB5",
+        "fast.E100_weft", "bending_length.bias", "bending_friction_warp"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
   }
   for (const FabricColumn& column : FabricColumns()) {
@@ -92,6 +95,22 @@ TEST_F(FabricTableTest, KesFastAndBendingLengthRowsGiveTheScenesSiParameters) {
   EXPECT_EQ(spec.fabrics[1].folder, "fabrics/002-fast");
 }
 
+// Every shipped table (configs/fabrics/*.csv) loads: its columns, its values and every row's scene.
+TEST_F(FabricTableTest, TheShippedTablesLoad) {
+  int tables = 0;
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(drape_tests::kSourceDir) / "configs/fabrics")) {
+    if (entry.path().extension() != ".csv") continue;
+    FabricsOptions options;
+    options.table = entry.path().string();
+    options.out = (scratch_.path() / "out").string();
+    const FabricsSpec spec = LoadFabrics(options);
+    EXPECT_FALSE(spec.fabrics.empty()) << entry.path();
+    ++tables;
+  }
+  EXPECT_GE(tables, 1);
+}
+
 // --set applies to every fabric after its material; the row's specimen_diameter to its own.
 TEST_F(FabricTableTest, SetAndTheSpecimenDiameterApply) {
   const FabricsSpec spec = Load(
@@ -106,6 +125,28 @@ TEST_F(FabricTableTest, SetAndTheSpecimenDiameterApply) {
   EXPECT_EQ(*spec.fabrics[0].row.measured_dc, 0.5);
   EXPECT_EQ(*spec.fabrics[0].row.measured_dc_sd, 0.02);
   EXPECT_FALSE(spec.fabrics[1].row.measured_dc);
+}
+
+// docs/reference.md lists the columns as FabricColumns() has them (DRAPE_WRITE_SCHEMA_DOCS=1
+// writes the block instead of comparing it).
+TEST(FabricColumns, TheReferenceListsThem) {
+  const std::string path = std::string(drape_tests::kSourceDir) + "/docs/reference.md";
+  std::ifstream in(path);
+  std::stringstream whole;
+  whole << in.rdbuf();
+  std::string doc = whole.str();
+  const std::string begin = "<!-- fabric-columns -->\n", end = "<!-- /fabric-columns -->";
+  const size_t from = doc.find(begin), to = doc.find(end);
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  const size_t start = from + begin.size();
+  if (std::getenv("DRAPE_WRITE_SCHEMA_DOCS") != nullptr) {
+    doc.replace(start, to - start, FabricColumnsMarkdown());
+    std::ofstream(path) << doc;
+    return;
+  }
+  EXPECT_EQ(doc.substr(start, to - start), FabricColumnsMarkdown())
+      << "docs/reference.md's fabric columns are not FabricColumns(): regenerate them";
 }
 
 struct BadTable {
@@ -133,11 +174,12 @@ std::vector<BadTable> BadTables() {
       {"TextInANumber", good + "a,12,abc,0.08,0.9,4,7\n", "2:3: kes.B_warp",
        "expected a number (gf·cm²/cm), got 'abc'"},
       {"NotFinite", good + "a,12,nan,0.08,0.9,4,7\n", "2:3: kes.B_warp", "expected a number"},
-      {"TwoWays", "name,kes.W,D_warp,kes.B_warp,kes.B_weft,kes.G,kes.EMT_warp,kes.EMT_weft\n"
-                  "a,12,1e-5,0.1,0.08,0.9,4,7\n",
+      {"TwoWays",
+       "name,kes.W,D_warp,kes.B_warp,kes.B_weft,kes.G,kes.EMT_warp,kes.EMT_weft\n"
+       "a,12,1e-5,0.1,0.08,0.9,4,7\n",
        "2:4: kes.B_warp", "give D_warp in one way only"},
-      {"MissingParameter", "name,kes.W,kes.B_warp,kes.G\na,12,0.1,0.9\n", "2:1:",
-       "fabric 'a': required key 'E_warp' is missing"},
+      {"MissingParameter", "name,kes.W,kes.B_warp,kes.G\na,12,0.1,0.9\n",
+       "2:1:", "fabric 'a': required key 'E_warp' is missing"},
       {"TooManyCells", good + "a,12,0.1,0.08,0.9,4,7,9\n", "2:8:", "the row has 8 cells"},
       {"TooFewCells", good + "a,12,0.1\n", "2:4:", "the row has 3 cells, the header 7"},
       {"NameTwice", good + "a,12,0.1,0.08,0.9,4,7\na,12,0.1,0.08,0.9,4,7\n", "3:1: name",
@@ -148,7 +190,8 @@ std::vector<BadTable> BadTables() {
       {"DcOutOfRange", "name,measured_dc\na,1.2\n", "2:2: measured_dc", "a fraction in [0, 1]"},
       {"SdWithoutDc", "name,measured_dc_sd\na,0.1\n", "2:2: measured_dc_sd",
        "a standard deviation without measured_dc"},
-      {"BadSpecimen", good.substr(0, good.size() - 1) + ",specimen_diameter\na,12,0.1,0.08,0.9,4,7,-1\n",
+      {"BadSpecimen",
+       good.substr(0, good.size() - 1) + ",specimen_diameter\na,12,0.1,0.08,0.9,4,7,-1\n",
        "2:8: specimen_diameter", "must be positive"},
   };
 }

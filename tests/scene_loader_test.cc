@@ -1,6 +1,5 @@
 // Scene loading: every key of docs/reference.md's scene reference, the defaults, `--set` overrides,
 // and every bad input rejected with "file:line:column: key.path: what is wrong".
-#include "src/scene/fabric_parameters.h"
 #include "src/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "src/scene/fabric_parameters.h"
 #include "src/scene/solver_methods.h"
 #include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
@@ -877,8 +877,8 @@ material:
   EXPECT_NEAR(fv.G, 61.5, 1e-12);
   EXPECT_NEAR(fv.E_warp, 4903.325, 1e-9);
   EXPECT_NEAR(fv.E_weft, 2451.6625, 1e-9);
-  const std::vector<std::string> keys = {"fast.W",         "fast.B_warp",      "fast.EB5",
-                                         "fast.E100_warp", "fast.E100_weft",   "bending_length.weft"};
+  const std::vector<std::string> keys = {"fast.W",         "fast.B_warp",    "fast.EB5",
+                                         "fast.E100_warp", "fast.E100_weft", "bending_length.weft"};
   ASSERT_EQ(fv.measured.size(), keys.size());
   for (size_t k = 0; k < keys.size(); ++k) EXPECT_EQ(fv.measured[k].key, keys[k]);
   EXPECT_EQ(fv.measured[0].unit, "g/m²");
@@ -965,12 +965,14 @@ std::vector<BadScene> FabricParameterBadScenes() {
        "4:3: material.density",
        "give the mass in one way only: 'density' and "
        "finite_volume.kes.W are both given"},
-      {"KesAndFastWeight", FiniteVolumeWith(4, 4, "",
-                                            FiniteVolumeWith(8, 8, "    G: 5\n    kes: {W: 12}\n    fast: {W: 120}")),
+      {"KesAndFastWeight",
+       FiniteVolumeWith(4, 4, "",
+                        FiniteVolumeWith(8, 8, "    G: 5\n    kes: {W: 12}\n    fast: {W: 120}")),
        "9:15: material.finite_volume.fast.W",
        "give the mass in one way only: finite_volume.kes.W and finite_volume.fast.W are both "
        "given"},
-      {"KesAndFastBending", FiniteVolumeWith(8, 9, "    G: 5\n    kes: {B_warp: 0.1}\n    fast: {B_warp: 9}"),
+      {"KesAndFastBending",
+       FiniteVolumeWith(8, 9, "    G: 5\n    kes: {B_warp: 0.1}\n    fast: {B_warp: 9}"),
        "10:20: material.finite_volume.fast.B_warp",
        "give D_warp in one way only: 'kes.B_warp' is given too"},
       {"BendingLengthWithoutArealDensity",

@@ -548,7 +548,7 @@ int Fabrics(FabricsArguments arguments, const std::string& command_line, std::os
   out << FabricsLine(summary) << "; results in " << summary.directory << "/fabrics.csv"
       << std::endl;
   return summary.predicted == summary.fabrics && !summary.interrupted ? kExitConverged
-                                                                       : kExitNotConverged;
+                                                                      : kExitNotConverged;
 }
 
 // The catalogue (src/scene/solver_methods.h): each method, its default limits and every option

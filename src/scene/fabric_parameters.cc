@@ -1,4 +1,5 @@
-// Conversions of KES-FB, SiroFAST and Peirce measurements; formulas and sources in fabric_parameters.h.
+// Conversions of KES-FB, SiroFAST and Peirce measurements; formulas and sources in
+// fabric_parameters.h.
 #include "src/scene/fabric_parameters.h"
 
 #include <cassert>

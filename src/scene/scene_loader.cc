@@ -495,10 +495,12 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
     return FastBendingRigidity(ReadPositive(v));
   };
   const auto fast_tensile = [](const YamlValue& v) { return FastTensileRigidity(ReadPositive(v)); };
-  fv.E_warp = ReadParameter(map, "E_warp", "N/m",
-                            {kes_way("warp"), {"fast.E100_warp", find(fast, "E100_warp"), fast_tensile}});
-  fv.E_weft = ReadParameter(map, "E_weft", "N/m",
-                            {kes_way("weft"), {"fast.E100_weft", find(fast, "E100_weft"), fast_tensile}});
+  fv.E_warp =
+      ReadParameter(map, "E_warp", "N/m",
+                    {kes_way("warp"), {"fast.E100_warp", find(fast, "E100_warp"), fast_tensile}});
+  fv.E_weft =
+      ReadParameter(map, "E_weft", "N/m",
+                    {kes_way("weft"), {"fast.E100_weft", find(fast, "E100_weft"), fast_tensile}});
   fv.G = ReadParameter(map, "G", "N/m",
                        {{"kes.G", find(kes, "G"),
                          [](const YamlValue& v) { return KesShearRigidity(ReadPositive(v)); }},
@@ -588,8 +590,9 @@ ArealDensity ReadFiniteVolumeMass(const YamlMap& map, MaterialSpec* material) {
       const auto w = YamlMap(*measured).Find("W");
       if (!w) continue;
       if (weight) {
-        Fail(*w, "give the mass in one way only: finite_volume.kes.W and finite_volume.fast.W are "
-                 "both given");
+        Fail(*w,
+             "give the mass in one way only: finite_volume.kes.W and finite_volume.fast.W are "
+             "both given");
       }
       weight = w;
       weight_key = std::string("finite_volume.") + block + ".W";
@@ -610,7 +613,8 @@ ArealDensity ReadFiniteVolumeMass(const YamlMap& map, MaterialSpec* material) {
   }
   material->mass_kind = MaterialSpec::MassKind::kDensity;
   const double w = ReadPositive(*weight);
-  material->mass_value = weight_key == "finite_volume.kes.W" ? KesArealDensity(w) : FastArealDensity(w);
+  material->mass_value =
+      weight_key == "finite_volume.kes.W" ? KesArealDensity(w) : FastArealDensity(w);
   return {material->mass_value, ""};
 }
 

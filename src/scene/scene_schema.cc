@@ -663,8 +663,9 @@ std::vector<SchemaRow> Fast() {
       row("EB5")
           .Is("", "%", "> 0")
           .Doc("the bias extensibility at 5 gf/cm → `G` (N/m): FAST's G = 123 / EB5")
-          .Example({fv + "{E_warp: 1000, E_weft: 1000, D_warp: 1e-5, D_weft: 1e-5, fast: {EB5: 2}}"},
-                   si + "G", "61.5"),
+          .Example(
+              {fv + "{E_warp: 1000, E_weft: 1000, D_warp: 1e-5, D_weft: 1e-5, fast: {EB5: 2}}"},
+              si + "G", "61.5"),
       row("E100_warp")
           .Is("", "%", "> 0")
           .Doc("the extensibility at 100 gf/cm → `E_warp` (N/m): E = 98.0665 / (E100/100)")

@@ -9,8 +9,8 @@
 #include "src/output/axis_ticks.h"
 #include "src/output/html_text.h"
 #include "src/output/json.h"
-#include "src/output/svg_chart.h"
 #include "src/output/provenance.h"
+#include "src/output/svg_chart.h"
 #include "src/output/writers.h"
 #include "src/scene/drape_test.h"
 #include "src/scene/material_models.h"
@@ -48,8 +48,8 @@ std::string OutlinesFigure(const Scene& scene, const DropsSummary& summary) {
     return {(x + reach) * scale, (reach - y) * scale};
   };
   SvgPicture svg(size, size,
-          "Shadow outlines of " + std::to_string(summary.drops.size()) +
-              " drops seen from above, over the disc and the flat specimen");
+                 "Shadow outlines of " + std::to_string(summary.drops.size()) +
+                     " drops seen from above, over the disc and the flat specimen");
   svg.Circle(size / 2.0, size / 2.0, TestSpecimenRadius(scene) * scale,
              "fill:none;stroke:#888;stroke-dasharray:6,4");
   const Eigen::Vector2d& disc = scene.drape_test->offset;
@@ -63,11 +63,14 @@ std::string OutlinesFigure(const Scene& scene, const DropsSummary& summary) {
       points.push_back(to_pixels(p[0], p[1]));
     const bool counted = summary.drops[k].counted;
     svg.Polyline(points, true,
-                 "stroke:" + SeriesColour(static_cast<int>(k)) + ";stroke-width:1.5;stroke-opacity:0.8" +
+                 "stroke:" + SeriesColour(static_cast<int>(k)) +
+                     ";stroke-width:1.5;stroke-opacity:0.8" +
                      (counted ? "" : ";stroke-dasharray:3,3"));
   }
-  svg.Text(size / 2.0, disc_centre[1] + 4, "disc " + FixedText(200 * TestDiscRadius(scene), 0) + " cm");
-  svg.Text(size / 2.0, 14, "flat specimen " + FixedText(200 * TestSpecimenRadius(scene), 0) + " cm");
+  svg.Text(size / 2.0, disc_centre[1] + 4,
+           "disc " + FixedText(200 * TestDiscRadius(scene), 0) + " cm");
+  svg.Text(size / 2.0, 14,
+           "flat specimen " + FixedText(200 * TestSpecimenRadius(scene), 0) + " cm");
   return svg.Close();
 }
 
@@ -76,7 +79,7 @@ std::string Histogram(const std::string& title, const std::string& x_label,
                       const std::vector<double>& centres, const std::vector<int>& counts,
                       double bar, const std::vector<double>& x_ticks, double mean, double sd) {
   ChartAxes a{centres.front() - bar, centres.back() + bar, 0.0,
-         static_cast<double>(*std::max_element(counts.begin(), counts.end())) + 0.5};
+              static_cast<double>(*std::max_element(counts.begin(), counts.end())) + 0.5};
   SvgPicture svg(480, 320, title);
   if (sd > 0.0) {
     svg.Rect(a.X(std::max(a.x0, mean - sd)), a.top,
@@ -145,11 +148,12 @@ std::string FoldsHistogram(const DropsSummary& summary) {
 
 // r(θ) of every drop, with the disc's and the specimen's radii.
 std::string ProfilesFigure(const Scene& scene, const DropsSummary& summary) {
-  ChartAxes a{0.0, 360.0, 100 * TestDiscRadius(scene) * 0.95, 100 * TestSpecimenRadius(scene) * 1.02};
+  ChartAxes a{0.0, 360.0, 100 * TestDiscRadius(scene) * 0.95,
+              100 * TestSpecimenRadius(scene) * 1.02};
   a.width = 640;
   SvgPicture svg(740, 320, "Radial profiles r(θ) of the drops' shadows around the disc's centre");
   DrawChartAxes(&svg, a, "θ (degrees from the warp, x)", "r (cm)", AxisTicks(0, 360, 8),
-           AxisTicks(a.y0, a.y1, 5));
+                AxisTicks(a.y0, a.y1, 5));
   svg.Line(a.X(0), a.Y(100 * TestDiscRadius(scene)), a.X(360), a.Y(100 * TestDiscRadius(scene)),
            "stroke:#555;stroke-dasharray:6,4");
   svg.Line(a.X(0), a.Y(100 * TestSpecimenRadius(scene)), a.X(360),
@@ -162,8 +166,9 @@ std::string ProfilesFigure(const Scene& scene, const DropsSummary& summary) {
       const double r = radius[j % radius.size()];
       points.push_back({a.X(360.0 * j / radius.size()), a.Y(100 * r)});
     }
-    svg.Polyline(points, false,
-                 "stroke:" + SeriesColour(static_cast<int>(k)) + ";stroke-width:1.2;stroke-opacity:0.8");
+    svg.Polyline(
+        points, false,
+        "stroke:" + SeriesColour(static_cast<int>(k)) + ";stroke-width:1.2;stroke-opacity:0.8");
   }
   return svg.Close();
 }
@@ -174,12 +179,13 @@ void WriteDropsTable(const DropsSummary& summary, std::ostream& html) {
   for (size_t k = 0; k < summary.drops.size(); ++k) {
     const DropRecord& d = summary.drops[k];
     const std::string folder = DropFolderName(d.drop, static_cast<int>(summary.drops.size()));
-    html << "<tr><td><span style=\"color:" << SeriesColour(static_cast<int>(k)) << "\">&#9632;</span> "
-         << d.drop << "</td><td>(" << FixedText(1e3 * d.offset.x(), 2) << ", "
-         << FixedText(1e3 * d.offset.y(), 2) << ")</td><td>" << FixedText(d.drape_coefficient, 3)
-         << "</td><td>" << d.folds << "</td><td>" << RoundedNumber(d.energy, 6) << "</td><td>"
-         << (d.counted ? "yes" : "no") << "</td><td>" << HtmlText(d.state) << "</td><td><a href=\""
-         << folder << "/\">" << folder << "</a></td></tr>\n";
+    html << "<tr><td><span style=\"color:" << SeriesColour(static_cast<int>(k))
+         << "\">&#9632;</span> " << d.drop << "</td><td>(" << FixedText(1e3 * d.offset.x(), 2)
+         << ", " << FixedText(1e3 * d.offset.y(), 2) << ")</td><td>"
+         << FixedText(d.drape_coefficient, 3) << "</td><td>" << d.folds << "</td><td>"
+         << RoundedNumber(d.energy, 6) << "</td><td>" << (d.counted ? "yes" : "no") << "</td><td>"
+         << HtmlText(d.state) << "</td><td><a href=\"" << folder << "/\">" << folder
+         << "</a></td></tr>\n";
   }
   html << "</table>\n";
 }
@@ -200,8 +206,9 @@ void WriteFabric(const Scene& scene, std::ostream& html) {
 std::optional<std::string> SpecimenSizeAdvice(double specimen_diameter, double dc) {
   if (std::abs(specimen_diameter - kStandardSpecimen) > 1e-9) return std::nullopt;
   auto advise = [&](double diameter, const std::string& why) {
-    return "the drape coefficient " + FixedText(dc, 3) + " is " + why + ": BS 5058 and ISO 9073-9 " +
-           "test such a fabric with a " + FixedText(100 * diameter, 0) +
+    return "the drape coefficient " + FixedText(dc, 3) + " is " + why +
+           ": BS 5058 and ISO 9073-9 " + "test such a fabric with a " +
+           FixedText(100 * diameter, 0) +
            " cm specimen (--set drape_test.specimen_diameter=" + FixedText(diameter, 2) + ")";
   };
   if (dc < kLimpBelow) return advise(kSmallSpecimen, "below " + FixedText(kLimpBelow, 2));

@@ -57,7 +57,8 @@ std::string ColumnSuggestion(const std::string& word) {
   for (const FabricColumn& column : FabricColumns()) {
     const std::string last = column.name.substr(column.name.rfind('.') + 1);
     if (word != column.name && (word == last || word.rfind(last + "_", 0) == 0)) {
-      matches.push_back("'" + column.name + "'" + (column.unit.empty() ? "" : " (" + column.unit + ")"));
+      matches.push_back("'" + column.name + "'" +
+                        (column.unit.empty() ? "" : " (" + column.unit + ")"));
     }
   }
   if (matches.empty()) {
@@ -87,7 +88,8 @@ Header ReadHeader(const std::string& file, int line, const std::vector<std::stri
     const auto found = known.find(word);
     if (found == known.end()) {
       FailAt(file, line, position, word,
-             word.empty() ? "an empty column name" : "unknown column '" + word + "'" + ColumnSuggestion(word));
+             word.empty() ? "an empty column name"
+                          : "unknown column '" + word + "'" + ColumnSuggestion(word));
     }
     if (!seen.insert(word).second) FailAt(file, line, position, word, "the column is given twice");
     header.columns.push_back(found->second);
@@ -117,7 +119,8 @@ void ReadRowNumbers(const std::string& file, FabricRow* row) {
       FailAt(file, cell.line, cell.position, cell.column->name, what);
     };
     if (kind == Kind::kMeasuredDc) {
-      if (value < 0.0 || value > 1.0) fail("a drape coefficient is a fraction in [0, 1], got " + cell.text);
+      if (value < 0.0 || value > 1.0)
+        fail("a drape coefficient is a fraction in [0, 1], got " + cell.text);
       row->measured_dc = value;
     } else if (kind == Kind::kMeasuredDcSd) {
       if (value < 0.0) fail("must not be negative, got " + cell.text);
@@ -128,7 +131,8 @@ void ReadRowNumbers(const std::string& file, FabricRow* row) {
   }
   if (row->measured_dc_sd && !row->measured_dc) {
     const FabricCell* sd = row->Cell("measured_dc_sd");
-    FailAt(file, sd->line, sd->position, "measured_dc_sd", "a standard deviation without measured_dc");
+    FailAt(file, sd->line, sd->position, "measured_dc_sd",
+           "a standard deviation without measured_dc");
   }
 }
 
@@ -178,6 +182,18 @@ const std::vector<FabricColumn>& FabricColumns() {
   return columns;
 }
 
+std::string FabricColumnsMarkdown() {
+  std::string text = "| column | unit | meaning |\n|---|---|---|\n";
+  for (const FabricColumn& column : FabricColumns()) {
+    std::string meaning = column.doc;
+    if (column.kind == Kind::kMaterial) {
+      meaning = "`" + column.scene_key + "`" + (meaning.empty() ? "" : ": " + meaning);
+    }
+    text += "| `" + column.name + "` | " + column.unit + " | " + meaning + " |\n";
+  }
+  return text;
+}
+
 const FabricCell* FabricRow::Cell(const std::string& column) const {
   for (const FabricCell& cell : cells) {
     if (cell.column->name == column) return &cell;
@@ -203,8 +219,8 @@ FabricTable ReadFabricTable(const std::string& path) {
       continue;
     }
     if (static_cast<int>(table.rows.size()) == kMostFabrics) {
-      FailAt(path, line, 1, "", "more than " + std::to_string(kMostFabrics) +
-                                    " fabrics in one table: split it");
+      FailAt(path, line, 1, "",
+             "more than " + std::to_string(kMostFabrics) + " fabrics in one table: split it");
     }
     FabricRow row = ReadRow(path, *header, line, cells);
     if (!names.insert(row.name).second) {

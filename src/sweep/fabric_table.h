@@ -25,7 +25,7 @@ struct FabricColumn {
     kMeasuredDc,        // the measured drape coefficient, a fraction in [0, 1]
     kMeasuredDcSd,      // its standard deviation over the lab's drops, ≥ 0
   };
-  std::string name;       // as the header writes it
+  std::string name;  // as the header writes it
   Kind kind = Kind::kText;
   std::string scene_key;  // the scene key it sets (material and specimen columns), else ""
   std::string unit;       // "" for none
@@ -35,6 +35,10 @@ struct FabricColumn {
 // Every column a table may have: name, source, description, the material keys (from the scene
 // schema), specimen_diameter, measured_dc, measured_dc_sd.
 const std::vector<FabricColumn>& FabricColumns();
+
+// docs/reference.md's table of the columns (between `<!-- fabric-columns -->` and
+// `<!-- /fabric-columns -->`): column, unit, meaning, one row per FabricColumns() entry.
+std::string FabricColumnsMarkdown();
 
 // The most fabrics one table may hold.
 constexpr int kMostFabrics = 10000;

@@ -42,7 +42,8 @@ constexpr const char* kStandardTesterLabel = "the standard tester";
 // "M3 (75/15/10)" → "M3__75_15_10_": a folder name from a fabric's name.
 std::string FolderSlug(const std::string& name) {
   std::string slug;
-  for (const unsigned char c : name) slug += std::isalnum(c) || c == '-' ? static_cast<char>(c) : '_';
+  for (const unsigned char c : name)
+    slug += std::isalnum(c) || c == '-' ? static_cast<char>(c) : '_';
   return slug.substr(0, 40);
 }
 
@@ -64,9 +65,10 @@ InputError Relocated(const InputError& error, const FabricRow& row,
   }
   const int index = where.line - 1;
   if (index >= static_cast<int>(cells.size())) {
-    return InputError(Location{"--set", index - static_cast<int>(cells.size()) + 1, where.column, where.key},
-                      error.problem() + " (fabric '" + row.name + "', line " +
-                          std::to_string(row.line) + " of " + file + ")");
+    return InputError(
+        Location{"--set", index - static_cast<int>(cells.size()) + 1, where.column, where.key},
+        error.problem() + " (fabric '" + row.name + "', line " + std::to_string(row.line) + " of " +
+            file + ")");
   }
   const FabricCell* cell = cells[index];
   if (!cell) {  // the material as a whole: a parameter the row does not give
@@ -115,11 +117,12 @@ std::vector<std::string> FabricTaskIdentities(const FabricsSpec& spec) {
   std::vector<std::string> identities(spec.tasks());
   for (int task = 0; task < spec.tasks(); ++task) {
     const FabricCase& fabric = spec.fabrics[FabricOf(spec, task)];
-    std::string text = "drape fabrics task\nfabric: " + fabric.row.name + "\nscene: " +
-                       fs::path(spec.scene_label).filename().string() + " " +
+    std::string text = "drape fabrics task\nfabric: " + fabric.row.name +
+                       "\nscene: " + fs::path(spec.scene_label).filename().string() + " " +
                        Fingerprint(spec.scene_text) + "\n";
     for (const std::string& set : fabric.overrides) text += "set: " + set + "\n";
-    text += "drop: " + std::to_string(DropOf(spec, task)) + " of " + std::to_string(spec.drops) + "\n";
+    text +=
+        "drop: " + std::to_string(DropOf(spec, task)) + " of " + std::to_string(spec.drops) + "\n";
     identities[task] = text;
   }
   return identities;
@@ -163,8 +166,10 @@ std::optional<FabricTaskRecord> FinishedFabricRecord(const FabricsContext& conte
 
 void SaveFabricRecord(const FabricsContext& context, int task, const FabricTaskRecord& record) {
   const fs::path folder = FabricTaskFolder(context.spec, task);
-  WriteAtomically(folder / kFabricVariantFile, [&](std::ostream& out) { out << context.identities[task]; });
-  WriteAtomically(folder / kFabricRecordFile, [&](std::ostream& out) { out << RecordText(record) << '\n'; });
+  WriteAtomically(folder / kFabricVariantFile,
+                  [&](std::ostream& out) { out << context.identities[task]; });
+  WriteAtomically(folder / kFabricRecordFile,
+                  [&](std::ostream& out) { out << RecordText(record) << '\n'; });
 }
 
 FabricTaskRecord SolveFabricTask(const FabricsContext& context, int task) {
@@ -189,8 +194,9 @@ FabricTaskRecord SolveFabricTask(const FabricsContext& context, int task) {
     return record;
   }
   const std::string what = fabric.row.name + (drop > 0 ? ", drop " + std::to_string(drop) : "");
-  WriteOutputs(scene, model, report, folder,
-               Provenance{context.options.command_line + " (fabric " + what + ")", fabric.overrides});
+  WriteOutputs(
+      scene, model, report, folder,
+      Provenance{context.options.command_line + " (fabric " + what + ")", fabric.overrides});
   record.solved = true;
   record.counted = result.converged && !result.Saddle() && !result.contact.ThroughDisk() &&
                    report.drape.has_value();
@@ -232,7 +238,8 @@ FabricTaskRecord RunFabricTask(const FabricsContext& context, int task) {
 
 // A farm task's result: "solved|skipped|interrupted RECORD".
 std::string RunFarmTask(const FabricsContext& context, int task) {
-  if (const auto record = FinishedFabricRecord(context, task)) return "skipped " + RecordText(*record);
+  if (const auto record = FinishedFabricRecord(context, task))
+    return "skipped " + RecordText(*record);
   if (InterruptRequested()) {
     FabricTaskRecord record;
     record.fabric = FabricOf(context.spec, task);
@@ -266,11 +273,13 @@ std::vector<std::pair<std::string, std::string>> SiColumns(const FabricsSpec& sp
 
 const std::vector<std::pair<std::string, std::string>>& ResultColumns() {
   static const std::vector<std::pair<std::string, std::string>> columns = {
-      {"predicted_dc", ""},     {"predicted_dc_error", ""}, {"folds", ""},
-      {"drops", ""},            {"drops_counted", ""},      {"predicted_dc_sd", ""},
-      {"measured_dc", ""},      {"measured_dc_sd", ""},     {"difference", ""},
-      {"within_error_bar", ""}, {"time_s", "s"},            {"state", ""},
-      {"folder", ""},           {"drape_version", ""}};
+      {"predicted_dc", ""},  {"predicted_dc_error", ""},
+      {"folds", ""},         {"drops", ""},
+      {"drops_counted", ""}, {"predicted_dc_sd", ""},
+      {"measured_dc", ""},   {"measured_dc_sd", ""},
+      {"difference", ""},    {"within_error_bar", ""},
+      {"time_s", "s"},       {"state", ""},
+      {"folder", ""},        {"drape_version", ""}};
   return columns;
 }
 
@@ -323,7 +332,8 @@ void WriteFabricsCsv(const FabricsSpec& spec, const std::vector<FabricPrediction
   const std::vector<std::string> inputs = InputColumns(spec);
   const auto si = SiColumns(spec);
   std::vector<std::string> header = {"name"};
-  for (const std::string& name : inputs) header.push_back(HeaderWithUnit(name, ColumnNamed(name).unit));
+  for (const std::string& name : inputs)
+    header.push_back(HeaderWithUnit(name, ColumnNamed(name).unit));
   for (const auto& [key, unit] : si) header.push_back(HeaderWithUnit("si." + key, unit));
   for (const auto& [name, unit] : ResultColumns()) header.push_back(HeaderWithUnit(name, unit));
   out << CsvLine(header) << '\n';
@@ -336,34 +346,35 @@ void WriteFabricsCsv(const FabricsSpec& spec, const std::vector<FabricPrediction
       cells.push_back(cell ? cell->text : "");
     }
     const std::vector<MaterialValue> values = MaterialSiValues(fabric.scene.material);
-    for (const auto& [key, unit] : si) {
+    for (const auto& column : si) {
+      const std::string& key = column.first;
       const auto found = std::find_if(values.begin(), values.end(),
-                                      [&](const MaterialValue& v) { return v.key == key; });
+                                      [&key](const MaterialValue& v) { return v.key == key; });
       cells.push_back(found == values.end() ? "" : CsvNumber(found->value));
     }
     const auto delta = Difference(fabric, p);
-    cells.insert(cells.end(),
-                 {OptionalNumber(p.drape_coefficient),
-                  p.drape_coefficient ? CsvNumber(p.error) : "",
-                  p.drape_coefficient ? std::to_string(p.folds) : "", std::to_string(spec.drops),
-                  std::to_string(p.counted), OptionalNumber(p.standard_deviation),
-                  OptionalNumber(fabric.row.measured_dc), OptionalNumber(fabric.row.measured_dc_sd),
-                  OptionalNumber(delta), delta ? JsonBool(Within(fabric, p)) : "",
-                  CsvNumber(TotalTime(records[f])), p.state, fabric.folder, DrapeVersion()});
+    cells.insert(
+        cells.end(),
+        {OptionalNumber(p.drape_coefficient), p.drape_coefficient ? CsvNumber(p.error) : "",
+         p.drape_coefficient ? std::to_string(p.folds) : "", std::to_string(spec.drops),
+         std::to_string(p.counted), OptionalNumber(p.standard_deviation),
+         OptionalNumber(fabric.row.measured_dc), OptionalNumber(fabric.row.measured_dc_sd),
+         OptionalNumber(delta), delta ? JsonBool(Within(fabric, p)) : "",
+         CsvNumber(TotalTime(records[f])), p.state, fabric.folder, DrapeVersion()});
     out << CsvLine(cells) << '\n';
   }
 }
 
 std::string StatisticsJson(const FabricStatistics& s) {
   if (s.compared == 0) return "null";
-  return JsonObject({{"fabrics_compared", std::to_string(s.compared)},
-                     {"mean_abs_difference", JsonNumber(s.mean_abs_difference)},
-                     {"mean_difference", JsonNumber(s.mean_difference)},
-                     {"rms_difference", JsonNumber(s.rms_difference)},
-                     {"within_error_bars", std::to_string(s.within)},
-                     {"within_error_bars_fraction",
-                      JsonNumber(static_cast<double>(s.within) / s.compared)}},
-                    1);
+  return JsonObject(
+      {{"fabrics_compared", std::to_string(s.compared)},
+       {"mean_abs_difference", JsonNumber(s.mean_abs_difference)},
+       {"mean_difference", JsonNumber(s.mean_difference)},
+       {"rms_difference", JsonNumber(s.rms_difference)},
+       {"within_error_bars", std::to_string(s.within)},
+       {"within_error_bars_fraction", JsonNumber(static_cast<double>(s.within) / s.compared)}},
+      1);
 }
 
 void WriteFabricsJson(const FabricsSpec& spec, const FabricsSummary& summary,
@@ -397,7 +408,10 @@ void WriteFabricsJson(const FabricsSpec& spec, const FabricsSummary& summary,
 class FabricsCollector {
  public:
   FabricsCollector(const FabricsSpec& spec, std::ostream& log)
-      : spec_(spec), log_(log), records_(spec.fabrics.size()), waiting_(spec.fabrics.size(), spec.drops) {}
+      : spec_(spec),
+        log_(log),
+        records_(spec.fabrics.size()),
+        waiting_(spec.fabrics.size(), spec.drops) {}
 
   void Collect(const std::string& result, FabricsSummary* summary) {
     const size_t space = result.find(' ');
@@ -417,8 +431,8 @@ class FabricsCollector {
     const FabricPrediction p = PredictFabric(records_[record->fabric]);
     const FabricRow& row = spec_.fabrics[record->fabric].row;
     char text[200];
-    std::snprintf(text, sizeof text, "fabrics: %s (%d of %zu done): ", row.name.c_str(),
-                  ++done_, spec_.fabrics.size());
+    std::snprintf(text, sizeof text, "fabrics: %s (%d of %zu done): ", row.name.c_str(), ++done_,
+                  spec_.fabrics.size());
     log_ << text;
     if (p.drape_coefficient) {
       std::snprintf(text, sizeof text, "DC %.3f ± %.3f, %d folds", *p.drape_coefficient, p.error,
@@ -478,16 +492,16 @@ FabricsSpec LoadFabrics(const FabricsOptions& options) {
   spec.table = ReadFabricTable(options.table);
   spec.scene_label = options.scene.empty() ? kStandardTesterLabel : options.scene;
   spec.scene_text = options.scene.empty() ? StandardTesterScene() : ReadWholeFile(options.scene);
-  spec.directory = options.out.empty()
-                       ? (fs::path("out") / fs::path(options.table).stem()).string()
-                       : options.out;
+  spec.directory = options.out.empty() ? (fs::path("out") / fs::path(options.table).stem()).string()
+                                       : options.out;
   const int count = static_cast<int>(spec.table.rows.size());
   for (int f = 0; f < count; ++f) {
     FabricCase fabric;
     fabric.row = spec.table.rows[f];
     std::vector<const FabricCell*> cells;
     fabric.overrides = FabricOverrides(fabric.row, &cells);
-    fabric.overrides.insert(fabric.overrides.end(), options.overrides.begin(), options.overrides.end());
+    fabric.overrides.insert(fabric.overrides.end(), options.overrides.begin(),
+                            options.overrides.end());
     try {
       fabric.scene = LoadFabricScene(options, spec.scene_text, fabric.overrides);
     } catch (const InputError& error) {
@@ -504,7 +518,8 @@ FabricsSpec LoadFabrics(const FabricsOptions& options) {
   }
   spec.drops = options.drops ? *options.drops : spec.fabrics.front().scene.drape_test->drops;
   if (options.only && (*options.only < 0 || *options.only >= spec.tasks())) {
-    throw InputError("task " + std::to_string(*options.only) + " is not in the table (its tasks are 0 to " +
+    throw InputError("task " + std::to_string(*options.only) +
+                     " is not in the table (its tasks are 0 to " +
                      std::to_string(spec.tasks() - 1) + ")");
   }
   return spec;
@@ -532,7 +547,9 @@ FabricPrediction PredictFabric(const std::vector<FabricTaskRecord>& records) {
     if (s.counted > 1) p.standard_deviation = s.standard_deviation;
     p.folds = s.modal_folds.front();
   }
-  if (records.size() == 1) {
+  if (records.empty()) {
+    p.state = "not solved (interrupted)";
+  } else if (records.size() == 1 && records.front().drop == 0) {
     p.state = records.front().state;
   } else {
     p.state = std::to_string(s.counted) + " of " + std::to_string(records.size()) +
@@ -586,8 +603,8 @@ FabricsSummary RunFabrics(const FabricsSpec& spec, const FabricsOptions& options
     const FabricRow& row = spec.fabrics[f].row;
     if (p.drape_coefficient) ++summary.predicted;
     if (p.drape_coefficient && row.measured_dc) {
-      comparisons.push_back({*p.drape_coefficient, p.error, *row.measured_dc,
-                             row.measured_dc_sd.value_or(0.0)});
+      comparisons.push_back(
+          {*p.drape_coefficient, p.error, *row.measured_dc, row.measured_dc_sd.value_or(0.0)});
     }
   }
   summary.statistics = ComputeFabricStatistics(comparisons);
@@ -596,9 +613,8 @@ FabricsSummary RunFabrics(const FabricsSpec& spec, const FabricsOptions& options
   WriteAtomically(directory / "fabrics.csv", [&](std::ostream& out) {
     WriteFabricsCsv(spec, predictions, collector.records(), out);
   });
-  WriteAtomically(directory / "fabrics.json", [&](std::ostream& out) {
-    WriteFabricsJson(spec, summary, provenance, out);
-  });
+  WriteAtomically(directory / "fabrics.json",
+                  [&](std::ostream& out) { WriteFabricsJson(spec, summary, provenance, out); });
   WriteAtomically(directory / "report.html", [&](std::ostream& out) {
     WriteFabricsReport(spec, predictions, summary, provenance, out);
   });

@@ -82,10 +82,10 @@ struct FabricTaskRecord {
 // The prediction for one fabric: its single solve, or its drops' mean.
 struct FabricPrediction {
   int tasks = 0, counted = 0;
-  std::optional<double> drape_coefficient;  // none if nothing was counted
-  double error = 0.0;                       // the error bar
+  std::optional<double> drape_coefficient;   // none if nothing was counted
+  double error = 0.0;                        // the error bar
   std::optional<double> standard_deviation;  // over drops (2 or more counted)
-  int folds = 0;                            // the single solve's, or the most frequent
+  int folds = 0;                             // the single solve's, or the most frequent
   std::string state;
 };
 

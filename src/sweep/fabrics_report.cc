@@ -68,8 +68,8 @@ void WriteShadows(const FabricsSpec& spec, const fs::path& directory, std::ostre
                                         : folder / "shadow.png";
     const std::string caption =
         fabric.row.name + (spec.drops > 1 ? " (drop 1 of " + std::to_string(spec.drops) + ")" : "");
-    html << "<figure>" << HtmlPngImage(png, "the shadow of " + caption)
-         << "<figcaption>" << HtmlText(caption) << "</figcaption></figure>\n";
+    html << "<figure>" << HtmlPngImage(png, "the shadow of " + caption) << "<figcaption>"
+         << HtmlText(caption) << "</figcaption></figure>\n";
   }
 }
 
@@ -125,7 +125,8 @@ void WriteFabricsReport(const FabricsSpec& spec, const std::vector<FabricPredict
        << "<h1>Fabrics: " << HtmlText(spec.table.file) << "</h1>\n<p><b>"
        << HtmlText(FabricsLine(summary)) << "</b></p>\n<p>Each fabric solved on "
        << HtmlText(spec.scene_label) << " with its row's material"
-       << (spec.drops > 1 ? ", " + std::to_string(spec.drops) + " drops each (the prediction is "
+       << (spec.drops > 1 ? ", " + std::to_string(spec.drops) +
+                                " drops each (the prediction is "
                                 "their mean)"
                           : "")
        << ". Δ = predicted − measured; a fabric is within its error bars when |Δ| ≤ the "
@@ -134,17 +135,19 @@ void WriteFabricsReport(const FabricsSpec& spec, const std::vector<FabricPredict
        << "<figcaption>Predicted against measured: the prediction's error bar vertical, the "
           "measured SD horizontal, dashed y = x</figcaption></figure>\n<h2>The fabrics</h2>\n";
   WriteTable(spec, predictions, html);
-  html << "<h2>Which number to quote</h2>\n<p>A lab quotes the mean drape coefficient of several "
-          "specimens, and so should a prediction set beside it: one solve settles on one fold "
-          "pattern, and the drape coefficient moves with the fold count (a fabric that folds "
-          "into 11 lobes in one solve may fold into 7 or 8 in another). With <code>--drops N</code> "
-          "(or <code>drape_test.drops</code> in the base scene) each fabric's predicted DC is "
-          "the mean over N drops with its standard deviation; without, the single solve's, with "
-          "the error bar of its lattice alone.</p>\n";
+  html
+      << "<h2>Which number to quote</h2>\n<p>A lab quotes the mean drape coefficient of several "
+         "specimens, and so should a prediction set beside it: one solve settles on one fold "
+         "pattern, and the drape coefficient moves with the fold count (a fabric that folds "
+         "into 11 lobes in one solve may fold into 7 or 8 in another). With <code>--drops N</code> "
+         "(or <code>drape_test.drops</code> in the base scene) each fabric's predicted DC is "
+         "the mean over N drops with its standard deviation; without, the single solve's, with "
+         "the error bar of its lattice alone.</p>\n";
   WriteShadows(spec, fs::path(spec.directory), html);
-  html << "<p>" << HtmlText(ProvenanceLine(provenance))
-       << ". fabrics.csv and fabrics.json hold these figures (units in fabrics.csv's headers); each "
-          "fabric's folder holds its solve.</p>\n</body></html>\n";
+  html
+      << "<p>" << HtmlText(ProvenanceLine(provenance))
+      << ". fabrics.csv and fabrics.json hold these figures (units in fabrics.csv's headers); each "
+         "fabric's folder holds its solve.</p>\n</body></html>\n";
 }
 
 }  // namespace drape
