@@ -20,7 +20,8 @@ namespace layers_test {
 namespace fs = std::filesystem;
 
 // Top to bottom; fit, compare and sweep are side by side (none includes another).
-const std::vector<std::set<std::string>> kLayers = {{"cli"},      {"fit", "compare", "sweep"},
+const std::vector<std::set<std::string>> kLayers = {{"cli"},      {"commands"},
+                                                    {"fit", "compare", "sweep"},
                                                     {"parallel"}, {"output"},
                                                     {"run"},      {"analysis"},
                                                     {"solvers"},  {"numerics"},

@@ -5,26 +5,41 @@
     result.positions          # (n, 3) float64, m
     result.drape_coefficient  # a drape test's, else None
 
-Scenes come from a file (`load`), YAML text (`loads`) or a dict (`from_dict`); `set=` takes the
-overrides `drape solve --set` takes, as a dict of key paths to values. Bad input raises
-`drape.InputError` with the CLI's message and its `file`, `line`, `column` and `key` (a dict's
-errors are located by `key` alone: `<dict>: mesh.sides: ...`, line and column 0). A solve
+Scenes come from a file (`load`), YAML text (`loads`) or a dict (`from_dict`), with their mesh
+from the scene or from arrays (`mesh=(vertices, faces)`); `set=` takes the overrides
+`drape solve --set` takes, as a dict of key paths to values. Bad input raises `drape.InputError`
+with the CLI's message and its `file`, `line`, `column` and `key` (a dict's errors are located by
+`key` alone: `<dict>: mesh.sides: ...`); a file that is not there raises FileNotFoundError.
+drape's warnings are `warnings.warn` with the category `drape.DrapeWarning`; progress lines go to
+`progress=` (a callable taking a line; default: printed to `sys.stderr`; None: silent). A solve
 releases the GIL; Ctrl-C stops it and raises KeyboardInterrupt whose `result` is the last iterate.
+Long runs (`drops`, `fit`, `sweep`, `fabrics`) run the commands the command line runs
+(src/commands/) and write their files into `out=`, else a temporary folder removed after reading.
 docs/python.md walks through it.
 """
 
 import csv
+import errno
 import json
 import os
 import shutil
+import sys
 import tempfile
+import warnings
 
 from . import _drape
+from ._version import pep440_version
 
-__all__ = ["InputError", "Scene", "Result", "DropsResult", "FitResult", "load", "loads",
-           "from_dict", "solve", "drops", "fit", "sweep", "__version__"]
+__all__ = ["DrapeWarning", "InputError", "Scene", "Result", "DropsResult", "FitResult",
+           "FabricsResult", "load", "loads", "from_dict", "solve", "drops", "fit", "sweep",
+           "fabrics", "sensitivities", "__version__"]
 
-__version__ = _drape.version()
+__version__ = pep440_version(_drape.version())
+
+
+class DrapeWarning(UserWarning):
+    """A warning of drape's (a mesh coarser than the fabric needs, a fit's doubtful measurement):
+    filter it with warnings.filterwarnings("ignore", category=drape.DrapeWarning)."""
 
 
 class InputError(ValueError):
@@ -37,6 +52,24 @@ class InputError(ValueError):
         self.column = column
         self.key = key
         self.problem = problem or message
+
+
+def _print_to_stderr(line):
+    """The default `progress`: each line to the current sys.stderr (so that a notebook shows it and
+    contextlib.redirect_stderr captures it)."""
+    print(line, file=sys.stderr, flush=True)
+
+
+def _progress(progress):
+    if progress is not None and not callable(progress):
+        raise TypeError("progress: expected a callable taking a line of text, or None")
+    return progress
+
+
+def _warn(lines):
+    """drape's warnings as DrapeWarning, in the caller's caller's frame."""
+    for line in lines:
+        warnings.warn(line, DrapeWarning, stacklevel=3)
 
 
 def _override_value(value):
@@ -58,12 +91,29 @@ def _overrides(set):
     return [f"{key}={_override_value(value)}" for key, value in set.items()]
 
 
-def _loaded(scene, set):
-    """A Scene as given, or the scene file at a path loaded with `set` overrides."""
+def _existing(path, what):
+    """`path` as a str; FileNotFoundError (with the path) if there is no such file."""
+    path = os.fspath(path)
+    if not os.path.isfile(path):
+        raise FileNotFoundError(errno.ENOENT, f"no {what} here", path)
+    return path
+
+
+def _mesh(mesh):
+    if mesh is None:
+        return None
+    if not isinstance(mesh, (tuple, list)) or len(mesh) != 2:
+        raise TypeError("mesh: expected (vertices, faces): an (n, 3) float array and an (m, 3) "
+                        "or (m, 4) integer array")
+    return tuple(mesh)
+
+
+def _loaded(scene, set, mesh=None):
+    """A Scene as given, or the scene file at a path loaded with `set` overrides (and `mesh`)."""
     if not isinstance(scene, Scene):
-        return load(scene, set=set)
-    if set is not None:
-        raise TypeError("set: give the overrides to drape.load (the scene is already loaded)")
+        return load(scene, set=set, mesh=mesh)
+    if set is not None or mesh is not None:
+        raise TypeError("set, mesh: give them to drape.load (the scene is already loaded)")
     return scene
 
 
@@ -74,6 +124,11 @@ def _interrupted(message, result):
     return interrupt
 
 
+def _folder(out, prefix):
+    """`out` as a str, or a new temporary folder (removed by the caller after reading)."""
+    return os.fspath(out) if out is not None else tempfile.mkdtemp(prefix=prefix)
+
+
 class Scene:
     """A loaded, checked scene (the `drape check` of it is `check()`)."""
 
@@ -82,10 +137,12 @@ class Scene:
 
     @property
     def name(self):
+        """The scene's `name` (default: the file's stem)."""
         return self._handle.name
 
     @property
     def file(self):
+        """The file it came from (`<string>` or `<dict>` for text and dicts)."""
         return self._handle.file
 
     def check(self):
@@ -96,14 +153,17 @@ class Scene:
         return f"drape.Scene({self.name!r}, file={self.file!r})"
 
 
-def load(path, set=None):
-    """The scene of a YAML file, with `set` overrides ({'key.path': value})."""
-    return Scene(_drape.load(os.fspath(path), _overrides(set)))
+def load(path, set=None, mesh=None):
+    """The scene of a YAML file, with `set` overrides ({'key.path': value}); `mesh=(vertices,
+    faces)` replaces its mesh by a surface given as arrays (checked as a mesh file is)."""
+    path = _existing(path, "scene file")
+    return Scene(_drape.load(path, _overrides(set), _mesh(mesh)))
 
 
-def loads(text, set=None, directory="."):
+def loads(text, set=None, directory=".", mesh=None):
     """The scene of YAML text; its relative paths are taken from `directory`."""
-    return Scene(_drape.loads(text, "<string>", os.fspath(directory), _overrides(set)))
+    return Scene(_drape.loads(text, "<string>", os.fspath(directory), _overrides(set),
+                              _mesh(mesh)))
 
 
 def _located_by_key(error, label):
@@ -113,11 +173,11 @@ def _located_by_key(error, label):
     return InputError(where + error.problem, label, 0, 0, error.key, error.problem)
 
 
-def from_dict(scene, set=None, directory="."):
+def from_dict(scene, set=None, directory=".", mesh=None):
     """The scene of a dict with the YAML file's structure (JSON is YAML)."""
     try:
         return Scene(_drape.loads(json.dumps(scene, indent=1), "<dict>", os.fspath(directory),
-                                  _overrides(set)))
+                                  _overrides(set), _mesh(mesh)))
     except InputError as error:
         if error.file != "<dict>":
             raise
@@ -129,26 +189,90 @@ class Result:
 
     def __init__(self, solved):
         self._solved = solved
-        arrays = solved.arrays()
-        figures = solved.figures()
-        self.positions = arrays["positions"]                # (n, 3) m
-        self.initial_positions = arrays["initial_positions"]  # (n, 3) m
-        self.reactions = arrays["reactions"]                # (n, 3) N, on fixed coordinates
-        self.contact_forces = arrays["contact_forces"]      # (n, 3) N
-        self.fixed = arrays["fixed"]                        # (n, 3) bool
-        self.faces = arrays["faces"]                        # (m, 3) node ids, for plotting
-        self.converged = figures["converged"]
-        self.stable = figures["stable"]
-        self.state = figures["state"]
-        self.termination = figures["termination"]
-        self.iterations = figures["iterations"]
-        self.energy = figures["energy"]                     # J, per term type and "total"
-        self.drape_coefficient = figures["drape_coefficient"]
-        # The error bar of drape solve's line: the levels' (widened to the mesh rule's), else the
-        # mesh rule's; None for a scene without a support disc or rule.
-        self.drape_coefficient_error = figures["drape_coefficient_error"]
-        self.summary = json.loads(figures["summary_json"])  # summary.json's dict
-        self.interrupted = figures["interrupted"]
+        self._arrays = solved.arrays()
+        self._figures = solved.figures()
+        self._summary = json.loads(self._figures["summary_json"])
+
+    @property
+    def positions(self):
+        """(n, 3) float64: the final positions, m."""
+        return self._arrays["positions"]
+
+    @property
+    def initial_positions(self):
+        """(n, 3) float64: the positions the solve started from, m."""
+        return self._arrays["initial_positions"]
+
+    @property
+    def reactions(self):
+        """(n, 3) float64: the support reactions on the fixed coordinates, N (0 elsewhere)."""
+        return self._arrays["reactions"]
+
+    @property
+    def contact_forces(self):
+        """(n, 3) float64: the obstacles' contact forces on the nodes, N."""
+        return self._arrays["contact_forces"]
+
+    @property
+    def fixed(self):
+        """(n, 3) bool: the prescribed coordinates."""
+        return self._arrays["fixed"]
+
+    @property
+    def faces(self):
+        """(m, 3) int: the mesh's triangles (node ids), for plotting."""
+        return self._arrays["faces"]
+
+    @property
+    def converged(self):
+        """Whether the relative residual reached the tolerance (confirmed at the final state)."""
+        return self._figures["converged"]
+
+    @property
+    def stable(self):
+        """Whether the final state is a stable minimum (the free Hessian positive definite)."""
+        return self._figures["stable"]
+
+    @property
+    def state(self):
+        """The result line's words: 'stable minimum', 'saddle: …', 'not converged: …'."""
+        return self._figures["state"]
+
+    @property
+    def termination(self):
+        """Why the method stopped, in its words."""
+        return self._figures["termination"]
+
+    @property
+    def iterations(self):
+        """The method's iterations, all levels together."""
+        return self._figures["iterations"]
+
+    @property
+    def energy(self):
+        """dict: the energy per term type and its 'total', J."""
+        return self._figures["energy"]
+
+    @property
+    def drape_coefficient(self):
+        """A drape test's drape coefficient (a fraction), else None."""
+        return self._figures["drape_coefficient"]
+
+    @property
+    def drape_coefficient_error(self):
+        """The error bar of drape solve's line: the levels' (widened to the mesh rule's), else the
+        mesh rule's; None for a scene without a support disc or rule."""
+        return self._figures["drape_coefficient_error"]
+
+    @property
+    def summary(self):
+        """dict: summary.json as `drape solve` writes it."""
+        return self._summary
+
+    @property
+    def interrupted(self):
+        """Whether Ctrl-C stopped the solve (then the positions are its last iterate)."""
+        return self._figures["interrupted"]
 
     def write(self, directory):
         """The files `drape solve` writes (the scene's output.write), into `directory`."""
@@ -163,20 +287,40 @@ class Result:
                 f"nodes={len(self.positions)}{coefficient})")
 
 
-def solve(scene, solver=None, set=None, start=None):
+def solve(scene, solver=None, set=None, start=None, mesh=None, progress=_print_to_stderr):
     """Solves a Scene, or the scene file at a path, as `drape solve` does; returns a Result.
 
-    solver: a method name (`drape solvers`); set: overrides (for a path); start: an earlier
-    Result or an (n, 3) array of positions, a warm start (the free nodes start there).
+    solver: a method name (`drape solvers`); set, mesh: as `load` takes them (for a path); start:
+    an earlier Result or an (n, 3) array of positions, a warm start (the free nodes start there);
+    progress: a callable given a line every second of a long solve (None: silent). A mesh coarser
+    than the fabric needs is a DrapeWarning.
     """
-    scene = _loaded(scene, set)
+    scene = _loaded(scene, set, mesh)
     if isinstance(start, Result):
         start = start.positions
-    result = Result(_drape.solve(scene._handle, solver, start))
+    result = Result(_drape.solve(scene._handle, solver, start, _progress(progress)))
+    _warn(result._figures["warnings"])
     if result.interrupted:
         raise _interrupted(f"drape.solve interrupted after {result.iterations} iterations; "
                            "the last iterate is the exception's `result`", result)
     return result
+
+
+def sensitivities(scene, keys, set=None, solver=None, mesh=None, progress=_print_to_stderr):
+    """The derivatives of the equilibrium positions with respect to scene keys: an array of shape
+    (nodes, 3, len(keys)), m per unit of each key (e.g. m/(N·m) for
+    'material.finite_volume.D_warp').
+
+    The scene is solved, its free Hessian at the equilibrium factorised once, and each key costs
+    one linear solve (the implicit function theorem: H dx/dp = -dg/dp, dg/dp by central
+    differences of the forces at the equilibrium). A key is a number of the scene as solved
+    (`drape check --json`), in SI. Raises InputError where the equilibrium is not a converged,
+    stable minimum, or a key is not such a number.
+    """
+    scene = _loaded(scene, set, mesh)
+    if isinstance(keys, str):
+        keys = [keys]
+    return _drape.sensitivities(scene._handle, list(keys), solver, _progress(progress))
 
 
 def _number(text):
@@ -205,68 +349,167 @@ def _table(path):
 
 
 class DropsResult:
-    """What repeated drops write, as data: `summary` is summary.json's dict, `table` drops.csv's
-    rows (one per drop: its offset, waviness, drape coefficient, folds, energy, counted, state).
-    `mean` and `standard_deviation` are over the counted drops (None if none counted);
-    `mesh_rule` the discretisation error each drop carries (summary.json's, or None); `line` what
-    `drape solve --drops` prints."""
+    """What repeated drops write, as data (drops.csv, summary.json)."""
 
     def __init__(self, directory, line):
         with open(os.path.join(directory, "summary.json")) as file:
-            self.summary = json.load(file)
-        self.table = _table(os.path.join(directory, "drops.csv"))
-        self.line = line
-        self.drops = self.summary["drops"]
-        self.counted = self.summary["drops_counted"]
-        self.mean = self.summary["drape_coefficient_mean"]
-        self.standard_deviation = self.summary["drape_coefficient_standard_deviation"]
-        self.folds_histogram = {int(folds): count
-                                for folds, count in self.summary["folds_histogram"].items()}
-        self.most_frequent_folds = self.summary["most_frequent_folds"]
-        self.mesh_rule = self.summary.get("mesh_rule")
+            self._summary = json.load(file)
+        self._table = _table(os.path.join(directory, "drops.csv"))
+        self._line = line
+
+    @property
+    def summary(self):
+        """dict: the drops' summary.json."""
+        return self._summary
+
+    @property
+    def table(self):
+        """drops.csv: a row per drop (its offset, waviness, drape coefficient, folds, energy,
+        counted, state), as a pandas DataFrame (a list of dicts without pandas)."""
+        return self._table
+
+    @property
+    def line(self):
+        """What `drape solve --drops` prints."""
+        return self._line
+
+    @property
+    def drops(self):
+        """How many drops were solved."""
+        return self._summary["drops"]
+
+    @property
+    def counted(self):
+        """The drops at a stable minimum with nothing through the disc: the figures' drops."""
+        return self._summary["drops_counted"]
+
+    @property
+    def mean(self):
+        """The mean drape coefficient over the counted drops (None if none)."""
+        return self._summary["drape_coefficient_mean"]
+
+    @property
+    def standard_deviation(self):
+        """Its sample standard deviation (None if none counted)."""
+        return self._summary["drape_coefficient_standard_deviation"]
+
+    @property
+    def folds_histogram(self):
+        """dict: fold count -> drops."""
+        return {int(folds): count for folds, count in self._summary["folds_histogram"].items()}
+
+    @property
+    def most_frequent_folds(self):
+        """The most frequent fold count(s)."""
+        return self._summary["most_frequent_folds"]
+
+    @property
+    def mesh_rule(self):
+        """The discretisation error each drop carries (summary.json's mesh_rule), or None."""
+        return self._summary.get("mesh_rule")
 
     def __repr__(self):
         return f"drape.DropsResult(drops={self.drops}, mean={self.mean}, " \
                f"standard_deviation={self.standard_deviation})"
 
 
-def drops(scene, drops=None, set=None, directory=None, threads=0):
+def _drops_count(drops):
+    if drops is not None and (isinstance(drops, bool) or not isinstance(drops, int) or drops < 1):
+        raise InputError(f"drops: expected a whole number >= 1, got {drops!r}", key="drops")
+    return drops
+
+
+def drops(scene, drops=None, set=None, out=None, threads=0, progress=_print_to_stderr,
+          directory=None):
     """Repeated drops of a drape test, as `drape solve --drops N` runs them; returns a DropsResult.
 
     scene: a Scene, or a scene file's path (with `set` overrides); it needs a drape_test block.
     drops: how many (default: the scene's drape_test.drops); threads: 0 for the machine's cores;
-    directory: where the files go (drops.csv, summary.json, report.html, drops/NN/), else a
-    temporary folder, removed after reading.
+    out: where the files go (drops.csv, summary.json, report.html, drops/NN/), else a temporary
+    folder, removed after reading; progress: a callable given a line per finished drop.
+    (`directory` is the former name of `out`.)
     """
     scene = _loaded(scene, set)
-    if drops is not None and (isinstance(drops, bool) or not isinstance(drops, int) or drops < 1):
-        raise InputError(f"drops: expected a whole number >= 1, got {drops!r}", key="drops")
-    folder = os.fspath(directory) if directory is not None else tempfile.mkdtemp(prefix="drape_drops_")
+    out = _renamed(out, directory)
+    folder = _folder(out, "drape_drops_")
     try:
-        outcome = _drape.drops(scene._handle, drops or 0, folder, threads)
+        outcome = _drape.drops(scene._handle, _drops_count(drops) or 0, folder, threads,
+                               _progress(progress))
         result = DropsResult(folder, outcome["line"])
     finally:
-        if directory is None:
+        if out is None:
             shutil.rmtree(folder, ignore_errors=True)
+    _warn(outcome["warnings"])
     if outcome["interrupted"]:
         raise _interrupted("drape.drops interrupted; the finished drops are `result`", result)
     return result
 
 
-class FitResult:
-    """What `drape fit` writes, as data: `table` is fit.json's dict, `history` history.csv's rows."""
+def _renamed(out, directory):
+    if directory is None:
+        return out
+    if out is not None:
+        raise TypeError("give out= (directory= is its former name), not both")
+    warnings.warn("directory= is now out=", DeprecationWarning, stacklevel=3)
+    return directory
 
-    def __init__(self, directory, converged):
+
+class FitResult:
+    """What `drape fit` writes, as data (fit.json, history.csv)."""
+
+    def __init__(self, directory, converged, label=None, path=None):
         with open(os.path.join(directory, "fit.json")) as file:
-            self.table = json.load(file)
-        self.history = _table(os.path.join(directory, "history.csv"))
-        self.converged = converged
-        self.parameters = self.table["parameters"]
-        self.standard_errors = self.table["standard_errors"]
-        self.identifiability = self.table["identifiability"]
-        self.measurements = self.table["measurements"]
-        self.termination = self.table["termination"]
-        self.warnings = self.table["warnings"]  # e.g. a mesh too coarse for the measurement
+            self._table = json.load(file)
+        if label is not None:  # a dict's fit: its warnings name the dict, not the temporary file
+            self._table["warnings"] = [w.replace(path, label) for w in self._table["warnings"]]
+        self._history = _table(os.path.join(directory, "history.csv"))
+        self._converged = converged
+
+    @property
+    def table(self):
+        """dict: fit.json."""
+        return self._table
+
+    @property
+    def history(self):
+        """history.csv: a row per evaluation (a DataFrame, or a list of dicts without pandas)."""
+        return self._history
+
+    @property
+    def converged(self):
+        """Whether the outer method converged."""
+        return self._converged
+
+    @property
+    def parameters(self):
+        """dict: the fitted value of each parameter key."""
+        return self._table["parameters"]
+
+    @property
+    def standard_errors(self):
+        """dict: each parameter's standard error (from the Jacobian at the optimum)."""
+        return self._table["standard_errors"]
+
+    @property
+    def identifiability(self):
+        """fit.json's identifiability: the Jacobian's conditioning and what it says."""
+        return self._table["identifiability"]
+
+    @property
+    def measurements(self):
+        """fit.json's measurements: each one's residuals at the optimum."""
+        return self._table["measurements"]
+
+    @property
+    def termination(self):
+        """Why the outer method stopped."""
+        return self._table["termination"]
+
+    @property
+    def warnings(self):
+        """The fit's warnings (also emitted as DrapeWarning): e.g. a mesh too coarse for the
+        measurement."""
+        return self._table["warnings"]
 
     def __repr__(self):
         return f"drape.FitResult(converged={self.converged}, parameters={self.parameters})"
@@ -296,52 +539,136 @@ def _absolute_fit_paths(spec, base):
     return spec
 
 
-def _run_fit(path, set, method, folder, threads, label=None):
+def _run_fit(path, set, method, folder, threads, progress, label=None):
     try:
-        return _drape.fit(path, _overrides(set), method, folder, threads)
+        return _drape.fit(path, _overrides(set), method, folder, threads, progress)
     except InputError as error:
         if label is None or error.file != path:
             raise
         raise _located_by_key(error, label) from None
 
 
-def fit(fit_file, set=None, method=None, directory=None, threads=1, base="."):
+def fit(fit_file, set=None, method=None, out=None, threads=1, base=".",
+        progress=_print_to_stderr, directory=None):
     """Runs `drape fit` on a fit file, or a dict with its structure; returns a FitResult.
 
     set: overrides of every specimen's scene; method: a fit method (`bobyqa`, `implicit-lm`, ...);
-    directory: where its files go (kept), else a temporary folder, removed after reading; base:
-    the folder a dict's relative paths are taken from (a file's are taken from its own folder).
+    out: where its files go (kept), else a temporary folder, removed after reading; base: the
+    folder a dict's relative paths are taken from (default: the current folder; a file's are
+    taken from its own folder); progress: a callable given a line per evaluation. The fit's
+    warnings are DrapeWarnings. (`directory` is the former name of `out`.)
     """
-    folder = os.fspath(directory) if directory is not None else tempfile.mkdtemp(prefix="drape_fit_")
+    out = _renamed(out, directory)
+    progress = _progress(progress)
+    folder = _folder(out, "drape_fit_")
     scratch = None
     try:
         if isinstance(fit_file, dict):
             scratch = tempfile.mkdtemp(prefix="drape_fit_dict_")
             path = os.path.join(scratch, "fit.yaml")
-            spec = _absolute_fit_paths(json.loads(json.dumps(fit_file)), os.fspath(base))
+            base = os.path.abspath(os.fspath(base))
+            spec = _absolute_fit_paths(json.loads(json.dumps(fit_file)), base)
             with open(path, "w") as file:
                 json.dump(spec, file, indent=1)
-            outcome = _run_fit(path, set, method, folder, threads, label="<dict>")
+            outcome = _run_fit(path, set, method, folder, threads, progress, label="<dict>")
+            result = FitResult(folder, outcome["converged"], "<dict>", path)
+            lines = [w.replace(path, "<dict>") for w in outcome["warnings"]]
         else:
-            outcome = _run_fit(os.fspath(fit_file), set, method, folder, threads)
-        result = FitResult(folder, outcome["converged"])
+            outcome = _run_fit(_existing(fit_file, "fit file"), set, method, folder, threads,
+                               progress)
+            result = FitResult(folder, outcome["converged"])
+            lines = outcome["warnings"]
     finally:
-        if directory is None:
+        if out is None:
             shutil.rmtree(folder, ignore_errors=True)
         if scratch is not None:
             shutil.rmtree(scratch, ignore_errors=True)
+    _warn(lines)
     if outcome["interrupted"]:
         raise _interrupted("drape.fit interrupted; the best point is the exception's `result`",
                            result)
     return result
 
 
-def sweep(sweep_file, directory=None, threads=0, plots=False):
-    """Runs `drape sweep` on a sweep file into `directory` (else the file's own output folder, as
-    the command line; a rerun skips the finished tasks); returns sweep.csv's table."""
-    outcome = _drape.sweep(os.fspath(sweep_file), "" if directory is None else os.fspath(directory),
-                           threads, plots)
-    table = _table(os.path.join(outcome["directory"], "sweep.csv"))
+def sweep(sweep_file, out=None, threads=0, plots=False, progress=_print_to_stderr,
+          directory=None):
+    """Runs `drape sweep` on a sweep file; returns sweep.csv's table.
+
+    out: where its files go (kept: a rerun into the same folder skips the finished tasks), else a
+    temporary folder, removed after reading; progress: a callable given a line per finished task.
+    (`directory` is the former name of `out`.)
+    """
+    out = _renamed(out, directory)
+    path = _existing(sweep_file, "sweep file")
+    folder = _folder(out, "drape_sweep_")
+    try:
+        outcome = _drape.sweep(path, folder, threads, plots, _progress(progress))
+        table = _table(os.path.join(outcome["directory"], "sweep.csv"))
+    finally:
+        if out is None:
+            shutil.rmtree(folder, ignore_errors=True)
+    _warn(outcome["warnings"])
     if outcome["interrupted"]:
         raise _interrupted("drape.sweep interrupted; the finished rows are `result`", table)
     return table
+
+
+class FabricsResult:
+    """What `drape fabrics` writes, as data (fabrics.csv, fabrics.json)."""
+
+    def __init__(self, directory, line):
+        self._table = _table(os.path.join(directory, "fabrics.csv"))
+        with open(os.path.join(directory, "fabrics.json")) as file:
+            self._summary = json.load(file)
+        self._line = line
+
+    @property
+    def table(self):
+        """fabrics.csv: a row per fabric (its inputs, the SI parameters used, the prediction with
+        its error bar, the measurement and the difference), as a pandas DataFrame (a list of dicts
+        without pandas)."""
+        return self._table
+
+    @property
+    def summary(self):
+        """dict: fabrics.json."""
+        return self._summary
+
+    @property
+    def statistics(self):
+        """dict: mean |Δ|, mean Δ, RMS and how many measured values lie within the error bars,
+        over the fabrics with a measurement (None if none)."""
+        return self._summary["statistics"]
+
+    @property
+    def line(self):
+        """What `drape fabrics` prints."""
+        return self._line
+
+    def __repr__(self):
+        return f"drape.FabricsResult({self.line!r})"
+
+
+def fabrics(table, scene=None, set=None, drops=None, out=None, threads=0,
+            progress=_print_to_stderr):
+    """Runs `drape fabrics` on a fabric table (CSV); returns a FabricsResult.
+
+    scene: the base scene (a drape test), default the standard tester; set: overrides of every
+    fabric's scene, after its material; drops: predict each fabric's mean over this many drops;
+    out: where the files go (kept: a rerun solves only what is missing), else a temporary folder,
+    removed after reading; progress: a callable given a line per finished fabric.
+    """
+    path = _existing(table, "fabric table")
+    base = "" if scene is None else _existing(scene, "scene file")
+    folder = _folder(out, "drape_fabrics_")
+    try:
+        outcome = _drape.fabrics(path, base, _overrides(set), _drops_count(drops), folder,
+                                 threads, _progress(progress))
+        result = FabricsResult(folder, outcome["line"])
+    finally:
+        if out is None:
+            shutil.rmtree(folder, ignore_errors=True)
+    _warn(outcome["warnings"])
+    if outcome["interrupted"]:
+        raise _interrupted("drape.fabrics interrupted; the finished fabrics are `result`", result)
+    return result

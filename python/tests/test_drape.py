@@ -2,13 +2,16 @@
 located errors, Ctrl-C, and the scene as data. Run by CTest (PythonModule) with PYTHONPATH at the
 build tree's package, DRAPE_SOURCE_DIR at the clone and DRAPE_BINARY at the built drape."""
 
+import contextlib
 import csv
 import ctypes
+import io
 import json
 import os
 import signal
 import subprocess
 import threading
+import warnings
 
 import numpy as np
 import pytest
@@ -185,7 +188,7 @@ def test_a_fit_gives_its_tables(tmp_path):
     assert len(fitted.history) == fitted.table["evaluations"]
     # The files drape fit writes, where asked, and drape's nodes.csv as measured positions.
     folder = tmp_path / "fit"
-    drape.fit(config("fit/fit_drape_coefficient.yaml"), directory=folder)
+    drape.fit(config("fit/fit_drape_coefficient.yaml"), out=folder)
     assert (folder / "fit.json").is_file() and (folder / "history.csv").is_file()
     with pytest.raises(drape.InputError, match="unknown fit method"):
         drape.fit(config("fit/fit_drape_coefficient.yaml"), method="bobyqaa")
@@ -220,7 +223,7 @@ def test_numpys_threads_are_given_back():
 
 
 def test_a_sweep_gives_its_table(tmp_path):
-    table = drape.sweep(config("sweep/sweep_small.yaml"), directory=tmp_path / "sweep", threads=1)
+    table = drape.sweep(config("sweep/sweep_small.yaml"), out=tmp_path / "sweep", threads=1)
     rows = table.to_dict("records") if hasattr(table, "to_dict") else table
     assert len(rows) == 4
     assert all(isinstance(row["converged"], (bool, np.bool_)) and row["converged"] for row in rows)
@@ -243,3 +246,179 @@ def test_a_fit_from_a_dict_is_the_files():
         drape.fit(spec, base=config("fit"))
     assert error.value.file == "<dict>" and error.value.key == "parameters[0].bounds"
     assert str(error.value).startswith("<dict>: parameters[0].bounds: ") and error.value.line == 0
+
+
+# ---- issue 54: bugs, Python's channels, arrays in, sensitivities, one command layer ----------
+
+def test_a_fit_dicts_default_base_is_the_current_folder(monkeypatch):
+    """base="." was joined to the dict's paths without being made absolute; and the warnings of a
+    dict's fit named its temporary file."""
+    spec = {"scene": "drape_fv.yaml",
+            "parameters": [{"key": "material.finite_volume.D_warp", "initial": 6.0e-5,
+                            "bounds": [1.0e-6, 1.0e-3], "log": True}],
+            "measurements": [{"drape_coefficient": {"value": 0.525460090, "disc_radius": 0.06,
+                                                    "sigma": 0.005}}]}
+    monkeypatch.chdir(config("fit"))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        fitted = drape.fit(spec, progress=None)
+    assert fitted.converged
+    for text in [str(w.message) for w in caught] + fitted.warnings:
+        assert "drape_fit_dict_" not in text
+
+
+def test_an_unknown_solver_is_blamed_on_the_argument():
+    with pytest.raises(drape.InputError) as error:
+        drape.solve(config("examples/chain.yaml"), solver="newtn")
+    assert error.value.file == "solver"
+    assert "did you mean 'newton'?" in str(error.value)
+    assert "chain.yaml" not in str(error.value)
+
+
+@pytest.mark.parametrize("call", [
+    lambda: drape.load("no/such/scene.yaml"),
+    lambda: drape.solve("no/such/scene.yaml"),
+    lambda: drape.fit("no/such/fit.yaml"),
+    lambda: drape.sweep("no/such/sweep.yaml"),
+    lambda: drape.fabrics("no/such/fabrics.csv"),
+])
+def test_a_missing_file_is_a_file_not_found_error(call):
+    with pytest.raises(FileNotFoundError) as error:
+        call()
+    assert error.value.filename.startswith("no/such/")
+
+
+def test_drapes_warnings_are_python_warnings():
+    coarse = {"mesh.spacing": 0.03}
+    with pytest.warns(drape.DrapeWarning, match="is coarse for this fabric"):
+        drape.solve(config("fv/drape_tester_cotton_30.yaml"), set=coarse)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        warnings.filterwarnings("ignore", category=drape.DrapeWarning)
+        drape.solve(config("fv/drape_tester_cotton_30.yaml"), set=coarse)  # silenced: no error
+
+
+def test_progress_goes_through_python(capfd):
+    scene = drape.load(config("fv/drape_tester_cotton_30.yaml"), set={"mesh.spacing": 0.05})
+    lines = []
+    drape.drops(scene, drops=2, threads=1, progress=lines.append)
+    assert len(lines) == 2 and lines[1].startswith("drop 2 (2 of 2 done): drape coefficient")
+    captured = io.StringIO()
+    with contextlib.redirect_stderr(captured):
+        drape.drops(scene, drops=2, threads=1)  # the default: printed to sys.stderr
+    assert captured.getvalue().count("\n") == 2 and "drop 1 (" in captured.getvalue()
+    drape.drops(scene, drops=2, threads=1, progress=None)
+    assert capfd.readouterr().err == ""  # nothing reached file descriptor 2 either
+
+
+def test_a_progress_callable_that_raises_stops_the_command():
+    scene = drape.load(config("fv/drape_tester_cotton_30.yaml"), set={"mesh.spacing": 0.05})
+
+    def stop(line):
+        raise RuntimeError("enough: " + line)
+
+    with pytest.raises(RuntimeError, match="enough: drop 1"):
+        drape.drops(scene, drops=3, threads=1, progress=stop)
+
+
+def _square(n):
+    """An n × n grid of 1 m as arrays: vertices and triangles."""
+    xs = np.linspace(0.0, 1.0, n)
+    vertices = np.array([[x, y, 0.0] for y in xs for x in xs])
+    faces = []
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a = j * n + i
+            faces += [[a, a + 1, a + n + 1], [a, a + n + 1, a + n]]
+    return vertices, np.array(faces)
+
+
+HANGING_CLOTH = """
+mesh: {kind: file, path: cloth.obj}
+material: {model: springs, density: 0.2, springs: {structural: 1000, flexion: 10}}
+fixed: [{nodes: {ids: [0]}}, {nodes: {ids: [4]}}]
+loads: {gravity: [0, 0, -9.81]}
+solver: {method: newton, tolerance: 1.0e-10}
+"""
+
+
+def test_a_mesh_from_arrays_is_the_same_mesh_from_a_file(tmp_path):
+    vertices, faces = _square(5)
+    with open(tmp_path / "cloth.obj", "w") as obj:
+        obj.writelines(f"v {x!r} {y!r} {z!r}\n" for x, y, z in vertices)
+        obj.writelines(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in faces)
+    from_file = drape.solve(drape.loads(HANGING_CLOTH, directory=tmp_path))
+    from_arrays = drape.solve(drape.loads(HANGING_CLOTH, mesh=(vertices, faces)))
+    assert np.array_equal(from_arrays.positions, from_file.positions)
+    quads = np.array([[a, b, c, d] for (a, b, c), (_, _, d) in zip(faces[::2], faces[1::2])])
+    assert drape.solve(drape.loads(HANGING_CLOTH, mesh=(vertices, quads))).converged
+
+
+@pytest.mark.parametrize("faces, where, what", [
+    ([[0, 1, 2], [0, 2, 99]], "faces[1]", "face vertex 99 is out of range"),
+    ([[0, 1, 1]], "faces[0]", "uses vertex 1 twice"),
+    ([[0.0, 1.0, 2.0]], "faces", "expected integer vertex indices"),
+    ([[0, 1]], "faces", "expected an array of shape (m, 3) or (m, 4)"),
+])
+def test_bad_mesh_arrays_are_located_at_their_row(faces, where, what):
+    vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0]], float)
+    with pytest.raises(drape.InputError) as error:
+        drape.solve(drape.loads(HANGING_CLOTH, mesh=(vertices, np.array(faces))))
+    assert error.value.key == where and what in str(error.value)
+    assert str(error.value).startswith("mesh arrays: " + where)
+
+
+def _differences(scene, key, value, step):
+    solve = lambda p: drape.solve(scene, set={key: p, "solver.tolerance": 1e-12},
+                                  progress=None).positions
+    return (solve(value + step) - solve(value - step)) / (2 * step)
+
+
+@pytest.mark.parametrize("scene, key, value", [
+    ("examples/hanging_sheet.yaml", "material.springs.structural", 1000.0),
+    ("examples/hanging_sheet.yaml", "material.density", 0.2),
+    ("fv/cantilever.yaml", "material.finite_volume.D_warp", 9.41760e-6),
+    ("fv/cantilever.yaml", "material.density", 0.12),
+])
+def test_sensitivities_are_the_central_differences(scene, key, value):
+    """The implicit function theorem against solves at p ± 1e-3 p (O(1e-6) truncation)."""
+    derivative = drape.sensitivities(config(scene), [key])
+    assert derivative.shape == (len(drape.solve(config(scene)).positions), 3, 1)
+    expected = _differences(config(scene), key, value, 1e-3 * value)
+    scale = np.abs(expected).max()
+    assert scale > 0
+    assert np.abs(derivative[:, :, 0] - expected).max() <= 1e-5 * scale
+
+
+def test_sensitivities_are_refused_without_a_stable_equilibrium():
+    with pytest.raises(drape.InputError, match="did not converge"):
+        drape.sensitivities(config("examples/hanging_sheet.yaml"), ["material.density"],
+                            set={"solver.max_iterations": 1}, progress=None)
+    with pytest.raises(drape.InputError, match="not a number of the scene"):
+        drape.sensitivities(config("examples/hanging_sheet.yaml"), ["material.nonsense"])
+
+
+def test_fabrics_in_python_are_the_command_lines(tmp_path):
+    table = tmp_path / "fabrics.csv"
+    table.write_text("name,kes.W,kes.B_warp,kes.B_weft,kes.G,kes.EMT_warp,kes.EMT_weft,measured_dc\n"
+                     "cotton,12,0.12,0.08,0.9,4,7,0.70\n")
+    result = drape.fabrics(table, set={"mesh.spacing": 0.05}, threads=1, progress=None)
+    subprocess.run([BINARY, "fabrics", str(table), "--set", "mesh.spacing=0.05", "--threads", "1",
+                    "-o", str(tmp_path / "cli")], check=True, capture_output=True,
+                   env=dict(os.environ, OPENBLAS_CORETYPE=module_blas_core()))
+    with open(tmp_path / "cli" / "fabrics.csv") as file:
+        cli = next(csv.DictReader(file))
+    rows = result.table.to_dict("records") if hasattr(result.table, "to_dict") else result.table
+    assert rows[0]["predicted_dc"] == float(cli["predicted_dc"])
+    assert result.statistics["fabrics_compared"] == 1
+    assert result.line.startswith("1 fabric: 1 predicted")
+
+
+def test_every_long_command_writes_into_a_temporary_folder_unless_told(tmp_path):
+    before = set(os.listdir(config("sweep")))
+    drape.sweep(config("sweep/sweep_small.yaml"), threads=1, progress=None)
+    assert set(os.listdir(config("sweep"))) == before  # nothing beside the sweep file
+    with pytest.warns(DeprecationWarning, match="directory= is now out="):
+        drape.sweep(config("sweep/sweep_small.yaml"), directory=tmp_path / "old", threads=1,
+                    progress=None)
+    assert (tmp_path / "old" / "sweep.csv").is_file()

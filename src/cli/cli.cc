@@ -20,6 +20,7 @@
 #include "src/analysis/mesh_rule.h"
 #include "src/cli/progress.h"
 #include "src/cli/usage.h"
+#include "src/commands/commands.h"
 #include "src/compare/compare.h"
 #include "src/fit/fit_file.h"
 #include "src/fit/fit_methods.h"
@@ -92,15 +93,6 @@ struct Arguments {
 };
 
 // "unknown solver 'newtn' (known: newton, ...); did you mean 'newton'?"
-std::string UnknownSolverText(const std::string& name) {
-  std::vector<std::string> names;
-  std::string list;
-  for (const auto& info : AllSolvers()) {
-    names.push_back(info.name);
-    list += (list.empty() ? "" : ", ") + info.name;
-  }
-  return "unknown solver '" + name + "' (known: " + list + ")" + SuggestionText(name, names);
-}
 
 std::string TermSummary(const Model& model) {
   std::string text;
@@ -220,27 +212,19 @@ int DropsOf(const Arguments& arguments, const Scene& scene) {
 
 int SolveDrops(const Arguments& arguments, const Scene& scene, const std::string& directory,
                std::ostream& out, std::ostream& err) {
-  DropsOptions options;
-  options.drops = DropsOf(arguments, scene);
-  options.threads = arguments.threads;
-  options.directory = directory;
-  options.command_line = arguments.command_line;
-  options.overrides = arguments.overrides;
+  DropsCommand command;
+  command.drops = DropsOf(arguments, scene);
+  command.threads = arguments.threads;
+  command.directory = directory;
+  command.overrides = arguments.overrides;
   EnableInterrupt();
-  const DropsSummary summary = RunDrops(scene, options, err);
-  if (!summary.coordinator) return kExitConverged;
-  const DropStatistics& statistics = summary.statistics;
-  out << DropsLine(statistics, summary.mesh_advice) << "; results in " << directory
-      << " (report.html)" << std::endl;
-  if (statistics.counted > 0) {
-    if (const auto advice =
-            SpecimenSizeAdvice(scene.drape_test->specimen_diameter, statistics.mean)) {
-      out << "specimen size: " << *advice << std::endl;
-    }
-  }
-  if (InterruptRequested()) return kExitNotConverged;
-  return summary.statistics.counted == summary.statistics.drops ? kExitConverged
-                                                                : kExitNotConverged;
+  const DropsCommandResult outcome =
+      RunDropsCommand(scene, command, CommandContext{err, arguments.command_line});
+  if (!outcome.summary.coordinator) return kExitConverged;
+  for (const std::string& line : outcome.lines) out << line << std::endl;
+  if (outcome.interrupted) return kExitNotConverged;
+  const DropStatistics& statistics = outcome.summary.statistics;
+  return statistics.counted == statistics.drops ? kExitConverged : kExitNotConverged;
 }
 
 int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
@@ -364,72 +348,33 @@ int Check(const Arguments& arguments, std::ostream& out) {
   return kExitConverged;
 }
 
-// The progress line of each fit evaluation, on `err`.
-std::function<void(const FitIterationRecord&)> FitProgressPrinter(const FitSpec& spec,
-                                                                  std::ostream& err) {
-  return [&spec, &err](const FitIterationRecord& record) {
-    char text[120];
-    std::snprintf(text, sizeof text, "fit %s: evaluation %d, %.2f s, objective %.6g (best %.6g)",
-                  spec.method.c_str(), record.evaluation, record.time_s, record.objective,
-                  record.best_objective);
-    err << text;
-    for (size_t j = 0; j < record.parameters.size(); ++j) {
-      std::snprintf(text, sizeof text, ", %s=%.8g", spec.parameters[j].key.c_str(),
-                    record.parameters[j]);
-      err << text;
-    }
-    err << (record.inner_converged ? "" : " (an equilibrium did not converge)") << "\n";
-  };
-}
-
-// `drape fit`: load the fit file (every input checked before any solve), run the outer loop with
-// a progress line per evaluation on `err`, write the outputs. Exit 0 converged, 1 not converged.
+// `drape fit`: the fit file checked before any solve, a progress line per evaluation on `err`,
+// the outputs written (src/commands/commands.h). Exit 0 converged, 1 not converged.
 int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
-  FitSpec spec = LoadFitFile(arguments.file, arguments.overrides);
-  if (arguments.method) {
-    if (!FindFitMethod(*arguments.method)) {
-      throw UsageError("unknown fit method '" + *arguments.method + "' (known: " + FitMethodList() +
-                       ")");
-    }
-    spec.method = *arguments.method;
-  }
-  if (arguments.out) spec.output_directory = *arguments.out;
-  // Under mpirun/srun every rank runs the fit in step; only the coordinator reports and writes.
-  const bool coordinator = Processes().IsCoordinator();
-  if (coordinator) {
-    try {  // before any solve: an unwritable folder costs nothing
-      CheckOutputWritable(spec.output_directory);
-    } catch (const std::exception& error) {
-      err << "drape fit: cannot write the results: " << error.what() << "; nothing solved\n";
-      AbortJobAfterError(kExitBadInput);  // under MPI: the other ranks would wait for this one
-      return kExitBadInput;
-    }
-  }
-  if (coordinator) {
-    for (const std::string& warning : spec.warnings)
-      err << "drape fit: warning: " << warning << "\n";
-  }
-  FitProblem problem(spec, arguments.threads);
-  FitOptions options;
-  if (coordinator) options.on_evaluation = FitProgressPrinter(spec, err);
+  FitCommand command;
+  command.file = arguments.file;
+  command.overrides = arguments.overrides;
+  command.method = arguments.method;
+  command.out = arguments.out;
+  command.threads = arguments.threads;
   EnableInterrupt();
-  const FitResult result = RunFit(problem, options);
-  if (result.parameters.empty()) {
-    if (coordinator) err << "drape fit: " << result.termination << "; nothing written\n";
-    return kExitNotConverged;
-  }
-  if (!coordinator) return result.converged ? kExitConverged : kExitNotConverged;
+  FitCommandResult outcome;
   try {
-    WriteFitOutputs(problem, result, spec.output_directory,
-                    Provenance{arguments.command_line, arguments.overrides});
-  } catch (const std::exception& error) {
-    err << "drape: cannot write the results: " << error.what() << "\n";
+    outcome = RunFitCommand(command, CommandContext{err, arguments.command_line});
+  } catch (const CommandOptionError& error) {
+    throw UsageError(error.what());
+  } catch (const OutputFolderError& error) {
+    err << "drape fit: cannot write the results: " << error.what() << "\n";
+    AbortJobAfterError(kExitBadInput);  // under MPI: the other ranks would wait for this one
     return kExitBadInput;
   }
-  out << "fit " << spec.method << ": converged " << (result.converged ? "yes" : "no") << ", "
-      << result.evaluations << " evaluations, objective " << result.objective << " ("
-      << result.termination << "); results in " << spec.output_directory << std::endl;
-  return result.converged ? kExitConverged : kExitNotConverged;
+  const bool converged = outcome.result.converged;
+  if (!outcome.written) {
+    if (outcome.coordinator && !outcome.line.empty()) err << outcome.line << "\n";
+    return converged ? kExitConverged : kExitNotConverged;
+  }
+  out << outcome.line << std::endl;
+  return converged ? kExitConverged : kExitNotConverged;
 }
 
 // What the command line of `drape sweep` gives.
@@ -442,62 +387,59 @@ struct SweepArguments {
   bool no_plots = false;
 };
 
-// The task --only or --task-id names (--task-id alone: $SLURM_ARRAY_TASK_ID), checked against the
-// sweep's tasks.
-std::optional<int> OnlyTask(const SweepArguments& arguments, const SweepSpec& spec) {
-  std::optional<int> only = arguments.only;
-  if (arguments.task_id) {
-    if (only) throw UsageError("give --only or --task-id, not both");
-    std::string text = *arguments.task_id;
-    if (text.empty()) {
-      const char* slurm = std::getenv("SLURM_ARRAY_TASK_ID");
-      if (!slurm) throw UsageError("--task-id without a value needs $SLURM_ARRAY_TASK_ID");
-      text = slurm;
-    }
-    int value = -1;
-    if (!CLI::detail::lexical_cast(text, value) || value < 0) {
-      throw UsageError("--task-id: expected a task number >= 0, got '" + text + "'");
-    }
-    only = value;
+// The task --only or --task-id names (--task-id alone: $SLURM_ARRAY_TASK_ID); the command checks
+// that it is one of its tasks.
+std::optional<int> OnlyTask(std::optional<int> only, const std::optional<std::string>& task_id) {
+  if (!task_id) return only;
+  if (only) throw UsageError("give --only or --task-id, not both");
+  std::string text = *task_id;
+  if (text.empty()) {
+    const char* slurm = std::getenv("SLURM_ARRAY_TASK_ID");
+    if (!slurm) throw UsageError("--task-id without a value needs $SLURM_ARRAY_TASK_ID");
+    text = slurm;
   }
-  const int count = static_cast<int>(spec.tasks.size());
-  if (only && (*only < 0 || *only >= count)) {
-    throw UsageError("task " + std::to_string(*only) + " is not in the sweep (its tasks are 0 to " +
-                     std::to_string(count - 1) + ")");
+  int value = -1;
+  if (!CLI::detail::lexical_cast(text, value) || value < 0) {
+    throw UsageError("--task-id: expected a task number >= 0, got '" + text + "'");
   }
-  return only;
+  return value;
+}
+
+// A command of the layer (src/commands/commands.h) run for the command line: its option errors
+// with the usage, an output folder or a task farm that fails as "drape NAME: …", exit 2.
+template <typename Run>
+int RunFarmedCommand(const std::string& name, std::ostream& err, const Run& run) {
+  EnableInterrupt();
+  try {
+    return run();
+  } catch (const CommandOptionError& error) {
+    throw UsageError(error.what());
+  } catch (const InputError&) {
+    throw;
+  } catch (const TaskFarmError& error) {
+    err << "drape " << name << ": " << error.what() << "\n";
+  } catch (const std::exception& error) {
+    err << "drape: cannot write the results: " << error.what() << "\n";
+  }
+  return kExitBadInput;
 }
 
 // `drape sweep`: every input checked before any solve; one progress line per finished task on
 // `err`. Exit 0 when every task (or the --only task) converged, 1 otherwise.
 int Sweep(const SweepArguments& arguments, const std::string& command_line, std::ostream& out,
           std::ostream& err) {
-  const SweepSpec spec = LoadSweepFile(arguments.file);
-  SweepOptions options;
-  options.only = OnlyTask(arguments, spec);
-  if (arguments.out) options.out = *arguments.out;
-  options.threads = arguments.threads;
-  options.plots = !arguments.no_plots;
-  options.command_line = command_line;
-  EnableInterrupt();
-  SweepSummary summary;
-  try {
-    summary = RunSweep(spec, options, err);
-  } catch (const TaskFarmError& error) {
-    err << "drape sweep: " << error.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::exception& error) {
-    err << "drape: cannot write the results: " << error.what() << "\n";
-    return kExitBadInput;
-  }
-  if (!summary.coordinator) return kExitConverged;
-  out << "sweep: " << summary.tasks << " tasks; " << summary.solved << " solved, "
-      << summary.skipped << " already done (skipped); " << summary.rows << " rows, "
-      << summary.converged << " converged" << (summary.interrupted ? "; interrupted" : "")
-      << "; results in " << summary.directory << "/sweep.csv" << std::endl;
-  const bool all = options.only ? summary.converged_tasks.count(*options.only) > 0
-                                : static_cast<int>(summary.converged_tasks.size()) == summary.tasks;
-  return all && !summary.interrupted ? kExitConverged : kExitNotConverged;
+  SweepCommand command;
+  command.file = arguments.file;
+  command.only = OnlyTask(arguments.only, arguments.task_id);
+  if (arguments.out) command.out = *arguments.out;
+  command.threads = arguments.threads;
+  command.plots = !arguments.no_plots;
+  return RunFarmedCommand("sweep", err, [&] {
+    const SweepCommandResult outcome = RunSweepCommand(command, CommandContext{err, command_line});
+    if (!outcome.summary.coordinator) return kExitConverged;
+    out << outcome.line << std::endl;
+    return outcome.all_converged ? kExitConverged : kExitNotConverged;
+  });
 }
 
 // What the command line of `drape fabrics` gives.
@@ -511,44 +453,14 @@ struct FabricsArguments {
 // prediction, 1 otherwise.
 int Fabrics(FabricsArguments arguments, const std::string& command_line, std::ostream& out,
             std::ostream& err) {
-  FabricsOptions& options = arguments.options;
-  options.command_line = command_line;
-  if (arguments.task_id) {
-    if (options.only) throw UsageError("give --only or --task-id, not both");
-    std::string text = *arguments.task_id;
-    if (text.empty()) {
-      const char* slurm = std::getenv("SLURM_ARRAY_TASK_ID");
-      if (!slurm) throw UsageError("--task-id without a value needs $SLURM_ARRAY_TASK_ID");
-      text = slurm;
-    }
-    int value = -1;
-    if (!CLI::detail::lexical_cast(text, value) || value < 0) {
-      throw UsageError("--task-id: expected a task number >= 0, got '" + text + "'");
-    }
-    options.only = value;
-  }
-  const FabricsSpec spec = LoadFabrics(options);
-  EnableInterrupt();
-  FabricsSummary summary;
-  try {
-    summary = RunFabrics(spec, options, err);
-  } catch (const TaskFarmError& error) {
-    err << "drape fabrics: " << error.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::exception& error) {
-    err << "drape: cannot write the results: " << error.what() << "\n";
-    return kExitBadInput;
-  }
-  if (!summary.coordinator) return kExitConverged;
-  if (options.only) {
-    out << "fabrics: task " << *options.only << " done; results in " << summary.directory
-        << " (run without --only to write fabrics.csv)" << std::endl;
-    return summary.interrupted ? kExitNotConverged : kExitConverged;
-  }
-  out << FabricsLine(summary) << "; results in " << summary.directory << "/fabrics.csv"
-      << std::endl;
-  return summary.predicted == summary.fabrics && !summary.interrupted ? kExitConverged
-                                                                      : kExitNotConverged;
+  arguments.options.only = OnlyTask(arguments.options.only, arguments.task_id);
+  return RunFarmedCommand("fabrics", err, [&] {
+    const FabricsCommandResult outcome =
+        RunFabricsCommand(arguments.options, CommandContext{err, command_line});
+    if (!outcome.summary.coordinator) return kExitConverged;
+    out << outcome.line << std::endl;
+    return outcome.all_predicted ? kExitConverged : kExitNotConverged;
+  });
 }
 
 // The catalogue (src/scene/solver_methods.h): each method, its default limits and every option
@@ -898,6 +810,16 @@ int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   err << std::flush;
   AbortJobAfterError(kExitBadInput);  // under MPI: the other ranks may wait for this one
   return kExitBadInput;
+}
+
+std::string UnknownSolverText(const std::string& name) {
+  std::vector<std::string> names;
+  std::string list;
+  for (const auto& info : AllSolvers()) {
+    names.push_back(info.name);
+    list += (list.empty() ? "" : ", ") + info.name;
+  }
+  return "unknown solver '" + name + "' (known: " + list + ")" + SuggestionText(name, names);
 }
 
 void RequireKnownSolver(const Scene& scene) {

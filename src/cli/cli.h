@@ -27,6 +27,9 @@ struct CommandOptions {
   double plain_progress_interval_s = 0.0;
 };
 
+// "unknown solver 'newtn' (known: newton, …); did you mean 'newton'?"
+std::string UnknownSolverText(const std::string& name);
+
 // The scene's method must exist before anything is built (a typo should not cost a model build):
 // InputError at solver.method, "unknown solver 'newtn' (known: …); did you mean 'newton'?".
 void RequireKnownSolver(const Scene& scene);

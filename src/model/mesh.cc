@@ -522,8 +522,27 @@ Mesh BuildArc(const MeshSpec& spec) {
 // ---------------------------------------------------------------------------------------------
 // file
 
+// The label of a mesh given as arrays, in its errors.
+constexpr const char* kMeshArrays = "mesh arrays";
+
+// A file's error at its place; an array's at the face (FilePlace::line = face + 1) or as a whole.
 [[noreturn]] void FileError(const MeshSpec& spec, const FilePlace& place, const std::string& what) {
+  if (spec.arrays) {
+    throw InputError(Location{kMeshArrays, 0, 0,
+                              place.line > 0 ? "faces[" + std::to_string(place.line - 1) + "]"
+                                             : ""},
+                     what);
+  }
   throw InputError(spec.where, PlaceText(spec.path, place) + ": " + what);
+}
+
+// A vertex's number as the user counts it: from 1 in a file, from 0 in an array.
+std::string VertexNumber(const MeshSpec& spec, int v) {
+  return std::to_string(spec.arrays ? v : v + 1);
+}
+
+std::string CountedFrom(const MeshSpec& spec) {
+  return spec.arrays ? "the array has " : "the file has ";
 }
 
 // A face of zero area gives its nodes no mass and no membrane: an error, located at its line.
@@ -546,13 +565,15 @@ void CheckFaceAreas(const MeshFileData& data, const Mesh& mesh, const MeshSpec& 
 Mesh SurfaceMesh(const MeshFileData& data, const MeshSpec& spec) {
   if (data.vertices.size() > static_cast<size_t>(spec.max_nodes)) {
     FileError(spec, {},
-              "the file has " + std::to_string(data.vertices.size()) +
+              CountedFrom(spec) + std::to_string(data.vertices.size()) +
                   " vertices, above the limit of " + std::to_string(spec.max_nodes) +
                   " nodes; raise mesh.max_nodes to build it anyway");
   }
   const int n = static_cast<int>(data.vertices.size());
-  if (n == 0) FileError(spec, {}, "the file has no vertices");
-  if (data.faces.empty()) FileError(spec, {}, "the file has no faces (springs follow face edges)");
+  if (n == 0) FileError(spec, {}, CountedFrom(spec) + "no vertices");
+  if (data.faces.empty()) {
+    FileError(spec, {}, CountedFrom(spec) + "no faces (springs follow face edges)");
+  }
   Mesh mesh;
   mesh.nodes = data.vertices;
   mesh.grid_index.assign(n, {-1, -1});
@@ -565,11 +586,12 @@ Mesh SurfaceMesh(const MeshFileData& data, const MeshSpec& spec) {
     for (int v : face) {
       if (v < 0 || v >= n) {
         FileError(spec, line,
-                  "face vertex " + std::to_string(v + 1) + " is out of range (the file has " +
-                      std::to_string(n) + " vertices, counted from 1)");
+                  "face vertex " + VertexNumber(spec, v) + " is out of range (" +
+                      CountedFrom(spec) + std::to_string(n) + " vertices, counted from " +
+                      (spec.arrays ? "0" : "1") + ")");
       }
       if (!distinct.insert(v).second) {
-        FileError(spec, line, "a face uses vertex " + std::to_string(v + 1) + " twice");
+        FileError(spec, line, "a face uses vertex " + VertexNumber(spec, v) + " twice");
       }
       used[v] = 1;
     }
@@ -580,7 +602,7 @@ Mesh SurfaceMesh(const MeshFileData& data, const MeshSpec& spec) {
   for (int v = 0; v < n; ++v) {
     if (!used[v]) {
       FileError(spec, {},
-                "vertex " + std::to_string(v + 1) + " belongs to no face (it would float free)");
+                "vertex " + VertexNumber(spec, v) + " belongs to no face (it would float free)");
     }
   }
   // Edges and, for each, the vertices opposite it in the triangles that share it.
@@ -603,7 +625,19 @@ Mesh SurfaceMesh(const MeshFileData& data, const MeshSpec& spec) {
   return mesh;
 }
 
+// The arrays as a file's contents: each face's place is its row (line = row + 1).
+MeshFileData DataOfArrays(const MeshSpec::Arrays& arrays) {
+  MeshFileData data;
+  data.vertices = arrays.vertices;
+  data.faces = arrays.faces;
+  for (size_t f = 0; f < arrays.faces.size(); ++f) {
+    data.face_places.push_back(FilePlace{static_cast<int>(f) + 1, -1});
+  }
+  return data;
+}
+
 Mesh BuildFromFile(const MeshSpec& spec) {
+  if (spec.arrays) return SurfaceMesh(DataOfArrays(*spec.arrays), spec);
   try {
     return SurfaceMesh(ReadMeshFile(spec.path), spec);
   } catch (const MeshFileError& error) {

@@ -4,8 +4,11 @@ namespace drape {
 
 namespace {
 std::string Locate(const Location& where, const std::string& what) {
-  std::string text =
-      where.file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) + ": ";
+  // A place without a line (a fabric table that cannot be read, a mesh given as arrays) is its
+  // file's name alone.
+  std::string text = where.line > 0 ? where.file + ":" + std::to_string(where.line) + ":" +
+                                          std::to_string(where.column) + ": "
+                                    : where.file + ": ";
   if (!where.key.empty()) text += where.key + ": ";
   return text + what;
 }

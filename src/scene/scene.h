@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -65,6 +66,13 @@ struct MeshSpec {
   bool closed = false;                  // chain: a link from the last node back to the first
   // file
   std::string path;  // resolved against the scene file's folder
+  // Or the surface given as arrays instead of a file (Python's `mesh=(vertices, faces)`): built
+  // and checked as a file's, its errors located at the array's row (`faces[2]`), counted from 0.
+  struct Arrays {
+    std::vector<Eigen::Vector3d> vertices;
+    std::vector<std::vector<int>> faces;
+  };
+  std::shared_ptr<const Arrays> arrays;
   int max_nodes =
       1000000;  // the loader refuses a larger mesh (mesh.max_nodes, src/scene/scene_size.h)
   Location where;

@@ -518,8 +518,8 @@ FabricsSpec LoadFabrics(const FabricsOptions& options) {
   }
   spec.drops = options.drops ? *options.drops : spec.fabrics.front().scene.drape_test->drops;
   if (options.only && (*options.only < 0 || *options.only >= spec.tasks())) {
-    throw InputError("task " + std::to_string(*options.only) +
-                     " is not in the table (its tasks are 0 to " +
+    throw InputError("--only " + std::to_string(*options.only) +
+                     ": not a task of the table (its tasks are 0 to " +
                      std::to_string(spec.tasks() - 1) + ")");
   }
   return spec;
