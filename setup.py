@@ -19,7 +19,6 @@ Environment: CMAKE_BUILD_PARALLEL_LEVEL (jobs; default the machine's cores), DRA
 (more -D options, split on spaces, e.g. "-DDRAPE_CCACHE=OFF").
 """
 
-import importlib.util
 import os
 import re
 import shlex
@@ -35,12 +34,12 @@ SOURCE = Path(__file__).resolve().parent
 
 
 def _pep440_version(text):
-    """python/drape/_version.py's pep440_version, loaded by path (the package needs _drape)."""
-    spec = importlib.util.spec_from_file_location("_drape_version",
-                                                  SOURCE / "python" / "drape" / "_version.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.pep440_version(text)
+    """python/drape/_version.py's pep440_version, run from its text (importing the package needs
+    _drape; an import by path would leave its bytecode in python/drape/__pycache__)."""
+    path = SOURCE / "python" / "drape" / "_version.py"
+    namespace = {"__name__": "_drape_version"}
+    exec(compile(path.read_text(), str(path), "exec"), namespace)
+    return namespace["pep440_version"](text)
 
 
 def version():

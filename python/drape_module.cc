@@ -7,11 +7,11 @@
 // overrides, raises KeyboardInterrupt after an interrupted solve, emits the warnings and gives
 // the classes their Python face; this file holds only what needs C++.
 #include <Python.h>
-#include <yaml-cpp/yaml.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <signal.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <functional>
@@ -134,7 +134,7 @@ struct PySolved {
   Model model;
   SolveReport report;
   Provenance provenance;
-  bool interrupted = false;  // stopped by Ctrl-C: the last iterate
+  bool interrupted = false;           // stopped by Ctrl-C: the last iterate
   std::vector<std::string> warnings;  // for warnings.warn (the mesh rule's)
 };
 
@@ -344,8 +344,9 @@ py::dict Fit(const std::string& path, const std::vector<std::string>& overrides,
   FitCommand command{path, overrides, method, directory, threads};
   PythonLog log(progress);
   const FitCommandResult result = WithOptionErrors([&] {
-    return RunCommandForPython(
-        &log, [&] { return RunFitCommand(command, CommandContext{log.stream, "python: drape.fit"}); });
+    return RunCommandForPython(&log, [&] {
+      return RunFitCommand(command, CommandContext{log.stream, "python: drape.fit"});
+    });
   });
   if (!result.written) throw std::runtime_error(result.line);
   py::dict outcome;
@@ -486,11 +487,12 @@ py::array_t<double> Sensitivities(const PyScene& loaded, const std::vector<std::
     throw InputError(Location{"sensitivities", 0, 0, ""}, error.what());
   }
   const int nodes = solved->model.num_nodes;
-  py::array_t<double> array({static_cast<py::ssize_t>(nodes), py::ssize_t{3},
-                             static_cast<py::ssize_t>(keys.size())});
+  py::array_t<double> array(
+      {static_cast<py::ssize_t>(nodes), py::ssize_t{3}, static_cast<py::ssize_t>(keys.size())});
   auto view = array.mutable_unchecked<3>();
   for (size_t k = 0; k < keys.size(); ++k) {
-    for (int i = 0; i < 3 * nodes; ++i) view(i / 3, i % 3, static_cast<py::ssize_t>(k)) = derivatives[k][i];
+    for (int i = 0; i < 3 * nodes; ++i)
+      view(i / 3, i % 3, static_cast<py::ssize_t>(k)) = derivatives[k][i];
   }
   return array;
 }
@@ -502,7 +504,8 @@ std::shared_ptr<const MeshSpec::Arrays> MeshArrays(const py::object& vertices_ob
   const py::array vertices = py::array::ensure(vertices_object);
   const py::array faces = py::array::ensure(faces_object);
   if (!vertices || vertices.ndim() != 2 || vertices.shape(1) != 3) {
-    throw InputError(Location{"mesh arrays", 0, 0, "vertices"}, "expected an array of shape (n, 3)");
+    throw InputError(Location{"mesh arrays", 0, 0, "vertices"},
+                     "expected an array of shape (n, 3)");
   }
   if (!faces || faces.ndim() != 2 || (faces.shape(1) != 3 && faces.shape(1) != 4)) {
     throw InputError(Location{"mesh arrays", 0, 0, "faces"},
@@ -591,18 +594,20 @@ PYBIND11_MODULE(_drape, module) {
       "load",
       [](const std::string& path, const std::vector<std::string>& overrides,
          const std::optional<py::tuple>& mesh) {
-        return LoadedScene([path](const std::vector<std::string>& with) {
-          return LoadScene(path, with);
-        }, overrides, mesh);
+        return LoadedScene(
+            [path](const std::vector<std::string>& with) { return LoadScene(path, with); },
+            overrides, mesh);
       },
       py::arg("path"), py::arg("overrides"), py::arg("mesh"));
   module.def(
       "loads",
       [](const std::string& text, const std::string& label, const std::string& directory,
          const std::vector<std::string>& overrides, const std::optional<py::tuple>& mesh) {
-        return LoadedScene([text, label, directory](const std::vector<std::string>& with) {
-          return LoadSceneText(text, label, directory, with);
-        }, overrides, mesh);
+        return LoadedScene(
+            [text, label, directory](const std::vector<std::string>& with) {
+              return LoadSceneText(text, label, directory, with);
+            },
+            overrides, mesh);
       },
       py::arg("text"), py::arg("label"), py::arg("directory"), py::arg("overrides"),
       py::arg("mesh"));
@@ -612,8 +617,8 @@ PYBIND11_MODULE(_drape, module) {
              py::arg("directory"), py::arg("threads"), py::arg("progress"));
   module.def("drops", &Drops, py::arg("scene"), py::arg("drops"), py::arg("directory"),
              py::arg("threads"), py::arg("progress"));
-  module.def("sweep", &Sweep, py::arg("path"), py::arg("out"), py::arg("threads"),
-             py::arg("plots"), py::arg("progress"));
+  module.def("sweep", &Sweep, py::arg("path"), py::arg("out"), py::arg("threads"), py::arg("plots"),
+             py::arg("progress"));
   module.def("fabrics", &Fabrics, py::arg("table"), py::arg("scene"), py::arg("overrides"),
              py::arg("drops"), py::arg("out"), py::arg("threads"), py::arg("progress"));
   module.def("sensitivities", &Sensitivities, py::arg("scene"), py::arg("keys"), py::arg("solver"),

@@ -2,7 +2,7 @@
 # __init__.py over the extension _drape; python/tests/test_packaging.py checks that this file names
 # what the module has (stubtest where mypy is installed, names and parameters otherwise).
 import os
-from typing import Any, Callable, Mapping, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 import pandas  # type: ignore[import]  # optional at run time; Debian's pandas has no stubs
@@ -16,8 +16,9 @@ __all__ = ["InputError", "DrapeWarning", "Scene", "Result", "DropsResult", "FitR
 __version__: str
 
 _Path = str | os.PathLike[str]
-_Overrides = Mapping[str, Any] | None       # {"mesh.spacing": 0.005}, drape solve --set's keys
-_Mesh = tuple[ArrayLike, ArrayLike] | None  # (vertices (n, 3) in m, triangles (m, 3) node ids)
+_Overrides = dict[str, Any] | None          # {"mesh.spacing": 0.005}, drape solve --set's keys
+# (vertices (n, 3) in m, faces (m, 3) or (m, 4) node ids): a mesh given as arrays.
+_Mesh = tuple[ArrayLike, ArrayLike] | None
 # A progress callback: each line drape prints while it runs; None for silence. The default
 # prints the lines to sys.stderr.
 _Progress = Callable[[str], object] | None
@@ -48,7 +49,7 @@ class Scene:
 
 def load(path: _Path, set: _Overrides = None, mesh: _Mesh = None) -> Scene: ...
 def loads(text: str, set: _Overrides = None, directory: _Path = ".", mesh: _Mesh = None) -> Scene: ...
-def from_dict(scene: Mapping[str, Any], set: _Overrides = None, directory: _Path = ".",
+def from_dict(scene: dict[str, Any], set: _Overrides = None, directory: _Path = ".",
               mesh: _Mesh = None) -> Scene: ...
 
 class Result:
@@ -116,8 +117,10 @@ class DropsResult:
     @property
     def mesh_rule(self) -> dict[str, Any] | None: ...
 
+# directory= (in drops, fit and sweep) is the former name of out=: a DeprecationWarning.
 def drops(scene: Scene | _Path, drops: int | None = None, set: _Overrides = None,
-          out: _Path | None = None, threads: int = 0, progress: _Progress = ...) -> DropsResult: ...
+          out: _Path | None = None, threads: int = 0, progress: _Progress = ...,
+          directory: _Path | None = None) -> DropsResult: ...
 
 class FitResult:
     """What `drape fit` writes: fit.json's dict (`table`) and history.csv's table (`history`)."""
@@ -141,11 +144,11 @@ class FitResult:
     @property
     def warnings(self) -> list[str]: ...
 
-def fit(fit_file: _Path | Mapping[str, Any], set: _Overrides = None, method: str | None = None,
+def fit(fit_file: _Path | dict[str, Any], set: _Overrides = None, method: str | None = None,
         out: _Path | None = None, threads: int = 1, base: _Path = ".",
-        progress: _Progress = ...) -> FitResult: ...
+        progress: _Progress = ..., directory: _Path | None = None) -> FitResult: ...
 def sweep(sweep_file: _Path, out: _Path | None = None, threads: int = 0, plots: bool = False,
-          progress: _Progress = ...) -> _Table: ...
+          progress: _Progress = ..., directory: _Path | None = None) -> _Table: ...
 
 class FabricsResult:
     """What `drape fabrics` writes: fabrics.csv's table and fabrics.json's dict."""
@@ -164,5 +167,6 @@ def fabrics(table: _Path, scene: _Path | None = None, set: _Overrides = None,
             progress: _Progress = ...) -> FabricsResult: ...
 
 # d positions / d key for each key: shape (nodes, 3, len(keys)).
-def sensitivities(scene: Scene | _Path, keys: Sequence[str], set: _Overrides = None,
-                  solver: str | None = None) -> NDArray[np.float64]: ...
+def sensitivities(scene: Scene | _Path, keys: str | Sequence[str], set: _Overrides = None,
+                  solver: str | None = None, mesh: _Mesh = None,
+                  progress: _Progress = ...) -> NDArray[np.float64]: ...

@@ -40,8 +40,9 @@ std::function<void(const FitIterationRecord&)> FitProgressPrinter(const FitSpec&
 
 void RequireThreadCount(int threads) {
   if (threads < 0) {
-    throw CommandOptionError("threads: expected a whole number >= 0 (0: the machine's cores), got " +
-                             std::to_string(threads));
+    throw CommandOptionError(
+        "threads: expected a whole number >= 0 (0: the machine's cores), got " +
+        std::to_string(threads));
   }
 }
 
@@ -97,8 +98,7 @@ DropsCommandResult RunDropsCommand(const Scene& scene, const DropsCommand& comma
   RequireThreadCount(command.threads);
   if (command.drops < 0 || command.drops > kMostDrops) {
     throw CommandOptionError("drops: expected a whole number from 1 to " +
-                             std::to_string(kMostDrops) + ", got " +
-                             std::to_string(command.drops));
+                             std::to_string(kMostDrops) + ", got " + std::to_string(command.drops));
   }
   if (!scene.drape_test) {
     throw InputError(scene.root,
@@ -147,9 +147,9 @@ SweepCommandResult RunSweepCommand(const SweepCommand& command, const CommandCon
   const SweepSummary& s = outcome.summary;
   outcome.line = "sweep: " + std::to_string(s.tasks) + " tasks; " + std::to_string(s.solved) +
                  " solved, " + std::to_string(s.skipped) + " already done (skipped); " +
-                 std::to_string(s.rows) + " rows, " + std::to_string(s.converged) +
-                 " converged" + (s.interrupted ? "; interrupted" : "") + "; results in " +
-                 s.directory + "/sweep.csv";
+                 std::to_string(s.rows) + " rows, " + std::to_string(s.converged) + " converged" +
+                 (s.interrupted ? "; interrupted" : "") + "; results in " + s.directory +
+                 "/sweep.csv";
   const bool all = command.only ? s.converged_tasks.count(*command.only) > 0
                                 : static_cast<int>(s.converged_tasks.size()) == s.tasks;
   outcome.all_converged = all && !s.interrupted;

@@ -528,10 +528,10 @@ constexpr const char* kMeshArrays = "mesh arrays";
 // A file's error at its place; an array's at the face (FilePlace::line = face + 1) or as a whole.
 [[noreturn]] void FileError(const MeshSpec& spec, const FilePlace& place, const std::string& what) {
   if (spec.arrays) {
-    throw InputError(Location{kMeshArrays, 0, 0,
-                              place.line > 0 ? "faces[" + std::to_string(place.line - 1) + "]"
-                                             : ""},
-                     what);
+    throw InputError(
+        Location{kMeshArrays, 0, 0,
+                 place.line > 0 ? "faces[" + std::to_string(place.line - 1) + "]" : ""},
+        what);
   }
   throw InputError(spec.where, PlaceText(spec.path, place) + ": " + what);
 }

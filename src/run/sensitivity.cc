@@ -14,18 +14,18 @@ void RequireStableEquilibrium(const RunResult& result) {
                            "): its positions are no equilibrium to differentiate");
   }
   if (result.stability.computed && !result.stability.stable) {
-    throw SensitivityError(
-        "the equilibrium is a saddle (most negative eigenvalue " +
-        std::to_string(result.stability.min_eigenvalue) +
-        " N/m): its positions do not follow the parameters smoothly");
+    throw SensitivityError("the equilibrium is a saddle (most negative eigenvalue " +
+                           std::to_string(result.stability.min_eigenvalue) +
+                           " N/m): its positions do not follow the parameters smoothly");
   }
 }
 
 void RequireSameDofs(const Model& model, const ParameterModels& key) {
   for (const Model* other : {&key.minus, &key.plus}) {
     if (other->num_nodes != model.num_nodes || other->fixed != model.fixed) {
-      throw SensitivityError(key.key + ": changing it changes the model's nodes or supports; "
-                                       "only parameters of the energy have sensitivities");
+      throw SensitivityError(key.key +
+                             ": changing it changes the model's nodes or supports; "
+                             "only parameters of the energy have sensitivities");
     }
   }
 }
@@ -37,8 +37,9 @@ std::vector<double> GradientDerivative(const DofMap& dofs, const ParameterModels
   std::vector<double> minus, plus;
   if (!EvaluateEnergy(key.minus, positions.data(), &energy, &minus) ||
       !EvaluateEnergy(key.plus, positions.data(), &energy, &plus)) {
-    throw SensitivityError(key.key + ": the energy is not defined at the equilibrium when the "
-                                     "parameter moves by " +
+    throw SensitivityError(key.key +
+                           ": the energy is not defined at the equilibrium when the "
+                           "parameter moves by " +
                            std::to_string(key.step));
   }
   std::vector<double> derivative(dofs.num_free());
@@ -53,8 +54,7 @@ std::vector<double> GradientDerivative(const DofMap& dofs, const ParameterModels
 
 double SensitivityStep(double value) { return value != 0.0 ? 1e-4 * std::abs(value) : 1e-6; }
 
-std::vector<std::vector<double>> PositionSensitivities(const Model& model,
-                                                       const RunResult& result,
+std::vector<std::vector<double>> PositionSensitivities(const Model& model, const RunResult& result,
                                                        const std::vector<ParameterModels>& keys) {
   RequireStableEquilibrium(result);
   for (const ParameterModels& key : keys) RequireSameDofs(model, key);
@@ -69,8 +69,9 @@ std::vector<std::vector<double>> PositionSensitivities(const Model& model,
     throw SensitivityError("the Hessian cannot be evaluated at the equilibrium");
   }
   if (!workspace.cholesky.Factorize(workspace.hessian.values(), nullptr)) {
-    throw SensitivityError("the Hessian at the equilibrium is not positive definite: not a "
-                           "stable minimum");
+    throw SensitivityError(
+        "the Hessian at the equilibrium is not positive definite: not a "
+        "stable minimum");
   }
   std::vector<std::vector<double>> sensitivities;
   for (const ParameterModels& key : keys) {

@@ -39,8 +39,7 @@ struct ParameterModels {
 
 // dx*/dp for each parameter, over all 3n coordinates (0 on the fixed ones), in the order given:
 // result[k][3 * node + c]. `result` must be the solve of `model` (its positions the equilibrium).
-std::vector<std::vector<double>> PositionSensitivities(const Model& model,
-                                                       const RunResult& result,
+std::vector<std::vector<double>> PositionSensitivities(const Model& model, const RunResult& result,
                                                        const std::vector<ParameterModels>& keys);
 
 }  // namespace drape
