@@ -158,6 +158,11 @@ py::dict CheckData(const PyScene& loaded) {
     material[py::str(value.key)] = py::make_tuple(value.value, value.unit);
   }
   data["material_si"] = material;
+  py::dict given;  // the kes, fast and bending_length keys as the scene gives them
+  for (const GivenMeasurement& value : loaded.scene.material.finite_volume.measured) {
+    given[py::str(value.key)] = py::make_tuple(value.value, value.unit);
+  }
+  data["material_as_given"] = given;
   data["model"] = MaterialModelName(loaded.scene.material.model);
   if (const std::optional<MeshAdvice> advice = AdviseMesh(loaded.scene, model);
       advice && advice->coarse) {

@@ -75,7 +75,9 @@ TEST(Sensitivity, IsTheCentralDifferenceOfSolves) {
       const double difference = (plus[i] - minus[i]) / (2 * h);
       scale = std::max(scale, std::abs(difference));
       error = std::max(error, std::abs(derivatives[k][i] - difference));
-      if (model.fixed[i]) EXPECT_EQ(derivatives[k][i], 0.0);
+      if (model.fixed[i]) {
+        EXPECT_EQ(derivatives[k][i], 0.0);
+      }
     }
     EXPECT_GT(scale, 0.0) << key;
     EXPECT_LE(error, 1e-5 * scale) << key;
@@ -90,7 +92,9 @@ TEST(Sensitivity, AHeavierSheetHangsLower) {
   const auto derivatives =
       PositionSensitivities(model, result, One(Parameter("material.density", 0.2)));
   for (int node = 0; node < model.num_nodes; ++node) {
-    if (!model.fixed[3 * node + 2]) EXPECT_LT(derivatives[0][3 * node + 2], 0.0) << node;
+    if (!model.fixed[3 * node + 2]) {
+      EXPECT_LT(derivatives[0][3 * node + 2], 0.0) << node;
+    }
   }
 }
 

@@ -146,7 +146,9 @@ class Scene:
         return self._handle.file
 
     def check(self):
-        """What `drape check` prints, as data: nodes, free dofs, terms by type, SI material."""
+        """What `drape check` prints, as data: nodes, free dofs, terms by type, the SI material
+        (`material_si`) and the measurements as given (`material_as_given`: key -> (value,
+        unit))."""
         return self._handle.check()
 
     def __repr__(self):

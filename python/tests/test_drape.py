@@ -248,7 +248,7 @@ def test_a_fit_from_a_dict_is_the_files():
     assert str(error.value).startswith("<dict>: parameters[0].bounds: ") and error.value.line == 0
 
 
-# ---- issue 54: bugs, Python's channels, arrays in, sensitivities, one command layer ----------
+# ---- paths, errors, Python's channels, arrays in, sensitivities, the fabric table -------------
 
 def test_a_fit_dicts_default_base_is_the_current_folder(monkeypatch):
     """base="." was joined to the dict's paths without being made absolute; and the warnings of a

@@ -613,7 +613,7 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   CLI::App* check = app.add_subcommand(
       "check",
       "load and build the scene, print what it contains (and the SI material values "
-      "derived from KES or Peirce inputs); write nothing");
+      "derived from KES, FAST or Peirce inputs, and those inputs as given); write nothing");
   AddSceneArguments(check, &arguments, "scene file (YAML)");
   check->add_flag("--json", arguments.json,
                   "print the scene as solved (defaults filled in, SI) as JSON, each value "
