@@ -67,11 +67,7 @@ struct PyScene {
 class PythonLines : public std::streambuf {
  public:
   explicit PythonLines(py::object progress) : progress_(std::move(progress)) {}
-  ~PythonLines() override {
-    py::gil_scoped_acquire gil;
-    progress_ = py::object();
-    error_.reset();
-  }
+  ~PythonLines() override = default;  // destroyed with the GIL held (PythonLog's owner holds it)
   PythonLines(const PythonLines&) = delete;
   PythonLines& operator=(const PythonLines&) = delete;
 
@@ -545,9 +541,9 @@ std::shared_ptr<const MeshSpec::Arrays> MeshArrays(const py::object& vertices_ob
 }
 
 // A scene loaded with `overrides` and, where given, the mesh arrays in place of its mesh.
-std::shared_ptr<PyScene> LoadedScene(std::function<Scene(const std::vector<std::string>&)> load,
-                                     std::vector<std::string> overrides,
-                                     const std::optional<py::tuple>& mesh) {
+std::shared_ptr<PyScene> LoadedScene(
+    const std::function<Scene(const std::vector<std::string>&)>& load,
+    std::vector<std::string> overrides, const std::optional<py::tuple>& mesh) {
   std::shared_ptr<const MeshSpec::Arrays> arrays;
   if (mesh) {
     if (mesh->size() != 2) {

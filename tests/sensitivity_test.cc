@@ -62,6 +62,7 @@ TEST(Sensitivity, IsTheCentralDifferenceOfSolves) {
   const std::vector<std::pair<std::string, double>> keys = {
       {"material.density", 0.2}, {"material.springs.structural", 1000.0}};
   std::vector<ParameterModels> parameters;
+  parameters.reserve(keys.size());
   for (const auto& [key, value] : keys) parameters.push_back(Parameter(key, value));
   const auto derivatives = PositionSensitivities(model, result, parameters);
   ASSERT_EQ(derivatives.size(), 2u);
