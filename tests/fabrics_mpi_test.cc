@@ -27,21 +27,7 @@ constexpr char kTable[] =
     "c,10,0.06,0.05,0.6,4,7,0.55\n";
 
 std::vector<std::vector<std::string>> Rows(const fs::path& csv) {
-  std::vector<std::vector<std::string>> rows;
-  std::ifstream in(csv);
-  std::string line;
-  int time = -1;
-  while (std::getline(in, line)) {
-    auto cells = SplitCsvLine(line);
-    if (rows.empty()) {
-      for (size_t k = 0; k < cells.size(); ++k) {
-        if (cells[k] == "time_s [s]") time = static_cast<int>(k);
-      }
-    }
-    if (time >= 0) cells.erase(cells.begin() + time);
-    rows.push_back(cells);
-  }
-  return rows;
+  return testing::CsvRowsWithout(csv, "time_s [s]");
 }
 
 TEST(FabricsMpi, RanksWriteTheRowsOfTheProcessAlone) {

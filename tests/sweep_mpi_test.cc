@@ -31,21 +31,7 @@ grid:
 )";
 
 std::vector<std::vector<std::string>> Rows(const fs::path& csv) {
-  std::vector<std::vector<std::string>> rows;
-  std::ifstream in(csv);
-  std::string line;
-  int time = -1;
-  while (std::getline(in, line)) {
-    auto cells = SplitCsvLine(line);
-    if (rows.empty()) {
-      for (size_t k = 0; k < cells.size(); ++k) {
-        if (cells[k] == "time_s") time = static_cast<int>(k);
-      }
-    }
-    if (time >= 0) cells.erase(cells.begin() + time);
-    rows.push_back(cells);
-  }
-  return rows;
+  return testing::CsvRowsWithout(csv, "time_s");
 }
 
 class SweepMpi : public ::testing::Test {

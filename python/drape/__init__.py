@@ -66,10 +66,10 @@ def _progress(progress):
     return progress
 
 
-def _warn(lines):
-    """drape's warnings as DrapeWarning, in the caller's caller's frame."""
+def _warn(lines, stacklevel=3):
+    """drape's warnings as DrapeWarning, attributed to the user's call (`stacklevel` frames up)."""
     for line in lines:
-        warnings.warn(line, DrapeWarning, stacklevel=3)
+        warnings.warn(line, DrapeWarning, stacklevel=stacklevel)
 
 
 def _override_value(value):
@@ -124,9 +124,22 @@ def _interrupted(message, result):
     return interrupt
 
 
-def _folder(out, prefix):
-    """`out` as a str, or a new temporary folder (removed by the caller after reading)."""
-    return os.fspath(out) if out is not None else tempfile.mkdtemp(prefix=prefix)
+def _run_in_folder(out, prefix, run, read, interrupted):
+    """A long command run into `out`, else into a temporary folder removed after reading: `run`
+    (given the folder) returns the module's outcome, `read` (given the folder and the outcome) the
+    result. Its warnings are emitted as DrapeWarning at the user's call; after Ctrl-C,
+    KeyboardInterrupt(`interrupted`) carries the result."""
+    folder = os.fspath(out) if out is not None else tempfile.mkdtemp(prefix=prefix)
+    try:
+        outcome = run(folder)
+        result = read(folder, outcome)
+    finally:
+        if out is None:
+            shutil.rmtree(folder, ignore_errors=True)
+    _warn(outcome["warnings"], stacklevel=4)
+    if outcome["interrupted"]:
+        raise _interrupted(interrupted, result)
+    return result
 
 
 class Scene:
@@ -432,19 +445,12 @@ def drops(scene, drops=None, set=None, out=None, threads=0, progress=_print_to_s
     (`directory` is the former name of `out`.)
     """
     scene = _loaded(scene, set)
-    out = _renamed(out, directory)
-    folder = _folder(out, "drape_drops_")
-    try:
-        outcome = _drape.drops(scene._handle, _drops_count(drops) or 0, folder, threads,
-                               _progress(progress))
-        result = DropsResult(folder, outcome["line"])
-    finally:
-        if out is None:
-            shutil.rmtree(folder, ignore_errors=True)
-    _warn(outcome["warnings"])
-    if outcome["interrupted"]:
-        raise _interrupted("drape.drops interrupted; the finished drops are `result`", result)
-    return result
+    count = _drops_count(drops) or 0
+    return _run_in_folder(
+        _renamed(out, directory), "drape_drops_",
+        lambda folder: _drape.drops(scene._handle, count, folder, threads, _progress(progress)),
+        lambda folder, outcome: DropsResult(folder, outcome["line"]),
+        "drape.drops interrupted; the finished drops are `result`")
 
 
 def _renamed(out, directory):
@@ -560,36 +566,32 @@ def fit(fit_file, set=None, method=None, out=None, threads=1, base=".",
     taken from its own folder); progress: a callable given a line per evaluation. The fit's
     warnings are DrapeWarnings. (`directory` is the former name of `out`.)
     """
-    out = _renamed(out, directory)
     progress = _progress(progress)
-    folder = _folder(out, "drape_fit_")
-    scratch = None
+    interrupted = "drape.fit interrupted; the best point is the exception's `result`"
+    if not isinstance(fit_file, dict):
+        path = _existing(fit_file, "fit file")
+        return _run_in_folder(
+            _renamed(out, directory), "drape_fit_",
+            lambda folder: _run_fit(path, set, method, folder, threads, progress),
+            lambda folder, outcome: FitResult(folder, outcome["converged"]), interrupted)
+    scratch = tempfile.mkdtemp(prefix="drape_fit_dict_")
+    path = os.path.join(scratch, "fit.yaml")
+    spec = _absolute_fit_paths(json.loads(json.dumps(fit_file)), os.path.abspath(os.fspath(base)))
+    with open(path, "w") as file:
+        json.dump(spec, file, indent=1)
+
+    def run(folder):  # a dict's fit: its warnings name the dict, not the temporary file
+        outcome = _run_fit(path, set, method, folder, threads, progress, label="<dict>")
+        outcome["warnings"] = [w.replace(path, "<dict>") for w in outcome["warnings"]]
+        return outcome
+
     try:
-        if isinstance(fit_file, dict):
-            scratch = tempfile.mkdtemp(prefix="drape_fit_dict_")
-            path = os.path.join(scratch, "fit.yaml")
-            base = os.path.abspath(os.fspath(base))
-            spec = _absolute_fit_paths(json.loads(json.dumps(fit_file)), base)
-            with open(path, "w") as file:
-                json.dump(spec, file, indent=1)
-            outcome = _run_fit(path, set, method, folder, threads, progress, label="<dict>")
-            result = FitResult(folder, outcome["converged"], "<dict>", path)
-            lines = [w.replace(path, "<dict>") for w in outcome["warnings"]]
-        else:
-            outcome = _run_fit(_existing(fit_file, "fit file"), set, method, folder, threads,
-                               progress)
-            result = FitResult(folder, outcome["converged"])
-            lines = outcome["warnings"]
+        return _run_in_folder(
+            _renamed(out, directory), "drape_fit_", run,
+            lambda folder, outcome: FitResult(folder, outcome["converged"], "<dict>", path),
+            interrupted)
     finally:
-        if out is None:
-            shutil.rmtree(folder, ignore_errors=True)
-        if scratch is not None:
-            shutil.rmtree(scratch, ignore_errors=True)
-    _warn(lines)
-    if outcome["interrupted"]:
-        raise _interrupted("drape.fit interrupted; the best point is the exception's `result`",
-                           result)
-    return result
+        shutil.rmtree(scratch, ignore_errors=True)
 
 
 def sweep(sweep_file, out=None, threads=0, plots=False, progress=_print_to_stderr,
@@ -600,19 +602,12 @@ def sweep(sweep_file, out=None, threads=0, plots=False, progress=_print_to_stder
     temporary folder, removed after reading; progress: a callable given a line per finished task.
     (`directory` is the former name of `out`.)
     """
-    out = _renamed(out, directory)
     path = _existing(sweep_file, "sweep file")
-    folder = _folder(out, "drape_sweep_")
-    try:
-        outcome = _drape.sweep(path, folder, threads, plots, _progress(progress))
-        table = _table(os.path.join(outcome["directory"], "sweep.csv"))
-    finally:
-        if out is None:
-            shutil.rmtree(folder, ignore_errors=True)
-    _warn(outcome["warnings"])
-    if outcome["interrupted"]:
-        raise _interrupted("drape.sweep interrupted; the finished rows are `result`", table)
-    return table
+    return _run_in_folder(
+        _renamed(out, directory), "drape_sweep_",
+        lambda folder: _drape.sweep(path, folder, threads, plots, _progress(progress)),
+        lambda folder, outcome: _table(os.path.join(outcome["directory"], "sweep.csv")),
+        "drape.sweep interrupted; the finished rows are `result`")
 
 
 class FabricsResult:
@@ -662,15 +657,10 @@ def fabrics(table, scene=None, set=None, drops=None, out=None, threads=0,
     """
     path = _existing(table, "fabric table")
     base = "" if scene is None else _existing(scene, "scene file")
-    folder = _folder(out, "drape_fabrics_")
-    try:
-        outcome = _drape.fabrics(path, base, _overrides(set), _drops_count(drops), folder,
-                                 threads, _progress(progress))
-        result = FabricsResult(folder, outcome["line"])
-    finally:
-        if out is None:
-            shutil.rmtree(folder, ignore_errors=True)
-    _warn(outcome["warnings"])
-    if outcome["interrupted"]:
-        raise _interrupted("drape.fabrics interrupted; the finished fabrics are `result`", result)
-    return result
+    count = _drops_count(drops)
+    return _run_in_folder(
+        out, "drape_fabrics_",
+        lambda folder: _drape.fabrics(path, base, _overrides(set), count, folder, threads,
+                                      _progress(progress)),
+        lambda folder, outcome: FabricsResult(folder, outcome["line"]),
+        "drape.fabrics interrupted; the finished fabrics are `result`")

@@ -351,12 +351,8 @@ int Check(const Arguments& arguments, std::ostream& out) {
 // `drape fit`: the fit file checked before any solve, a progress line per evaluation on `err`,
 // the outputs written (src/commands/commands.h). Exit 0 converged, 1 not converged.
 int Fit(const Arguments& arguments, std::ostream& out, std::ostream& err) {
-  FitCommand command;
-  command.file = arguments.file;
-  command.overrides = arguments.overrides;
-  command.method = arguments.method;
-  command.out = arguments.out;
-  command.threads = arguments.threads;
+  const FitCommand command{arguments.file, arguments.overrides, arguments.method, arguments.out,
+                           arguments.threads};
   EnableInterrupt();
   FitCommandResult outcome;
   try {
