@@ -8,11 +8,11 @@
 #include "src/analysis/drape_analysis.h"
 #include "src/model/equilibrium.h"
 #include "src/numerics/round_off_floor.h"
-#include "src/numerics/sparse_hessian.h"
 #include "src/output/json.h"
 #include "src/parallel/byte_codec.h"
 #include "src/parallel/shared_work.h"
 #include "src/run/run.h"
+#include "src/run/sensitivity.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/scene_size.h"
 #include "src/scene/solver_methods.h"
@@ -345,37 +345,27 @@ bool FitProblem::EquilibriumDirections(const FitEquilibrium& equilibrium,
                                        Eigen::MatrixXd* direct_gradient) const {
   const Model& model = *equilibrium.model;
   const int n = model.num_dofs(), p = num_parameters();
-  DofMap dofs(model);
-  FreeHessian hessian(model, dofs);
-  FreeHessian::Assembly assembly;
-  std::vector<double> gradient;
-  if (!hessian.Assemble(equilibrium.positions.data(), false, &assembly, &gradient)) return false;
-  SparseCholesky cholesky(hessian);
-  if (!cholesky.Factorize(hessian.values(), nullptr)) return false;
-  directions->setZero(n, p);
-  direct_gradient->setZero(n, p);
-  std::vector<double> rhs(dofs.num_free()), solution;
+  std::vector<ParameterModels> parameters(p);
   for (int j = 0; j < p; ++j) {
-    std::vector<double> gradients[2];
-    for (int side = 0; side < 2; ++side) {
-      std::vector<double> u = last_u_;
-      u[j] += side == 0 ? kParameterStep : -kParameterStep;
-      const Model shifted = BuildModel(SceneAt(equilibrium, ToParameters(u)));
-      double energy = 0.0;
-      if (!EvaluateEnergy(shifted, equilibrium.positions.data(), &energy, &gradients[side])) {
-        return false;
-      }
-    }
-    for (int k = 0; k < n; ++k) {
-      (*direct_gradient)(k, j) = (gradients[0][k] - gradients[1][k]) / (2.0 * kParameterStep);
-    }
-    for (int f = 0; f < dofs.num_free(); ++f) {
-      rhs[f] = -(*direct_gradient)(dofs.free_to_global()[f], j);
-    }
-    cholesky.Solve(rhs, &solution);
-    for (int f = 0; f < dofs.num_free(); ++f) {
-      (*directions)(dofs.free_to_global()[f], j) = solution[f];
-    }
+    std::vector<double> plus = last_u_, minus = last_u_;
+    plus[j] += kParameterStep;
+    minus[j] -= kParameterStep;
+    parameters[j].key = spec_.parameters[j].key;
+    parameters[j].step = kParameterStep;  // in u: the derivatives are d/du
+    parameters[j].plus = BuildModel(SceneAt(equilibrium, ToParameters(plus)));
+    parameters[j].minus = BuildModel(SceneAt(equilibrium, ToParameters(minus)));
+  }
+  EquilibriumDerivatives derivatives;
+  try {
+    derivatives = DifferentiateEquilibrium(model, equilibrium.positions, parameters);
+  } catch (const SensitivityError&) {
+    return false;  // no Jacobian here: the caller's method goes on without it
+  }
+  directions->resize(n, p);
+  direct_gradient->resize(n, p);
+  for (int j = 0; j < p; ++j) {
+    directions->col(j) = Eigen::Map<const Eigen::VectorXd>(derivatives.positions[j].data(), n);
+    direct_gradient->col(j) = Eigen::Map<const Eigen::VectorXd>(derivatives.forces[j].data(), n);
   }
   return true;
 }

@@ -30,22 +30,21 @@ void RequireSameDofs(const Model& model, const ParameterModels& key) {
   }
 }
 
-// ∂g/∂p over the free coordinates: the central difference of the gradient at `positions`.
-std::vector<double> GradientDerivative(const DofMap& dofs, const ParameterModels& key,
+// ∂g/∂p over all coordinates: the central difference of the gradient at `positions`.
+std::vector<double> GradientDerivative(const ParameterModels& key,
                                        const std::vector<double>& positions) {
   double energy = 0.0;
   std::vector<double> minus, plus;
   if (!EvaluateEnergy(key.minus, positions.data(), &energy, &minus) ||
       !EvaluateEnergy(key.plus, positions.data(), &energy, &plus)) {
     throw SensitivityError(key.key +
-                           ": the energy is not defined at the equilibrium when the "
-                           "parameter moves by " +
+                           ": the energy is not defined at the equilibrium when the parameter "
+                           "moves by " +
                            std::to_string(key.step));
   }
-  std::vector<double> derivative(dofs.num_free());
-  const std::vector<int>& global = dofs.free_to_global();
-  for (int i = 0; i < dofs.num_free(); ++i) {
-    derivative[i] = (plus[global[i]] - minus[global[i]]) / (2.0 * key.step);
+  std::vector<double> derivative(plus.size());
+  for (size_t k = 0; k < plus.size(); ++k) {
+    derivative[k] = (plus[k] - minus[k]) / (2.0 * key.step);
   }
   return derivative;
 }
@@ -54,39 +53,44 @@ std::vector<double> GradientDerivative(const DofMap& dofs, const ParameterModels
 
 double SensitivityStep(double value) { return value != 0.0 ? 1e-4 * std::abs(value) : 1e-6; }
 
-std::vector<std::vector<double>> PositionSensitivities(const Model& model, const RunResult& result,
-                                                       const std::vector<ParameterModels>& keys) {
-  RequireStableEquilibrium(result);
+EquilibriumDerivatives DifferentiateEquilibrium(const Model& model,
+                                                const std::vector<double>& positions,
+                                                const std::vector<ParameterModels>& keys) {
   for (const ParameterModels& key : keys) RequireSameDofs(model, key);
+  EquilibriumDerivatives derivatives;
+  for (const ParameterModels& key : keys) {
+    derivatives.forces.push_back(GradientDerivative(key, positions));
+  }
   if (model.num_free_dofs() == 0) {
-    return std::vector<std::vector<double>>(keys.size(), std::vector<double>(model.num_dofs()));
+    derivatives.positions.assign(keys.size(), std::vector<double>(model.num_dofs(), 0.0));
+    return derivatives;
   }
   HessianWorkspace workspace(model);
   FreeHessian::Assembly assembly;
   std::vector<double> gradient;
-  if (!workspace.hessian.Assemble(model.positions.data(), /*project=*/false, &assembly,
-                                  &gradient)) {
+  if (!workspace.hessian.Assemble(positions.data(), /*project=*/false, &assembly, &gradient)) {
     throw SensitivityError("the Hessian cannot be evaluated at the equilibrium");
   }
   if (!workspace.cholesky.Factorize(workspace.hessian.values(), nullptr)) {
     throw SensitivityError(
-        "the Hessian at the equilibrium is not positive definite: not a "
-        "stable minimum");
+        "the Hessian at the equilibrium is not positive definite: not a stable minimum");
   }
-  std::vector<std::vector<double>> sensitivities;
-  for (const ParameterModels& key : keys) {
-    std::vector<double> rhs = GradientDerivative(workspace.dofs, key, model.positions);
-    for (double& value : rhs) value = -value;
-    std::vector<double> free;
+  const std::vector<int>& global = workspace.dofs.free_to_global();
+  for (const std::vector<double>& force : derivatives.forces) {
+    std::vector<double> rhs(global.size()), free;
+    for (size_t f = 0; f < global.size(); ++f) rhs[f] = -force[global[f]];
     workspace.cholesky.Solve(rhs, &free);
     std::vector<double> all(model.num_dofs(), 0.0);
     workspace.dofs.Scatter(free.data(), all.data());
-    for (int k = 0; k < model.num_dofs(); ++k) {
-      if (model.fixed[k]) all[k] = 0.0;
-    }
-    sensitivities.push_back(std::move(all));
+    derivatives.positions.push_back(std::move(all));
   }
-  return sensitivities;
+  return derivatives;
+}
+
+std::vector<std::vector<double>> PositionSensitivities(const Model& model, const RunResult& result,
+                                                       const std::vector<ParameterModels>& keys) {
+  RequireStableEquilibrium(result);
+  return DifferentiateEquilibrium(model, model.positions, keys).positions;
 }
 
 }  // namespace drape

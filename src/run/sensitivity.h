@@ -1,5 +1,7 @@
 // The derivatives of an equilibrium's positions with respect to scene parameters, by the implicit
-// function theorem. At a stable equilibrium x*(p) the free forces vanish, g(x*(p), p) = 0, so
+// function theorem: the one implementation, for Python's drape.sensitivities and for the fit's
+// implicit Jacobian (implicit-lm, implicit-lbfgs). At a stable equilibrium x*(p) the free forces
+// vanish, g(x*(p), p) = 0, so
 //   H dx*/dp = −∂g/∂p,
 // H the free Hessian at x* (exact, as newton and the stability certificate assemble it). H is
 // factorised once (CHOLMOD); each parameter costs one solve and ∂g/∂p, the central difference of
@@ -37,8 +39,23 @@ struct ParameterModels {
   double step = 0.0;
 };
 
-// dx*/dp for each parameter, over all 3n coordinates (0 on the fixed ones), in the order given:
-// result[k][3 * node + c]. `result` must be the solve of `model` (its positions the equilibrium).
+// For each parameter k, over all 3n coordinates: positions[k] = dx*/dp (0 on the fixed ones) and
+// forces[k] = ∂g/∂p at the fixed positions (on a fixed coordinate, the direct dependence of its
+// reaction on p). Index [k][3 * node + c].
+struct EquilibriumDerivatives {
+  std::vector<std::vector<double>> positions;
+  std::vector<std::vector<double>> forces;
+};
+
+// The derivatives at `positions`, an equilibrium of `model`, without asking how it was reached
+// (the fit's inner solves, src/fit/fit_problem.cc). Throws SensitivityError where the Hessian
+// cannot be evaluated or is not positive definite there, or a parameter changes the nodes.
+EquilibriumDerivatives DifferentiateEquilibrium(const Model& model,
+                                                const std::vector<double>& positions,
+                                                const std::vector<ParameterModels>& keys);
+
+// dx*/dp for each parameter, after checking that `result`, the solve of `model` (its positions the
+// equilibrium), is a converged, stable minimum: DifferentiateEquilibrium(...).positions.
 std::vector<std::vector<double>> PositionSensitivities(const Model& model, const RunResult& result,
                                                        const std::vector<ParameterModels>& keys);
 
