@@ -117,6 +117,13 @@ TEST_F(FabricsTest, PredictsWhatASolveGivesAndRerunsOnlyWhatChanged) {
   const double delta = std::stod(Cell(rows, 2, "difference"));
   EXPECT_NEAR(delta, ReportedDrapeCoefficient(report) - 0.40, 1e-15);
   EXPECT_NE(log.str().find("fabrics: limp (2 of 2 done): DC "), std::string::npos) << log.str();
+  // 5 cm is coarse for both: the mesh rule's warning, once, naming them (both at the rule's cap of
+  // 0.5, so either is the furthest off).
+  EXPECT_NE(log.str().find("drape fabrics: warning: 2 of 2 fabrics on a mesh coarser than their "
+                           "fabric's mesh rule (fabrics stiff, limp; each row's predicted_dc_error "
+                           "includes the rule's error); the furthest off, fabric "),
+            std::string::npos)
+      << log.str();
 
   std::ostringstream again;
   const FabricsSummary second = RunFabrics(LoadFabrics(options), options, again);

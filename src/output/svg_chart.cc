@@ -42,8 +42,9 @@ void SvgPicture::Circle(double x, double y, double r, const std::string& style) 
 
 void SvgPicture::TitledCircle(double x, double y, double r, const std::string& style,
                               const std::string& tooltip) {
-  out_ << "<circle cx=\"" << Px(x) << "\" cy=\"" << Px(y) << "\" r=\"" << Px(r) << "\" style=\""
-       << style << "\"><title>" << HtmlText(tooltip) << "</title></circle>";
+  out_ << "<g><title>" << HtmlText(tooltip) << "</title>";
+  Circle(x, y, r, style);
+  out_ << "</g>";
 }
 
 void SvgPicture::Rect(double x, double y, double w, double h, const std::string& style) {

@@ -27,7 +27,7 @@ class SvgPicture {
                 const std::string& style);
   void Text(double x, double y, const std::string& text, const std::string& anchor = "middle",
             int size = 12);
-  // Text with a tooltip (an SVG <title> child): what a pointer over it shows.
+  // A circle with a tooltip (a group with a <title>): what a pointer over it shows.
   void TitledCircle(double x, double y, double r, const std::string& style,
                     const std::string& tooltip);
   std::string Close();

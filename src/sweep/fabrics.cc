@@ -583,7 +583,18 @@ FabricsSummary RunFabrics(const FabricsSpec& spec, const FabricsOptions& options
   summary.directory = spec.directory;
   summary.fabrics = static_cast<int>(spec.fabrics.size());
   summary.tasks = spec.tasks();
-  if (Processes().IsCoordinator()) CheckOutputWritable(spec.directory);
+  if (Processes().IsCoordinator()) {
+    CheckOutputWritable(spec.directory);
+    std::vector<std::string> names;
+    std::vector<std::optional<MeshAdvice>> advice;
+    for (const FabricCase& fabric : spec.fabrics) {
+      names.push_back(fabric.row.name);
+      advice.push_back(AdviseMeshOfScene(fabric.scene));
+    }
+    if (const auto line = CoarseMeshesLine(names, advice, "fabric", "predicted_dc_error")) {
+      log << "drape fabrics: warning: " << *line << std::endl;
+    }
+  }
   fs::create_directories(spec.directory);
   const FabricsContext context{spec, options, FabricTaskIdentities(spec)};
   FabricsCollector collector(spec, log);

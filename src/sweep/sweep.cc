@@ -360,49 +360,55 @@ void CountRows(const SweepTable& table, SweepSummary* summary) {
   }
 }
 
-// "3, 7, 12": the first eight tasks of a list, then "…".
-std::string TaskNumbers(const std::vector<int>& tasks) {
-  constexpr size_t kNamed = 8;
-  std::string text;
-  for (size_t k = 0; k < std::min(tasks.size(), kNamed); ++k) {
-    text += (k ? ", " : "") + std::to_string(tasks[k]);
-  }
-  return tasks.size() > kNamed ? text + ", …" : text;
-}
-
 // The mesh rule's warning (src/analysis/mesh_rule.h), once, for the sweep's tasks (with --only,
 // that task) whose mesh is coarser than their fabric needs: how many, which, and `drape solve`'s
 // warning for the one expected to be furthest off. From each task's scene alone (no model built):
 // a sweep over the bending or the density moves the spacing its fabrics need. A scene that cannot
 // be loaded is its task's failed row, not a warning.
 void WarnOfCoarseMeshes(const SweepSpec& spec, const SweepOptions& options, std::ostream& log) {
-  std::vector<int> tasks, coarse;
+  std::vector<std::string> labels;
+  std::vector<std::optional<MeshAdvice>> advice;
   for (int task = 0; task < static_cast<int>(spec.tasks.size()); ++task) {
-    if (!options.only || task == *options.only) tasks.push_back(task);
-  }
-  std::optional<MeshAdvice> worst;
-  int worst_task = -1;
-  for (const int task : tasks) {
-    std::optional<MeshAdvice> advice;
+    if (options.only && task != *options.only) continue;
+    labels.push_back(std::to_string(task));
     try {
-      advice = AdviseMeshOfScene(LoadScene(spec.scene_file, TaskOverrides(spec, task)));
+      advice.push_back(AdviseMeshOfScene(LoadScene(spec.scene_file, TaskOverrides(spec, task))));
     } catch (const InputError&) {
-      continue;
+      advice.push_back(std::nullopt);
     }
-    if (!advice || !advice->coarse) continue;
-    coarse.push_back(task);
-    if (!worst || advice->expected_error > worst->expected_error) worst = advice, worst_task = task;
   }
-  if (coarse.empty()) return;
-  log << "drape sweep: warning: " << coarse.size() << " of " << tasks.size()
-      << (tasks.size() == 1 ? " task" : " tasks")
-      << " on a mesh coarser than their fabric's mesh rule (task"
-      << (coarse.size() == 1 ? " " : "s ") << TaskNumbers(coarse)
-      << "; each row's drape_coefficient_error includes the rule's error); the furthest off, task "
-      << worst_task << ": " << CoarseMeshWarning(*worst) << "\n";
+  if (const auto line = CoarseMeshesLine(labels, advice, "task", "drape_coefficient_error")) {
+    log << "drape sweep: warning: " << *line << "\n";
+  }
 }
 
 }  // namespace
+
+std::optional<std::string> CoarseMeshesLine(const std::vector<std::string>& labels,
+                                            const std::vector<std::optional<MeshAdvice>>& advice,
+                                            const std::string& what,
+                                            const std::string& error_column) {
+  constexpr size_t kNamed = 8;  // the first eight named, then "…"
+  std::vector<size_t> coarse;
+  size_t worst = 0;
+  for (size_t k = 0; k < advice.size(); ++k) {
+    if (!advice[k] || !advice[k]->coarse) continue;
+    if (coarse.empty() || advice[k]->expected_error > advice[worst]->expected_error) worst = k;
+    coarse.push_back(k);
+  }
+  if (coarse.empty()) return std::nullopt;
+  std::string names;
+  for (size_t k = 0; k < std::min(coarse.size(), kNamed); ++k) {
+    names += (k ? ", " : "") + labels[coarse[k]];
+  }
+  if (coarse.size() > kNamed) names += ", …";
+  const auto plural = [&](size_t count) { return what + (count == 1 ? "" : "s"); };
+  return std::to_string(coarse.size()) + " of " + std::to_string(advice.size()) + " " +
+         plural(advice.size()) + " on a mesh coarser than their fabric's mesh rule (" +
+         plural(coarse.size()) + " " + names + "; each row's " + error_column +
+         " includes the rule's error); the furthest off, " + what + " " + labels[worst] + ": " +
+         CoarseMeshWarning(*advice[worst]);
+}
 
 std::vector<std::string> SweepColumns(const SweepSpec& spec) {
   std::vector<std::string> columns = {"task"};

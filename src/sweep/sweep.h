@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "src/analysis/mesh_rule.h"
 #include "src/sweep/sweep_file.h"
 
 namespace drape {
@@ -55,6 +56,16 @@ std::vector<std::string> TaskIdentities(const SweepSpec& spec);
 // the output folder cannot be written (before any solve). Tasks never throw: a failed task is a
 // row saying so.
 SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::ostream& log);
+
+// The mesh rule's warning over several scenes (a sweep's tasks, a table's fabrics), labelled
+// `labels` (their numbers or names) and called `what` ("task", "fabric"): "2 of 7 fabrics on a mesh
+// coarser than their fabric's mesh rule (fabrics M1, M2; each row's ERROR_COLUMN includes the
+// rule's error); the furthest off, fabric M2: <drape solve's warning>", or nothing when none is
+// coarse. A scene without advice (none, or it could not be loaded) counts as not coarse.
+std::optional<std::string> CoarseMeshesLine(const std::vector<std::string>& labels,
+                                            const std::vector<std::optional<MeshAdvice>>& advice,
+                                            const std::string& what,
+                                            const std::string& error_column);
 
 // One CSV line of `cells` (CsvField: a field with a comma or quote quoted).
 std::string CsvLine(const std::vector<std::string>& cells);
