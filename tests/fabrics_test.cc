@@ -131,6 +131,18 @@ TEST_F(FabricsTest, PredictsWhatASolveGivesAndRerunsOnlyWhatChanged) {
   EXPECT_EQ(second.skipped, 2);
   EXPECT_EQ(Rows("out"), rows);
 
+  // A record another drape wrote is kept, and its row says which drape solved it.
+  const fs::path record = scratch_.path() / "out" / spec.fabrics[0].folder / "record.csv";
+  std::string text = ReadWholeFile(record);
+  text.replace(text.rfind(',') + 1, std::string::npos, "0.0 (an older drape)\n");
+  std::ofstream(record) << text;
+  std::ostringstream kept;
+  EXPECT_EQ(RunFabrics(LoadFabrics(options), options, kept).skipped, 2);
+  EXPECT_EQ(Cell(Rows("out"), 1, "drape_version"), "0.0 (an older drape)");
+  EXPECT_NE(kept.str().find("1 finished task kept from drape 0.0 (an older drape)"),
+            std::string::npos)
+      << kept.str();
+
   std::string changed = kTable;
   changed.replace(changed.find("8,0.02"), 6, "8,0.03");
   const FabricsOptions edited = Options(changed);

@@ -132,12 +132,13 @@ std::string RecordText(const FabricTaskRecord& r) {
   return std::to_string(r.fabric) + "," + std::to_string(r.drop) + "," + JsonBool(r.solved) + "," +
          JsonBool(r.counted) + "," + CsvNumber(r.drape_coefficient) + "," +
          CsvNumber(r.drape_coefficient_error) + "," + std::to_string(r.folds) + "," +
-         std::to_string(r.iterations) + "," + CsvNumber(r.time_s) + "," + CsvField(r.state);
+         std::to_string(r.iterations) + "," + CsvNumber(r.time_s) + "," + CsvField(r.state) + "," +
+         CsvField(r.drape_version);
 }
 
 std::optional<FabricTaskRecord> ParseRecord(const std::string& line) {
   const std::vector<std::string> cells = SplitCsvLine(line);
-  if (cells.size() != 10) return std::nullopt;
+  if (cells.size() != 11) return std::nullopt;  // a record of an older layout: solved again
   FabricTaskRecord r;
   try {
     r.fabric = std::stoi(cells[0]);
@@ -153,6 +154,7 @@ std::optional<FabricTaskRecord> ParseRecord(const std::string& line) {
     return std::nullopt;
   }
   r.state = cells[9];
+  r.drape_version = cells[10];
   return r;
 }
 
@@ -188,6 +190,7 @@ FabricTaskRecord SolveFabricTask(const FabricsContext& context, int task) {
   FabricTaskRecord record;
   record.fabric = FabricOf(spec, task);
   record.drop = drop;
+  record.drape_version = DrapeVersion();
   const RunResult& result = report.result;
   if (InterruptRequested()) {
     record.state = "interrupted";
@@ -220,6 +223,7 @@ FabricTaskRecord RunFabricTask(const FabricsContext& context, int task) {
   FabricTaskRecord failed;
   failed.fabric = FabricOf(context.spec, task);
   failed.drop = DropOf(context.spec, task);
+  failed.drape_version = DrapeVersion();
   try {
     return SolveFabricTask(context, task);
   } catch (const InputError& error) {
@@ -323,6 +327,20 @@ double TotalTime(const std::vector<FabricTaskRecord>& records) {
   return total;
 }
 
+// The drape that solved a fabric's records ("0.1 (git …)"; two or more joined with " + " where a
+// re-run kept records of another drape).
+std::string RecordVersions(const std::vector<FabricTaskRecord>& records) {
+  std::vector<std::string> versions;
+  for (const FabricTaskRecord& record : records) {
+    if (std::find(versions.begin(), versions.end(), record.drape_version) == versions.end()) {
+      versions.push_back(record.drape_version);
+    }
+  }
+  std::string text;
+  for (const std::string& version : versions) text += (text.empty() ? "" : " + ") + version;
+  return text.empty() ? DrapeVersion() : text;
+}
+
 std::string OptionalNumber(const std::optional<double>& value) {
   return value ? CsvNumber(*value) : "";
 }
@@ -360,7 +378,7 @@ void WriteFabricsCsv(const FabricsSpec& spec, const std::vector<FabricPrediction
          std::to_string(p.counted), OptionalNumber(p.standard_deviation),
          OptionalNumber(fabric.row.measured_dc), OptionalNumber(fabric.row.measured_dc_sd),
          OptionalNumber(delta), delta ? JsonBool(Within(fabric, p)) : "",
-         CsvNumber(TotalTime(records[f])), p.state, fabric.folder, DrapeVersion()});
+         CsvNumber(TotalTime(records[f])), p.state, fabric.folder, RecordVersions(records[f])});
     out << CsvLine(cells) << '\n';
   }
 }
@@ -619,6 +637,17 @@ FabricsSummary RunFabrics(const FabricsSpec& spec, const FabricsOptions& options
     }
   }
   summary.statistics = ComputeFabricStatistics(comparisons);
+  std::map<std::string, int> other_versions;  // records kept from another drape, by its version
+  for (const auto& records : collector.records()) {
+    for (const FabricTaskRecord& record : records) {
+      if (record.drape_version != DrapeVersion()) ++other_versions[record.drape_version];
+    }
+  }
+  for (const auto& [version, count] : other_versions) {
+    log << "fabrics: " << count << " finished task" << (count == 1 ? "" : "s")
+        << " kept from drape " << version << " (this is " << DrapeVersion()
+        << "; fabrics.csv's drape_version column says which drape solved each row)" << std::endl;
+  }
   const Provenance provenance{options.command_line, options.overrides};
   const fs::path directory(spec.directory);
   WriteAtomically(directory / "fabrics.csv", [&](std::ostream& out) {

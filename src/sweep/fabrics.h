@@ -76,7 +76,8 @@ struct FabricTaskRecord {
   int folds = 0;
   int iterations = 0;
   double time_s = 0.0;
-  std::string state;  // as a single solve says it, or why it failed
+  std::string state;          // as a single solve says it, or why it failed
+  std::string drape_version;  // the drape that solved it (a re-run may keep an older one's)
 };
 
 // The prediction for one fabric: its single solve, or its drops' mean.
