@@ -424,27 +424,41 @@ py::dict Fabrics(const std::string& table, const std::string& scene,
   return outcome;
 }
 
-// The value a scene key has in the loaded scene, as scene.yaml would write it (SceneJson's
-// {"value": …}); an InputError naming the key when it is not a number there.
-double SceneValue(const Scene& scene, const std::string& key) {
-  YAML::Node node = YAML::Load(SceneJson(scene));
+// The value a scene key has in `scene_json`, the loaded scene as scene.yaml would write it
+// (SceneJson's {"value": …}); an InputError naming the key when it is not a number there.
+double SceneValue(const YAML::Node& scene_json, const std::string& key) {
+  // Read through const nodes and reset(), never assignment: yaml-cpp's operator= on a node writes
+  // into the tree it refers to, and non-const operator[] inserts keys. A missing key gives an
+  // invalid node, which reset() refuses: the walk stops before it.
+  YAML::Node node;
+  node.reset(scene_json);
   std::string rest = key;
-  while (!rest.empty()) {
+  bool missing = false;
+  while (!rest.empty() && !missing) {
     const size_t dot = rest.find('.');
     const std::string step = rest.substr(0, dot);
     rest = dot == std::string::npos ? "" : rest.substr(dot + 1);
     const size_t bracket = step.find('[');
-    node = node[step.substr(0, bracket)];
-    if (node && bracket != std::string::npos) {
-      node = node[std::stoi(step.substr(bracket + 1))];
+    const YAML::Node& parent = node;
+    const YAML::Node child =
+        parent.IsMap() ? parent[step.substr(0, bracket)] : YAML::Node(YAML::NodeType::Undefined);
+    missing = !child;
+    if (missing) break;
+    node.reset(child);
+    if (bracket != std::string::npos) {
+      const YAML::Node& list = node;
+      const size_t index = std::stoul(step.substr(bracket + 1));
+      missing = !list.IsSequence() || index >= list.size();
+      if (!missing) node.reset(list[index]);
     }
-    if (!node) break;
   }
+  if (missing) node.reset(YAML::Node(YAML::NodeType::Undefined));
+  const YAML::Node& found = node;
   // A key given as one number for both directions (`structural: 1000`) is written per direction
   // ({warp: …, weft: …}): the same number in each.
   std::optional<double> same;
-  bool one_number = node && node.IsMap() && !node["value"] && node.size() > 0;
-  for (const auto& entry : one_number ? node : YAML::Node()) {
+  bool one_number = found && found.IsMap() && !found["value"] && found.size() > 0;
+  for (const auto& entry : one_number ? found : YAML::Node()) {
     const YAML::Node value = entry.second["value"];
     if (!value || !value.IsScalar() || (same && *same != value.as<double>())) {
       one_number = false;
@@ -453,12 +467,12 @@ double SceneValue(const Scene& scene, const std::string& key) {
     same = value.as<double>();
   }
   if (one_number && same) return *same;
-  if (!node || !node.IsMap() || !node["value"] || !node["value"].IsScalar()) {
+  if (!found || !found.IsMap() || !found["value"] || !found["value"].IsScalar()) {
     throw InputError(Location{"keys", 0, 0, key},
                      "not a number of the scene as solved (drape check --json lists them; a "
                      "measurement such as kes.B_warp is its SI key, D_warp)");
   }
-  return node["value"].as<double>();
+  return found["value"].as<double>();
 }
 
 // dx*/dp (nodes, 3, keys) at the scene's equilibrium (src/run/sensitivity.h): one solve, one
@@ -466,9 +480,10 @@ double SceneValue(const Scene& scene, const std::string& key) {
 py::array_t<double> Sensitivities(const PyScene& loaded, const std::vector<std::string>& keys,
                                   const std::optional<std::string>& solver,
                                   const py::object& progress) {
+  const YAML::Node scene_json = YAML::Load(SceneJson(loaded.scene));  // once, for every key
   std::vector<ParameterModels> parameters;
   for (const std::string& key : keys) {
-    const double value = SceneValue(loaded.scene, key);
+    const double value = SceneValue(scene_json, key);
     ParameterModels parameter;
     parameter.key = key;
     parameter.step = SensitivityStep(value);
