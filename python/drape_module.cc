@@ -72,6 +72,14 @@ class PythonLines : public std::streambuf {
   PythonLines& operator=(const PythonLines&) = delete;
 
   std::vector<std::string> warnings() const { return warnings_; }
+  // Whether the callable's exception is a KeyboardInterrupt (Ctrl-C while it ran, Python's
+  // handler raising in it): then it is taken, for the caller to report as an interrupted run with
+  // its result. With the GIL held.
+  bool TakeKeyboardInterrupt() {
+    if (!error_ || !error_->matches(PyExc_KeyboardInterrupt)) return false;
+    error_.reset();
+    return true;
+  }
   // Raises the callable's exception, if it raised one (with the GIL held).
   void RaiseIfFailed() {
     if (error_) {
@@ -227,6 +235,9 @@ std::shared_ptr<PySolved> Solve(const PyScene& loaded, const std::optional<std::
                                     on_iteration, /*automatic_levels=*/!start.has_value());
     ClearInterrupt();
   }
+  // Ctrl-C that Python's handler raised inside the progress callable stopped the solve as Ctrl-C
+  // between iterations does: an interrupted result, not a bare KeyboardInterrupt.
+  if (log.lines.TakeKeyboardInterrupt()) interrupted = true;
   log.lines.RaiseIfFailed();
   solved->interrupted = interrupted;
   return solved;

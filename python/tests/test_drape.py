@@ -179,6 +179,23 @@ def test_ctrl_c_stops_a_solve_at_its_last_iterate():
     assert result.positions.shape == (2821, 3) and np.isfinite(result.positions).all()
 
 
+def test_ctrl_c_in_the_progress_callable_stops_a_solve_with_its_result():
+    """Python's SIGINT handler can raise in the progress callable (which runs with the GIL, a line
+    a second): that is the same Ctrl-C, and the solve's last iterate comes with it."""
+    scene = drape.load(config("fv/drape_tester_cotton_30.yaml"),
+                       set={"mesh.spacing": 0.005, "material.finite_volume.kes.2HB_warp": 0.1,
+                            "material.finite_volume.kes.2HB_weft": 0.1})
+
+    def ctrl_c(line):
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt) as interrupt:
+        drape.solve(scene, progress=ctrl_c)
+    result = interrupt.value.result
+    assert result.interrupted and not result.converged
+    assert np.isfinite(result.positions).all()
+
+
 def test_a_fit_gives_its_tables(tmp_path):
     fitted = drape.fit(config("fit/fit_drape_coefficient.yaml"))
     assert fitted.converged
