@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "tests/fit_test_support.h"
 
 namespace drape::testing {
@@ -79,6 +81,23 @@ TEST(FitProblemTest, WarmStartsFromTheNearestEquilibrium) {
   // The residual layout: 3 per free node, (model − measured) / 1 mm.
   EXPECT_EQ(problem.num_residuals(), 3 * (81 - 4));
   EXPECT_NEAR(cold.objective, 0.0, 1e-12);  // the truth is structural: 20 (the scene's value)
+}
+
+TEST(FitProblemTest, EvaluatesWithoutReadingItsSceneFileAgain) {
+  // The scene is read once by LoadFitFile: the fit evaluates with the file gone.
+  const std::string folder = FitTempDir("read_once");
+  std::filesystem::copy_file(SourcePath("configs/fit/sheet_springs.yaml"), folder + "/sheet.yaml",
+                             std::filesystem::copy_options::overwrite_existing);
+  WriteTextFile(folder + "/fit.yaml",
+                "scene: sheet.yaml\nparameters:\n  - {key: material.springs.structural, initial: "
+                "30, bounds: [1, 1000], log: true}\nmeasurements:\n  - positions: {file: "
+                "nodes.csv}\n");
+  const TrueSolve solved = SolveTruth("configs/fit/sheet_springs.yaml", {});
+  WriteNodePositions(solved.model, 0.0, 0, folder + "/nodes.csv");
+  FitProblem problem(LoadFitFile(folder + "/fit.yaml"));
+  std::filesystem::remove(folder + "/sheet.yaml");
+  EXPECT_NEAR(problem.Evaluate(problem.ToUnknowns({20.0})).objective, 0.0, 1e-12);
+  EXPECT_GT(problem.Evaluate(problem.ToUnknowns({30.0})).objective, 1e-6);
 }
 
 TEST(FitProblemTest, MapsLogAndLinearParameters) {

@@ -3,6 +3,7 @@
 #include "src/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <filesystem>
@@ -584,6 +585,59 @@ TEST_F(SceneLoaderTest, SetErrorsAreLocatedInTheOverride) {
   EXPECT_TRUE(Contains(Error(kMinimal, {"material.densty=1"}),
                        "--set:1:10: material.densty: unknown key 'densty'; did you mean "
                        "'density'?"));
+}
+
+// ---------------------------------------------------------------------- a scene read once
+
+TEST_F(SceneLoaderTest, ADocumentReadOnceTakesValuesAndStaysAsItWasRead) {
+  const std::string text = std::string(kMinimal) + "fixed:\n  - nodes: {edge: top}\n";
+  const SceneDocument document = SceneDocument::Read(Write(text));
+  fs::remove(ScenePath());           // nothing below reads the file
+  const double density = 0.1 + 0.2;  // not a short decimal: set exactly, not through text
+  const Scene changed =
+      document.Load({"solver.tolerance=1e-6"}, {{"material.density", YAML::Node(density)},
+                                                {"fixed[0].dofs", YAML::Load("[z]")},
+                                                {"mesh.nodes[1]", YAML::Node(5)},
+                                                {"loads.gravity", YAML::Load("[0, 0, -1]")}});
+  EXPECT_EQ(changed.material.mass_value, density);
+  EXPECT_DOUBLE_EQ(changed.solver.tolerance, 1e-6);
+  EXPECT_EQ(changed.fixed[0].dofs, (std::array<bool, 3>{false, false, true}));
+  EXPECT_EQ(changed.mesh.nodes[1], 5);
+  EXPECT_EQ(*changed.loads.gravity, Eigen::Vector3d(0, 0, -1));
+  // The document is as it was read: a load without values gives the file's scene.
+  const Scene plain = document.Load();
+  EXPECT_EQ(plain.material.mass_value, 0.2);
+  EXPECT_EQ(plain.mesh.nodes[1], 3);
+  EXPECT_EQ(plain.fixed[0].dofs, (std::array<bool, 3>{true, true, true}));
+  EXPECT_FALSE(plain.loads.gravity.has_value());
+  EXPECT_EQ(plain.solver.tolerance, Load(kMinimal).solver.tolerance);
+  EXPECT_EQ(plain.material.where.line, 4);  // still located in the file
+}
+
+TEST_F(SceneLoaderTest, ADocumentsErrorsAreLocatedAsTheLoadersAre) {
+  // A value is located as the override after the text ones, at its key.
+  const SceneDocument document = SceneDocument::Read(Write(kMinimal));
+  try {
+    document.Load({"solver.tolerance=1e-6"}, {{"material.density", YAML::Node(-1.0)}});
+    ADD_FAILURE() << "a negative density loaded";
+  } catch (const InputError& error) {
+    EXPECT_TRUE(Contains(error.what(), "--set:2:10: material.density: must be positive"))
+        << error.what();
+  }
+  // A bad key of the file in a map that a value changes is still located in the file.
+  std::string bad = kMinimal;
+  bad.replace(bad.find("density: 0.2"), 12, "density: -0.2");
+  const SceneDocument bad_document = SceneDocument::Read(Write(bad));
+  for (const std::vector<SceneValue>& values :
+       {std::vector<SceneValue>{}, {{"material.springs.shear", YAML::Node(5.0)}}}) {
+    try {
+      bad_document.Load({}, values);
+      ADD_FAILURE() << "a negative density loaded";
+    } catch (const InputError& error) {
+      EXPECT_TRUE(Contains(error.what(), "scene.yaml:5:12: material.density: must be positive"))
+          << error.what();
+    }
+  }
 }
 
 // ------------------------------------------------------------------------------ bad input

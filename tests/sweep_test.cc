@@ -114,6 +114,19 @@ TEST(Sweep, RowsAreTheScenesSolvedOneByOneWithSet) {
   EXPECT_EQ(csv.find("inf"), std::string::npos);
 }
 
+TEST(Sweep, TasksAreLoadedFromTheBaseSceneReadOnce) {
+  // LoadSweepFile reads the base scene once: the tasks solve with the file gone.
+  const std::string folder = SweepTempDir("read_once");
+  const SweepSpec spec = LoadSweepFile(WriteSweep(folder, kSmall));
+  fs::remove(folder + "/base.yaml");
+  EXPECT_EQ(SweepInto(spec, folder + "/out", 3).solved, 1);
+  double weight = 0;
+  for (const auto& given : TaskScene(spec, 3).material.finite_volume.measured) {
+    if (given.key == "kes.W") weight = given.value;
+  }
+  EXPECT_EQ(weight, 16.0);  // task 3: the second value of each key
+}
+
 TEST(Sweep, ARestartSolvesOnlyTheUnfinishedTasks) {
   const std::string folder = SweepTempDir("restart");
   const SweepSpec spec = LoadSweepFile(WriteSweep(folder, kSmall));

@@ -324,20 +324,26 @@ std::vector<FitMeasurement> ReadMeasurements(const YamlValue& value, const std::
   return measurements;
 }
 
+// Reads the specimen's scene file, once for the whole fit.
+void ReadSpecimenScene(FitSpecimen* specimen) {
+  std::error_code missing;
+  if (!std::filesystem::is_regular_file(specimen->scene_file, missing)) {
+    throw InputError(specimen->where, "cannot read the scene file " + specimen->scene_file + ": " +
+                                          (std::filesystem::exists(specimen->scene_file, missing)
+                                               ? "it is not a file"
+                                               : "no such file"));
+  }
+  specimen->scene =
+      std::make_shared<const SceneDocument>(SceneDocument::Read(specimen->scene_file));
+}
+
 // The specimen's scene with every parameter at its initial value. A bad key named by a fitted
 // parameter is located at that parameter (a bad `--set` of the command stays as it is).
 Scene LoadSpecimenScene(const FitSpec& spec, const FitSpecimen& specimen) {
   std::vector<double> initial;
   for (const auto& parameter : spec.parameters) initial.push_back(parameter.initial);
-  std::error_code missing;
-  if (!std::filesystem::is_regular_file(specimen.scene_file, missing)) {
-    throw InputError(specimen.where,
-                     "cannot read the scene file " + specimen.scene_file + ": " +
-                         (std::filesystem::exists(specimen.scene_file, missing) ? "it is not a file"
-                                                                                : "no such file"));
-  }
   try {
-    return LoadScene(specimen.scene_file, SceneOverrides(spec, initial));
+    return SpecimenSceneAt(spec, specimen, initial);
   } catch (const InputError& error) {
     if (error.where().file != "--set") throw;
     // Locate a bad key at the parameter that names it (the fit's --set overrides come first, then
@@ -503,12 +509,14 @@ ReactionData ReadReactionFile(const std::string& path, const Location& where) {
   return data;
 }
 
-std::vector<std::string> SceneOverrides(const FitSpec& spec, const std::vector<double>& theta) {
-  std::vector<std::string> overrides = spec.scene_overrides;
+Scene SpecimenSceneAt(const FitSpec& spec, const FitSpecimen& specimen,
+                      const std::vector<double>& theta) {
+  assert(specimen.scene && "LoadFitFile reads every specimen's scene");
+  std::vector<SceneValue> values;
   for (size_t j = 0; j < theta.size(); ++j) {
-    overrides.push_back(spec.parameters[j].key + "=" + FormatNumber(theta[j]));
+    values.push_back({spec.parameters[j].key, YAML::Node(theta[j])});
   }
-  return overrides;
+  return specimen.scene->Load(spec.scene_overrides, values);
 }
 
 FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& scene_overrides) {
@@ -520,6 +528,7 @@ FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& sce
   const YAML::Node document = ReadYamlFile(path, "fit file");
   YamlOrigins origins(path);
   ReadTop(YamlRoot(document, origins), &spec);
+  for (auto& specimen : spec.specimens) ReadSpecimenScene(&specimen);
   for (const auto& specimen : spec.specimens) {
     for (std::string& warning : CheckSpecimen(spec, specimen)) {
       spec.warnings.push_back(std::move(warning));

@@ -6,11 +6,13 @@
 #define DRAPE_SRC_FIT_FIT_FILE_H_
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "src/model/model.h"
 #include "src/scene/scene.h"
+#include "src/scene/scene_loader.h"
 
 namespace drape {
 
@@ -63,6 +65,8 @@ struct FitMeasurement {
 // is the fit file's `scene`; `- scene: {file: other.yaml, measurements: [...]}` adds more.
 struct FitSpecimen {
   std::string scene_file;  // resolved against the fit file's folder
+  // The scene file, read and parsed once by LoadFitFile: every evaluation loads its scene from it.
+  std::shared_ptr<const SceneDocument> scene;
   std::vector<FitMeasurement> measurements;
   Location where;
 };
@@ -98,9 +102,10 @@ std::string FitMeshWarning(const Scene& scene, const Model& model,
 // Throws InputError on any bad input.
 FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& scene_overrides = {});
 
-// The overrides a specimen's scene is loaded with: spec.scene_overrides, then each parameter at
-// `theta`.
-std::vector<std::string> SceneOverrides(const FitSpec& spec, const std::vector<double>& theta);
+// The specimen's scene with every parameter at `theta`: loaded from the document read once, with
+// spec.scene_overrides and then each parameter set as a number (SceneValue), not as text.
+Scene SpecimenSceneAt(const FitSpec& spec, const FitSpecimen& specimen,
+                      const std::vector<double>& theta);
 
 // Reads a positions file (`id,x,y,z`, or `x,y,z` / .xyz / .ply as a point cloud); `where` locates
 // the key that names it. Throws InputError located in the data file for a bad row.

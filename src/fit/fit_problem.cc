@@ -134,8 +134,7 @@ const FitMeasurement& FitProblem::MeasurementOf(const ResidualBlock& block) cons
 
 Scene FitProblem::SceneAt(const FitEquilibrium& equilibrium,
                           const std::vector<double>& theta) const {
-  Scene scene =
-      LoadScene(spec_.specimens[equilibrium.specimen].scene_file, SceneOverrides(spec_, theta));
+  Scene scene = SpecimenSceneAt(spec_, spec_.specimens[equilibrium.specimen], theta);
   if (equilibrium.strip_of < 0) return scene;
   return PeirceStripScene(scene,
                           spec_.specimens[equilibrium.specimen].measurements[equilibrium.strip_of]);

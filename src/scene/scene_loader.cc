@@ -1232,34 +1232,47 @@ void ReadScene(const YamlValue& root, Scene* scene) {
 
 }  // namespace
 
-namespace {
+SceneDocument SceneDocument::Read(const std::string& path) {
+  SceneDocument document;
+  document.blank_.file = path;
+  document.blank_.directory = DirectoryOf(path);
+  document.blank_.name = fs::path(path).stem().string();
+  document.text_ = ReadYamlFileText(path, "scene file");
+  document.document_ = ParseYamlText(document.text_, path, "scene file");
+  return document;
+}
 
-Scene ReadSceneDocument(YAML::Node document, const std::string& label, Scene scene,
-                        const std::vector<std::string>& overrides) {
-  scene.root = Location{label, 1, 1, ""};
-  YamlOrigins origins(label);
+SceneDocument SceneDocument::Parse(const std::string& text, const std::string& label,
+                                   const std::string& directory) {
+  SceneDocument document;
+  document.blank_.file = label;
+  document.blank_.directory = directory;
+  document.blank_.name = "scene";
+  document.text_ = text;
+  document.document_ = ParseYamlText(text, label, "scene");
+  return document;
+}
+
+Scene SceneDocument::Load(const std::vector<std::string>& overrides,
+                          const std::vector<SceneValue>& values) const {
+  Scene scene = blank_;
+  scene.root = Location{blank_.file, 1, 1, ""};
+  YamlOrigins origins(blank_.file);
+  // The overrides and values graft copies of the maps on their paths: document_ stays as read.
+  YAML::Node document = document_;
   ApplyOverrides(document, overrides, &origins);
+  ApplyValues(document, values, static_cast<int>(overrides.size()), &origins);
   ReadScene(YamlRoot(document, origins), &scene);
   return scene;
 }
 
-}  // namespace
-
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides) {
-  Scene scene;
-  scene.file = path;
-  scene.directory = DirectoryOf(path);
-  scene.name = fs::path(path).stem().string();
-  return ReadSceneDocument(ReadYamlFile(path, "scene file"), path, std::move(scene), overrides);
+  return SceneDocument::Read(path).Load(overrides);
 }
 
 Scene LoadSceneText(const std::string& text, const std::string& label, const std::string& directory,
                     const std::vector<std::string>& overrides) {
-  Scene scene;
-  scene.file = label;
-  scene.directory = directory;
-  scene.name = "scene";
-  return ReadSceneDocument(ParseYamlText(text, label, "scene"), label, std::move(scene), overrides);
+  return SceneDocument::Parse(text, label, directory).Load(overrides);
 }
 
 std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::string& key) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "src/scene/scene.h"
+#include "src/scene/yaml_overrides.h"
 
 namespace drape {
 
@@ -18,6 +19,30 @@ namespace drape {
 std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::string& key);
 
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// A scene file read and parsed once. Each Load builds a Scene from a copy of the parsed document
+// with `--set` overrides and then typed values set on it, validated as LoadScene does (the same
+// errors, a value's located as the override after the text overrides): a fit's evaluations, a
+// sweep's tasks and a fabric table's rows load their scenes without reading or parsing the file
+// again. LoadScene(path, overrides) is Read(path).Load(overrides).
+class SceneDocument {
+ public:
+  static SceneDocument Read(const std::string& path);
+  // As LoadSceneText: errors in `label`, relative paths from `directory`, the name "scene".
+  static SceneDocument Parse(const std::string& text, const std::string& label,
+                             const std::string& directory);
+
+  Scene Load(const std::vector<std::string>& overrides = {},
+             const std::vector<SceneValue>& values = {}) const;
+
+  // The file's text as read (a sweep's fingerprint of its base scene).
+  const std::string& text() const { return text_; }
+
+ private:
+  Scene blank_;          // file, folder and default name
+  YAML::Node document_;  // never changed: each Load works on a clone
+  std::string text_;
+};
 
 // The same for a scene's YAML text (the Python module's drape.loads): errors are located in
 // `label` (e.g. "<string>"), relative paths in it (mesh.path, output.directory) are taken from

@@ -19,6 +19,18 @@ namespace drape {
 void ApplyOverrides(YAML::Node& root, const std::vector<std::string>& overrides,
                     YamlOrigins* origins);
 
+// A value set at a key path without text: what a fit, a sweep task or a fabric row gives the
+// scene (a number as a double, exactly; a list or a map as YAML nodes).
+struct SceneValue {
+  std::string key;   // a key path, as an override names it: "material.finite_volume.D_warp"
+  YAML::Node value;  // a scalar, list or map; cloned into the document
+};
+
+// Sets each value at its key path as ApplyOverrides does, numbering them from `first_index` for
+// the messages' locations (file "--set", line = number + 1: after the text overrides).
+void ApplyValues(YAML::Node& root, const std::vector<SceneValue>& values, int first_index,
+                 YamlOrigins* origins);
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_SCENE_YAML_OVERRIDES_H_

@@ -20,6 +20,26 @@ void YamlOrigins::AddOverride(const YAML::Node& node, int index, int key_offset,
   overrides_.push_back({node, index, key_offset, value_offset});
 }
 
+void YamlOrigins::AddCopy(const YAML::Node& copy, const YAML::Node& original) {
+  const int override = OverrideOf(original);
+  if (override >= 0) {
+    Override entry = overrides_[override];
+    entry.node = copy;
+    overrides_.push_back(entry);
+  } else if (original.IsDefined() && !original.Mark().is_null()) {
+    copies_.push_back({copy, original.Mark()});
+  }
+}
+
+YAML::Mark YamlOrigins::MarkOf(const YAML::Node& node) const {
+  const YAML::Mark mark = node.Mark();
+  if (!mark.is_null()) return mark;
+  for (auto copy = copies_.rbegin(); copy != copies_.rend(); ++copy) {
+    if (copy->node.is(node)) return copy->mark;
+  }
+  return mark;
+}
+
 int YamlOrigins::OverrideOf(const YAML::Node& node) const {
   for (int k = static_cast<int>(overrides_.size()) - 1; k >= 0; --k) {
     if (overrides_[k].node.is(node)) return k;
@@ -153,8 +173,8 @@ void YamlMap::Read(const std::vector<std::string>* allowed) {
       throw InputError(key_where, "duplicate key '" + key + "' (first given at line " +
                                       std::to_string(first->key_where.line) + ")");
     }
-    YamlValue entry{child, value.origins->Locate(child.Mark(), origin, path), value.origins,
-                    origin};
+    YamlValue entry{child, value.origins->Locate(value.origins->MarkOf(child), origin, path),
+                    value.origins, origin};
     // A block collection or an empty value is best pointed at by its key.
     const bool at_key =
         child.IsNull() || (!child.IsScalar() && child.Style() == YAML::EmitterStyle::Block);
@@ -203,7 +223,8 @@ std::vector<YamlValue> ReadList(const YamlValue& value) {
   int index = 0;
   for (const auto& element : node) {
     const YAML::Node item = element;
-    YamlValue child = Child(value, item, item.Mark(), ItemKey(value.where.key, index++));
+    YamlValue child =
+        Child(value, item, value.origins->MarkOf(item), ItemKey(value.where.key, index++));
     if (item.IsNull()) {  // an empty item's mark is past it: point at the list instead
       child.where.file = value.where.file;
       child.where.line = value.where.line;
@@ -351,6 +372,10 @@ void CheckSingleDocument(const std::string& text, const std::string& path,
 }  // namespace
 
 YAML::Node ReadYamlFile(const std::string& path, const std::string& what) {
+  return ParseYamlText(ReadYamlFileText(path, what), path, what);
+}
+
+std::string ReadYamlFileText(const std::string& path, const std::string& what) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
     throw InputError(path + ": cannot read the " + what + ": it is a folder");
@@ -360,7 +385,7 @@ YAML::Node ReadYamlFile(const std::string& path, const std::string& what) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path + ": cannot read the " + what + ": read error");
-  return ParseYamlText(text.str(), path, what);
+  return text.str();
 }
 
 YAML::Node ParseYamlText(const std::string& text, const std::string& label,

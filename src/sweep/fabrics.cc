@@ -79,14 +79,6 @@ InputError Relocated(const InputError& error, const FabricRow& row,
                     error.problem());
 }
 
-Scene LoadFabricScene(const FabricsOptions& options, const std::string& text,
-                      const std::vector<std::string>& overrides) {
-  if (options.scene.empty()) {
-    return LoadSceneText(text, kStandardTesterLabel, ".", overrides);
-  }
-  return LoadScene(options.scene, overrides);
-}
-
 // The outputs every fabric writes whatever the base scene asks: summary.json and shadow.png (the
 // report's pictures).
 void AddNeededOutputs(Scene* scene) {
@@ -509,7 +501,11 @@ FabricsSpec LoadFabrics(const FabricsOptions& options) {
   FabricsSpec spec;
   spec.table = ReadFabricTable(options.table);
   spec.scene_label = options.scene.empty() ? kStandardTesterLabel : options.scene;
-  spec.scene_text = options.scene.empty() ? StandardTesterScene() : ReadWholeFile(options.scene);
+  // The base scene, read and parsed once for every row.
+  const SceneDocument base =
+      options.scene.empty() ? SceneDocument::Parse(StandardTesterScene(), kStandardTesterLabel, ".")
+                            : SceneDocument::Read(options.scene);
+  spec.scene_text = base.text();
   spec.directory = options.out.empty() ? (fs::path("out") / fs::path(options.table).stem()).string()
                                        : options.out;
   const int count = static_cast<int>(spec.table.rows.size());
@@ -521,7 +517,7 @@ FabricsSpec LoadFabrics(const FabricsOptions& options) {
     fabric.overrides.insert(fabric.overrides.end(), options.overrides.begin(),
                             options.overrides.end());
     try {
-      fabric.scene = LoadFabricScene(options, spec.scene_text, fabric.overrides);
+      fabric.scene = base.Load(fabric.overrides);
     } catch (const InputError& error) {
       throw Relocated(error, fabric.row, cells, spec.table.file);
     }

@@ -167,8 +167,7 @@ TaskOutcome SolveTask(const Context& context, int task, const std::vector<double
                       int warm_from) {
   const SweepSpec& spec = context.spec;
   const std::string folder = TaskFolder(context.directory, spec, task);
-  const std::vector<std::string> overrides = TaskOverrides(spec, task);
-  const Scene scene = LoadScene(spec.scene_file, overrides);
+  const Scene scene = TaskScene(spec, task);
   Model model = BuildModel(scene);
   ResultFolderLock lock(folder);  // throws if another run is writing this task
   std::error_code ignored;
@@ -182,9 +181,9 @@ TaskOutcome SolveTask(const Context& context, int task, const std::vector<double
     outcome.row = CsvLine(FailedRow(spec, task, report.result.summary.termination));
     return outcome;
   }
-  WriteOutputs(
-      scene, model, report, folder,
-      Provenance{context.command_line + " (task " + std::to_string(task) + ")", overrides});
+  WriteOutputs(scene, model, report, folder,
+               Provenance{context.command_line + " (task " + std::to_string(task) + ")",
+                          TaskOverrides(spec, task)});
   if (spec.warm_axis >= 0) WritePositions(fs::path(folder) / kPositionsFile, model.positions);
   outcome.kind = "solved";
   outcome.row = CsvLine(SolvedRow(spec, task, scene, model, report, warmed ? warm_from : -1));
@@ -372,7 +371,7 @@ void WarnOfCoarseMeshes(const SweepSpec& spec, const SweepOptions& options, std:
     if (options.only && task != *options.only) continue;
     labels.push_back(std::to_string(task));
     try {
-      advice.push_back(AdviseMeshOfScene(LoadScene(spec.scene_file, TaskOverrides(spec, task))));
+      advice.push_back(AdviseMeshOfScene(TaskScene(spec, task)));
     } catch (const InputError&) {
       advice.push_back(std::nullopt);
     }
@@ -429,8 +428,7 @@ std::vector<std::string> TaskIdentities(const SweepSpec& spec) {
   // The base scene by its name and its text (not its full path: a sweep folder moved with its
   // scene, e.g. onto a cluster, keeps its finished tasks).
   const std::string scene = "scene: " + fs::path(spec.scene_file).filename().string() +
-                            "\nscene_fingerprint: " + Fingerprint(ReadWholeFile(spec.scene_file)) +
-                            "\n";
+                            "\nscene_fingerprint: " + Fingerprint(spec.scene->text()) + "\n";
   std::vector<std::string> identities(spec.tasks.size());
   for (const auto& chain : spec.chains) {  // in chain order: a task's source comes before it
     for (const int task : chain) {

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -31,6 +32,7 @@ SweepValue ValueOf(const YamlValue& value) {
   emitter.SetMapFormat(YAML::Flow);
   emitter << value.get();
   SweepValue result;
+  result.node = value.get();
   result.text = emitter.c_str();
   result.where = value.where;
   std::string ignored;
@@ -45,6 +47,7 @@ SweepValue ValueOf(const YamlValue& value) {
 
 SweepValue NumberValue(double number, const Location& where) {
   SweepValue value;
+  value.node = YAML::Node(number);
   value.text = FormatNumber(number);
   value.numeric = true;
   value.number = number;
@@ -365,7 +368,7 @@ std::string TaskText(const SweepSpec& spec, int task) {
 // value, anything else where the scene says, with the task named.
 void CheckTask(const SweepSpec& spec, int task) {
   try {
-    LoadScene(spec.scene_file, TaskOverrides(spec, task));
+    TaskScene(spec, task);
   } catch (const InputError& error) {
     const int index = error.where().line - 1;
     const std::string detail =
@@ -421,6 +424,25 @@ std::vector<std::string> TaskOverrides(const SweepSpec& spec, int task) {
   return overrides;
 }
 
+std::vector<SceneValue> TaskValues(const SweepSpec& spec, int task) {
+  std::vector<SceneValue> values;
+  for (size_t k = 0; k < spec.keys.size(); ++k) {
+    values.push_back({spec.keys[k].key, spec.tasks[task].values[k].node});
+  }
+  for (size_t k = 0; k < spec.fixed_keys.size(); ++k) {
+    values.push_back({spec.fixed_keys[k].key, spec.fixed_values[k].node});
+  }
+  YAML::Node write(YAML::NodeType::Sequence);
+  for (const std::string& kind : OutputKindsOf(spec.keep)) write.push_back(kind);
+  values.push_back({"output.write", write});
+  return values;
+}
+
+Scene TaskScene(const SweepSpec& spec, int task) {
+  assert(spec.scene && "LoadSweepFile reads the base scene");
+  return spec.scene->Load({}, TaskValues(spec, task));
+}
+
 int ChainOf(const SweepSpec& spec, int task) { return spec.tasks[task].chain; }
 
 int WarmStartSource(const SweepSpec& spec, int task) { return spec.tasks[task].warm_from; }
@@ -432,6 +454,7 @@ SweepSpec LoadSweepFile(const std::string& path) {
   const YAML::Node document = ReadYamlFile(path, "sweep file");
   YamlOrigins origins(path);
   ReadTop(YamlRoot(document, origins), &spec);
+  spec.scene = std::make_shared<const SceneDocument>(SceneDocument::Read(spec.scene_file));
   for (int task = 0; task < static_cast<int>(spec.tasks.size()); ++task) CheckTask(spec, task);
   return spec;
 }

@@ -6,10 +6,14 @@
 #ifndef DRAPE_SRC_SWEEP_SWEEP_FILE_H_
 #define DRAPE_SRC_SWEEP_SWEEP_FILE_H_
 
+#include <yaml-cpp/yaml.h>
+
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "src/scene/scene.h"
+#include "src/scene/scene_loader.h"
 
 namespace drape {
 
@@ -20,8 +24,10 @@ struct SweepKey {
   int axis = 0;     // the axis it belongs to (a zip's keys share one axis)
 };
 
-// One value of a key in one task: YAML text for `--set` and, if it is a number, the number.
+// One value of a key in one task: as YAML (what the scene is given), as YAML text (what the task's
+// identity and messages show) and, if it is a number, the number.
 struct SweepValue {
+  YAML::Node node;
   std::string text;
   bool numeric = false;
   double number = 0.0;
@@ -40,6 +46,8 @@ struct SweepTask {
 struct SweepSpec {
   std::string file;        // the sweep file
   std::string scene_file;  // the base scene, resolved against the sweep file's folder
+  // The base scene, read and parsed once by LoadSweepFile: every task's scene is loaded from it.
+  std::shared_ptr<const SceneDocument> scene;
   Location scene_where;
   std::string design;                // grid, zip, grid+zip, latin-hypercube or sobol
   std::vector<SweepKey> keys;        // in the order written (grid keys, then zip keys)
@@ -63,9 +71,13 @@ constexpr int kMaxSweepTasks = 100000;
 // value that gave it, saying which task), before anything is solved.
 SweepSpec LoadSweepFile(const std::string& path);
 
-// The `--set` overrides of task `task`: its values, then the `set:` values, then output.write
-// from `keep`.
+// The values task `task` sets on the base scene: its values, then the `set:` values, then
+// output.write from `keep`; TaskOverrides is the same as `--set` text (the task's identity).
+std::vector<SceneValue> TaskValues(const SweepSpec& spec, int task);
 std::vector<std::string> TaskOverrides(const SweepSpec& spec, int task);
+
+// Task `task`'s scene, loaded from the base scene read once.
+Scene TaskScene(const SweepSpec& spec, int task);
 
 // The names `keep` accepts: summary, shape, pictures, history, profile.
 const std::vector<std::string>& SweepKeepKinds();
