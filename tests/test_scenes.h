@@ -2,6 +2,7 @@
 #ifndef DRAPE_TESTS_TEST_SCENES_H_
 #define DRAPE_TESTS_TEST_SCENES_H_
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,19 @@ namespace drape::testing {
 
 inline std::string SourcePath(const std::string& relative) {
   return std::string(drape_tests::kSourceDir) + "/" + relative;
+}
+
+// Every scene file shipped under configs/ (not the fit and sweep files, which name a scene).
+inline std::vector<std::string> ShippedSceneFiles() {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(SourcePath("configs"))) {
+    const auto& path = entry.path();
+    if (path.extension() != ".yaml") continue;
+    const std::string name = path.filename().string();
+    if (name.rfind("fit", 0) == 0 || name.rfind("sweep", 0) == 0) continue;
+    files.push_back(path.string());
+  }
+  return files;
 }
 
 inline Scene LoadConfig(const std::string& relative,

@@ -35,12 +35,24 @@ std::string JsonScalar(const YAML::Node& node) {
   return JsonString(text);
 }
 
-std::string JsonValue(const YAML::Node& node) {
+}  // namespace
+
+std::string YamlAsJson(const YAML::Node& node) {
+  if (node.IsMap()) {
+    std::string text = "{";
+    for (const auto& entry : node) {
+      text += (text.size() > 1 ? ", " : "") + JsonString(entry.first.Scalar()) + ": " +
+              YamlAsJson(entry.second);
+    }
+    return text + "}";
+  }
   if (!node.IsSequence()) return JsonScalar(node);
   std::string text = "[";
-  for (const auto& item : node) text += (text.size() > 1 ? ", " : "") + JsonValue(item);
+  for (const auto& item : node) text += (text.size() > 1 ? ", " : "") + YamlAsJson(item);
   return text + "]";
 }
+
+namespace {
 
 // The schema's unit as summary.json writes units: ASCII ("kg/m^2", "N*m"), not the reference's
 // typography ("kg/m²", "N·m").
@@ -57,7 +69,7 @@ std::string AsciiUnit(std::string unit) {
 void Write(const YAML::Node& node, const std::string& path, const std::string& indent,
            std::ostream& out) {
   if (IsLeaf(node)) {
-    out << "{\"value\": " << JsonValue(node)
+    out << "{\"value\": " << YamlAsJson(node)
         << ", \"unit\": " << JsonString(AsciiUnit(SchemaUnit(path))) << "}";
     return;
   }

@@ -6,6 +6,8 @@
 #ifndef DRAPE_SRC_OUTPUT_SCENE_JSON_H_
 #define DRAPE_SRC_OUTPUT_SCENE_JSON_H_
 
+#include <yaml-cpp/yaml.h>
+
 #include <string>
 
 #include "src/scene/scene.h"
@@ -13,6 +15,10 @@
 namespace drape {
 
 std::string SceneJson(const Scene& scene);
+
+// A YAML value as JSON: numbers and true/false as such (a quoted scalar stays a text), lists as
+// arrays, maps as objects, on one line.
+std::string YamlAsJson(const YAML::Node& node);
 
 }  // namespace drape
 
