@@ -39,7 +39,7 @@
 #include "src/parallel/task_farm.h"
 #include "src/run/run.h"
 #include "src/run/state_text.h"
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_models.h"
 #include "src/scene/output_kinds.h"

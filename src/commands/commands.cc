@@ -10,7 +10,7 @@
 #include "src/output/provenance.h"
 #include "src/output/writers.h"
 #include "src/parallel/process_group.h"
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/solvers/solver.h"
 #include "src/sweep/drops_report.h"
 #include "src/sweep/sweep_file.h"

@@ -17,7 +17,7 @@
 #include <map>
 #include <sstream>
 
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
