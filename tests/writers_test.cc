@@ -25,6 +25,8 @@
 #include "src/output/atomic_file.h"
 #include "src/output/png_text.h"
 #include "src/output/version.h"
+#include "src/run/run.h"
+#include "src/scene/scene_loader.h"
 #include "tests/folded_skirt.h"
 #include "tests/scratch_folder.h"
 
@@ -214,6 +216,35 @@ TEST_F(WritersTest, NodesCsvHasOneFullPrecisionRowPerNode) {
       EXPECT_EQ(std::stod(fields[16 + c]), 0.0);
     }
   }
+}
+
+// A drape tester whose clamp reaches nearly to the support disk's rim, on a 2 cm lattice with no
+// node between the clamp (4.6 cm from the centre) and 1 mm beyond the rim (5.2 cm): the fabric
+// rests on the disk only where its edges cross the rim (the edge contact, costs/edge_contact.h),
+// with no node in the disk's clearance layer. summary.json's contact.nodes_in_contact counts the
+// nodes nodes.csv marks in_contact (NodeInContact), not the nodes in a layer (none).
+TEST_F(WritersTest, NodesInContactAgreeWhereTheEdgeContactAloneHoldsTheFabric) {
+  const Scene scene = LoadSceneText(R"(name: rim
+drape_test: {specimen_diameter: 0.2, disc_diameter: 0.104, clamp_diameter: 0.092, offset: [0, 0]}
+mesh: {spacing: 0.02}
+material:
+  model: finite_volume
+  density: 0.08
+  finite_volume: {E_warp: 9000, E_weft: 8000, G: 20, D_warp: 2.6e-6, D_weft: 1.7e-6}
+output: {write: [summary, nodes]}
+)",
+                                    "rim.yaml", scratch_->path().string());
+  Model model = BuildModel(scene);
+  const RunResult result = RunSolve(scene, model, "newton");
+  WriteReported(scene, model, result, directory_.string());
+  const YAML::Node contact = YAML::LoadFile(Path("summary.json"))["contact"];
+  EXPECT_EQ(contact["max_penetration"].as<double>(), 0.0);  // no node in the layer
+  const auto lines = Lines(Path("nodes.csv"));
+  ASSERT_EQ(Fields(lines[0])[9], "in_contact");
+  int marked = 0;
+  for (size_t k = 1; k < lines.size(); ++k) marked += Fields(lines[k])[9] == "1" ? 1 : 0;
+  EXPECT_GT(marked, 0);
+  EXPECT_EQ(contact["nodes_in_contact"].as<int>(), marked);
 }
 
 TEST_F(WritersTest, HistoryCsvHasOneRowPerRecordedIteration) {

@@ -332,13 +332,10 @@ double Residual(const Model& model, const RunResult& result, int k) {
   return model.fixed[k] ? 0.0 : NodeForce(result, k);
 }
 
-// 1 where an obstacle pushes on the node (the contact penalty is active), else 0.
+// 1 where an obstacle pushes on the node (NodeInContact, as summary.json's nodes_in_contact
+// counts), else 0.
 int InContact(const RunResult& result, int node) {
-  for (int c = 0; c < 3; ++c) {
-    const double force = ContactForce(result, 3 * node + c);
-    if (std::isfinite(force) && force != 0.0) return 1;
-  }
-  return 0;
+  return NodeInContact(result.certificate.contact_forces, node) ? 1 : 0;
 }
 
 }  // namespace
