@@ -332,8 +332,8 @@ double Residual(const Model& model, const RunResult& result, int k) {
   return model.fixed[k] ? 0.0 : NodeForce(result, k);
 }
 
-// 1 where an obstacle pushes on the node (NodeInContact, as summary.json's nodes_in_contact
-// counts), else 0.
+// mesh.vtk's in_contact: 1 where an obstacle pushes on the node (NodeInContact, as nodes.csv's
+// in_contact and summary.json's nodes_in_contact), else 0.
 int InContact(const RunResult& result, int node) {
   return NodeInContact(result.certificate.contact_forces, node) ? 1 : 0;
 }
@@ -394,8 +394,8 @@ void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) 
                                                                      : std::array<int, 2>{-1, -1};
     out << node << ',' << ij[0] << ',' << ij[1];
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(model.positions[3 * node + c]);
-    for (int c = 0; c < 3; ++c) out << ',' << (model.fixed[3 * node + c] ? 1 : 0);
-    out << ',' << InContact(result, node);
+    for (int c = 0; c < 3; ++c) out << ',' << JsonBool(model.fixed[3 * node + c] != 0);
+    out << ',' << JsonBool(NodeInContact(result.certificate.contact_forces, node));
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(Reaction(model, result, 3 * node + c));
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(Residual(model, result, 3 * node + c));
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(ContactForce(result, 3 * node + c));

@@ -24,8 +24,8 @@ namespace drape {
 void CheckOutputWritable(const std::string& directory);
 
 // The version of the result files' layout (summary.json's `format_version`, for every file of the
-// folder); raised whenever a file changes its columns or keys.
-constexpr int kResultFormatVersion = 3;
+// folder); raised whenever a file changes its columns, its keys or the form of its values.
+constexpr int kResultFormatVersion = 4;
 
 // One material parameter in SI units, as the model uses it (after any KES or Peirce conversion).
 struct MaterialValue {
@@ -35,8 +35,9 @@ struct MaterialValue {
 };
 std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material);
 
-// nodes.csv's columns, in order (units in the names, booleans as 0/1). `drape fit` reads a
-// nodes.csv as measured positions by these names (src/fit/fit_file.cc).
+// nodes.csv's columns, in order (units in the names; booleans true/false, which pandas reads as
+// booleans). `drape fit` reads a nodes.csv as measured positions by these names
+// (src/fit/fit_file.cc).
 const std::vector<std::string>& NodesCsvColumns();
 
 // summary.json's `mesh_rule` object (also in a drops run's summary.json).
