@@ -238,7 +238,10 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
   RequireKnownSolver(scene);
   const std::string directory = OutputDirectory(scene);
   try {  // before the model is built and solved: an unwritable folder costs nothing
-    CheckOutputWritable(directory);
+    CheckOutputWritable(directory, arguments.out ? Location{} : scene.output.directory_where,
+                        arguments.out ? "--out" : "");
+  } catch (const InputError&) {
+    throw;  // the scene's output.directory names a file: located, as every bad key
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;

@@ -63,7 +63,7 @@ FitCommandResult RunFitCommand(const FitCommand& command, const CommandContext& 
   outcome.coordinator = Processes().IsCoordinator();
   if (outcome.coordinator) {
     try {  // before any solve: an unwritable folder costs nothing
-      CheckOutputWritable(spec.output_directory);
+      CheckOutputWritable(spec.output_directory, {}, command.out ? "out" : "");
     } catch (const std::exception& error) {
       throw OutputFolderError(std::string(error.what()) + "; nothing solved");
     }

@@ -729,15 +729,25 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
   return values;
 }
 
-void CheckOutputWritable(const std::string& directory) {
+void CheckOutputWritable(const std::string& directory, const Location& key,
+                         const std::string& option) {
   const fs::path folder = fs::absolute(fs::path(directory));
   // The outermost folder this check creates: removed again, so a run that fails later (a model
   // that cannot be built) leaves nothing behind.
   fs::path created;
   for (fs::path p = folder; !p.empty() && p != p.root_path(); p = p.parent_path()) {
     std::error_code ignored;
-    if (fs::exists(p, ignored)) break;
-    created = p;
+    if (!fs::exists(p, ignored)) {
+      created = p;
+      continue;
+    }
+    if (fs::is_directory(p, ignored)) break;
+    // A file in the way: nothing is made.
+    const std::string problem = p == folder ? "'" + p.string() + "' is a file, not a folder"
+                                            : "cannot make the folder '" + folder.string() +
+                                                  "': '" + p.string() + "' is a file";
+    if (key.line > 0) throw InputError(key, problem);
+    throw std::runtime_error(option.empty() ? problem : option + ": " + problem);
   }
   std::error_code error;
   fs::create_directories(folder, error);

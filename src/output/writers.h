@@ -20,8 +20,12 @@
 namespace drape {
 
 // Creates `directory` if needed and checks that a file can be written into it (before a solve, so
-// that an unwritable folder costs no solving). Throws std::runtime_error saying why not.
-void CheckOutputWritable(const std::string& directory);
+// that an unwritable folder costs no solving). Throws std::runtime_error saying why not. A file
+// where the folder or a folder above it would be is the fault of what named the folder: an
+// InputError at `key` where a key of an input file did (a scene's output.directory; line 0: no
+// key), else an error that names `option` where an option did ("--out"; empty: none).
+void CheckOutputWritable(const std::string& directory, const Location& key = {},
+                         const std::string& option = "");
 
 // The version of the result files' layout (summary.json's `format_version`, for every file of the
 // folder); raised whenever a file changes its columns, its keys or the form of its values.

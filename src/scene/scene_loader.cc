@@ -1076,6 +1076,7 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
     const std::string given = ReadString(*directory);
     if (given.empty()) Fail(*directory, "expected a folder, got nothing");
     output.directory = ResolvePath(scene.directory, given);
+    output.directory_where = directory->where;
   }
   output.write = DefaultOutputWrite(scene.drape_test.has_value());
   if (const auto write = map.Find("write")) {
