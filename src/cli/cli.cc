@@ -318,8 +318,16 @@ int Check(const Arguments& arguments, std::ostream& out) {
       << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << "\n";
   if (scene.drape_test) out << DrapeTestText(scene);
   const MaterialSpec& material = scene.material;
-  out << "material " << MaterialModelName(material.model)
-      << (material.model != MaterialModel::kSprings && material.springs.present ? " + springs" : "")
+  std::string beside, twist;  // the springs beside the model's own terms; its twist's line
+  switch (material.model) {
+    case MaterialModel::kSprings:
+      break;
+    case MaterialModel::kFiniteVolume:
+      if (material.springs.present) beside = " + springs";
+      twist = TwistLine(material.finite_volume);
+      break;
+  }
+  out << "material " << MaterialModelName(material.model) << beside
       << (material.lines.empty() ? ""
                                  : " + " + std::to_string(material.lines.size()) + " spring lines")
       << " (SI):";
@@ -336,7 +344,7 @@ int Check(const Arguments& arguments, std::ostream& out) {
     }
     out << "\n";
   }
-  if (material.model == MaterialModel::kFiniteVolume) out << TwistLine(material.finite_volume);
+  out << twist;
   if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model); advice && advice->coarse) {
     out << "warning: " << CoarseMeshWarning(*advice) << "\n";
   }

@@ -705,15 +705,20 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
   static const char* const mass_units[] = {"kg/m^2", "kg", "kg"};
   const int mass = static_cast<int>(material.mass_kind);
   std::vector<MaterialValue> values = {{mass_keys[mass], material.mass_value, mass_units[mass]}};
-  if (material.model == MaterialModel::kFiniteVolume) {
-    const FiniteVolumeSpec& fv = material.finite_volume;
-    for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
-      if (key.reported_when_zero || fv.*key.member != 0.0) {
-        values.push_back({key.key, fv.*key.member, key.unit});
+  switch (material.model) {
+    case MaterialModel::kSprings:
+      break;  // the springs below
+    case MaterialModel::kFiniteVolume: {
+      const FiniteVolumeSpec& fv = material.finite_volume;
+      for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
+        if (key.reported_when_zero || fv.*key.member != 0.0) {
+          values.push_back({key.key, fv.*key.member, key.unit});
+        }
       }
-    }
-    for (const FrictionSetting& setting : FrictionSettings(fv)) {
-      values.push_back({setting.key, setting.value, setting.unit});
+      for (const FrictionSetting& setting : FrictionSettings(fv)) {
+        values.push_back({setting.key, setting.value, setting.unit});
+      }
+      break;
     }
   }
   const std::pair<const char*, const SpringFamilySpec*> families[] = {
