@@ -37,7 +37,7 @@
 #include "src/run/sensitivity.h"
 #include "src/run/solve_report.h"
 #include "src/run/state_text.h"
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/scene/material_models.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_loader.h"

@@ -790,6 +790,63 @@ std::string WriteSweepFile(const fs::path& folder, const std::string& grid) {
   return (folder / "sweep.yaml").string();
 }
 
+// An output.directory that names a file is a bad key like any other: an error at the key, exit 2,
+// nothing written (it was "drape: cannot write the results: cannot create …: Not a directory", not
+// located). Given as -o, the error names the option: solve's --out, and out for the commands that
+// run many solves (as their other options: `threads`).
+TEST_F(CliTest, AnOutputFolderThatIsAFileIsAnErrorAtItsKeyOrOption) {
+  const fs::path file = directory_ / "outfile";
+  std::ofstream(file) << "a file\n";
+  const std::string scene = WriteScene({{"directory: " + out_.string(), "directory: outfile"}});
+  const std::string text = ReadText(scene);
+  const size_t at = text.find("directory: outfile");
+  ASSERT_NE(at, std::string::npos);
+  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+  const size_t column = at - text.rfind('\n', at) + std::string("directory: ").size();
+  const std::string is_a_file = "'" + file.string() + "' is a file, not a folder";
+  const ProgramOutcome located = Drape({"solve", scene});
+  EXPECT_EQ(located.exit_status, 2);
+  EXPECT_EQ(located.err, scene + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                             ": output.directory: " + is_a_file + "\n");
+  EXPECT_EQ(located.out, "");
+  const ProgramOutcome below = Drape({"solve", scene, "--set", "output.directory=outfile/deeper"});
+  EXPECT_EQ(below.exit_status, 2);
+  EXPECT_NE(below.err.find("output.directory: cannot make the folder '" + file.string() +
+                           "/deeper': '" + file.string() + "' is a file"),
+            std::string::npos)
+      << below.err;
+
+  const ProgramOutcome solve = Drape({"solve", WriteScene(), "-o", file.string()});
+  EXPECT_EQ(solve.exit_status, 2);
+  EXPECT_EQ(solve.err, "drape: cannot write the results: --out: " + is_a_file + "\n");
+  const ProgramOutcome drops = Drape(
+      {"solve", std::string(drape_tests::kSourceDir) + "/configs/fv/drape_tester_cotton_30.yaml",
+       "--drops", "2", "-o", file.string()});
+  EXPECT_EQ(drops.exit_status, 2);
+  EXPECT_EQ(drops.err, "drape: cannot write the results: --out: " + is_a_file + "\n");
+  const ProgramOutcome fit = Drape(
+      {"fit", std::string(drape_tests::kSourceDir) + "/configs/fit/fit_drape_coefficient.yaml",
+       "-o", file.string()});
+  EXPECT_EQ(fit.exit_status, 2);
+  EXPECT_NE(fit.err.find("drape fit: cannot write the results: out: " + is_a_file),
+            std::string::npos)
+      << fit.err;
+  const ProgramOutcome sweep =
+      Drape({"sweep", WriteSweepFile(directory_, "  material.finite_volume.kes.W: [8, 12]\n"), "-o",
+             file.string()});
+  EXPECT_EQ(sweep.exit_status, 2);
+  EXPECT_NE(sweep.err.find("out: " + is_a_file), std::string::npos) << sweep.err;
+  const fs::path table = directory_ / "fabrics.csv";
+  std::ofstream(table) << "name,kes.W,kes.B_warp,kes.B_weft,kes.G,kes.EMT_warp,kes.EMT_weft\n"
+                       << "a,12,0.12,0.08,0.9,4,7\n";
+  const ProgramOutcome fabrics = Drape({"fabrics", table.string(), "-o", file.string()});
+  EXPECT_EQ(fabrics.exit_status, 2);
+  EXPECT_NE(fabrics.err.find("out: " + is_a_file), std::string::npos) << fabrics.err;
+
+  EXPECT_EQ(ReadText(file), "a file\n");  // nothing written, the file untouched
+  EXPECT_FALSE(fs::exists(out_));
+}
+
 TEST_F(CliTest, SweepIsListedByHelp) {
   EXPECT_NE(Drape({"help"}).out.find("drape sweep"), std::string::npos);
   const std::vector<std::string> commands = SectionWords(Drape({"--help"}).out, "Subcommands:");

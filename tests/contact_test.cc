@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "src/model/equilibrium.h"
 #include "src/model/finite_volume.h"
 #include "src/model/mesh.h"
 #include "src/run/run.h"
@@ -104,12 +105,47 @@ TEST(Contact, MeasuresTheDeepestNodeInsideTheClearance) {
   AddContactTerms(floor, contact, &model);
   std::vector<double> x = model.positions;
   x[3 * 7 + 2] = -0.0010;  // node 7 1 mm deep
-  const ContactReport report = MeasureContact(floor, contact, model, x.data());
+  const ContactReport report = MeasureContact(floor, contact, model, x.data(),
+                                              ComputeCertificate(model, x.data()).contact_forces);
   EXPECT_EQ(report.terms, 24);
-  EXPECT_EQ(report.nodes_in_contact, 25);
+  // Node 0, fixed, has no term: its support holds it, the floor does not push on it.
+  EXPECT_EQ(report.nodes_in_contact, 24);
   EXPECT_NEAR(report.max_penetration, 0.0015, 1e-15);
   EXPECT_NEAR(report.max_penetration_fraction, 0.75, 1e-12);
   EXPECT_DOUBLE_EQ(report.stiffness, ContactStiffness(contact, model));
+}
+
+// A 4 cm square over a 1 cm support disk under its centre, 0.5 mm above the disk's plane: its
+// corners are 1.8 cm beyond the rim, outside the clearance layer, but the diagonal 0–3 crosses
+// the disk inside the layer, and its edge term pushes on both its ends. Nodes 0 and 3 are in
+// contact (NodeInContact) and counted so (MeasureContact), though no node is in a layer; 1 and 2,
+// whose edges all pass beyond the rim, are not.
+TEST(Contact, ANodeHeldByItsEdgesTermIsInContact) {
+  testing::SheetSpec spec;
+  spec.nu = spec.nv = 2;
+  spec.width = spec.height = 0.04;
+  Model model = testing::Sheet(spec);
+  model.triangles = {{0, 1, 3}, {0, 3, 2}};
+  for (int node = 0; node < model.num_nodes; ++node) model.positions[3 * node + 2] = 0.0005;
+  ObstacleSpec disk;
+  disk.kind = "disk";
+  disk.center = {0.02, 0.02, 0.0};
+  disk.radius = 0.01;
+  disk.given = {{"center", {}}, {"radius", {}}};
+  ContactSpec contact;
+  contact.thickness = 0.001;
+  AddContactTerms({disk}, contact, &model);
+  const std::vector<double> forces =
+      ComputeCertificate(model, model.positions.data()).contact_forces;
+  EXPECT_TRUE(NodeInContact(forces, 0));
+  EXPECT_FALSE(NodeInContact(forces, 1));
+  EXPECT_FALSE(NodeInContact(forces, 2));
+  EXPECT_TRUE(NodeInContact(forces, 3));
+  const ContactReport report =
+      MeasureContact({disk}, contact, model, model.positions.data(), forces);
+  EXPECT_EQ(report.max_penetration, 0.0);  // no node in the layer
+  EXPECT_EQ(report.nodes_in_contact, 2);
+  EXPECT_FALSE(NodeInContact({}, 0));  // no obstacle, no certificate: none in contact
 }
 
 // The nodes that started above a support disk and hang under it (NodesUnderDisks): below its
@@ -144,7 +180,7 @@ TEST(Contact, CountsTheNodesThatHangUnderASupportDisk) {
   const UnderDisks under = NodesUnderDisks(obstacles, contact.thickness, model, x.data());
   EXPECT_EQ(under.nodes, 2);
   EXPECT_EQ(under.edges, 0);
-  const ContactReport report = MeasureContact(obstacles, contact, model, x.data());
+  const ContactReport report = MeasureContact(obstacles, contact, model, x.data(), {});
   EXPECT_EQ(report.nodes_under_disk, 2);
   EXPECT_FALSE(report.ThroughDisk());
   EXPECT_EQ(PlaceOnDisc(disk, contact.thickness, &x[3 * 3]), DiscPlace::kBesideRimBelow);
@@ -179,7 +215,7 @@ TEST(Contact, CountsTheEdgesThroughASupportDisk) {
   const UnderDisks under = NodesUnderDisks(obstacles, 0.001, model, x.data());
   EXPECT_EQ(under.edges, 2);
   EXPECT_NEAR(under.inside, 0.03, 1e-12);  // edge 0–1, 3 cm inside the rim
-  const ContactReport report = MeasureContact(obstacles, ContactSpec{}, model, x.data());
+  const ContactReport report = MeasureContact(obstacles, ContactSpec{}, model, x.data(), {});
   EXPECT_EQ(report.edges_through_disk, 2);
   EXPECT_TRUE(report.ThroughDisk());
 }
@@ -201,7 +237,8 @@ void ExpectDrapeOverSphereRespectsClearance(Model model) {
   scene.solver.max_iterations = 2000;
   const RunResult run = RunSolve(scene, model, "newton");
   EXPECT_TRUE(run.converged) << run.summary.termination;
-  const ContactReport report = MeasureContact(sphere, contact, model, model.positions.data());
+  const ContactReport report = MeasureContact(sphere, contact, model, model.positions.data(),
+                                              run.certificate.contact_forces);
   EXPECT_GT(report.nodes_in_contact, 0);
   EXPECT_LE(report.max_penetration_fraction, kAllowedPenetration);
   std::printf("%d iterations, %d nodes in contact, deepest %.3f of the thickness\n",

@@ -129,6 +129,21 @@ TEST(LayerRule, EverySourceFileLivesInALayerFolder) {
   }
 }
 
+// Only tests end in `_test` (tests/<unit>_test.cc): a program file so named would read as a test
+// to every `*_test.cc` glob (hence src/scene/drape_tester.h, not drape_test.h).
+TEST(LayerRule, NoSourceFileIsNamedLikeATest) {
+  const auto files = SourceFiles();
+  ASSERT_GT(files.size(), 100u);
+  for (const auto& file : files) {
+    const std::string stem = file.stem().string();
+    const std::string suffix = "_test";
+    EXPECT_FALSE(stem.size() >= suffix.size() &&
+                 stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0)
+        << fs::relative(file, drape_tests::kSourceDir).generic_string()
+        << " is named like a test (tests/<unit>_test.cc)";
+  }
+}
+
 TEST(LayerRule, NoIncludePointsUpTheStack) {
   int checked = 0;
   for (const auto& file : SourceFiles()) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -13,6 +14,7 @@
 #include "src/analysis/levels.h"
 #include "src/output/scene_yaml.h"
 #include "src/scene/scene_loader.h"
+#include "tests/source_lines.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -30,6 +32,17 @@ Scene MaterialModelSheet(const MaterialModelRow& row) {
                            "  springs: {structural: 100, shear: 50, flexion: 2}\n"
                            "fixed:\n  - nodes: {edge: top}\nloads: {gravity: [0, 0, -9.81]}\n",
                        "<string>", ".");
+}
+
+// The program asks a material model what to do by a switch over MaterialModel without a default,
+// never by == or !=, so that the compiler (-Wswitch, in -Wall) names every place a new model has
+// to be handled.
+TEST(MaterialModels, EveryDispatchOnTheModelIsASwitch) {
+  static const std::regex compared(R"([=!]=\s*MaterialModel::k|MaterialModel::k\w+\s*[=!]=)");
+  int files = 0;
+  const std::vector<std::string> found = testing::SourceLinesMatching(compared, &files);
+  EXPECT_GT(files, 100);
+  for (const std::string& line : found) ADD_FAILURE() << "compared, not switched: " << line;
 }
 
 TEST(MaterialModels, EveryModelHasItsRowAndItsRescalingRule) {

@@ -6,15 +6,28 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <regex>
 #include <set>
 #include <string>
 
+#include "tests/source_lines.h"
 #include "tests/test_paths.h"
 
 namespace drape {
 namespace mesh_test {
 
 Location SceneLocation() { return Location{"scene.yaml", 3, 5, "mesh"}; }
+
+// The program asks a mesh's kind what to do by a switch over MeshSpec::Kind without a default,
+// never by == or !=, so that the compiler (-Wswitch, in -Wall) names every place a new kind has to
+// be handled.
+TEST(MeshKinds, EveryDispatchOnTheKindIsASwitch) {
+  static const std::regex compared(R"([=!]=\s*MeshSpec::Kind::k|MeshSpec::Kind::k\w+\s*[=!]=)");
+  int files = 0;
+  const std::vector<std::string> found = testing::SourceLinesMatching(compared, &files);
+  EXPECT_GT(files, 100);
+  for (const std::string& line : found) ADD_FAILURE() << "compared, not switched: " << line;
+}
 
 MeshSpec GridSpec(int nu, int nv, double width, double height) {
   MeshSpec spec;

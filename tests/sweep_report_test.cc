@@ -6,11 +6,14 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "src/output/json.h"
 #include "src/output/version.h"
+#include "src/scene/number_text.h"
 #include "tests/sweep_test_support.h"
 
 namespace drape::testing {
@@ -102,6 +105,39 @@ grid:
               std::strtod(rows[r][error_column].c_str(), nullptr));
   }
   ExpectNoNan(out);
+}
+
+// sweep.html's table shows each number rounded to 6 significant digits, as drape's other tables
+// for people do; sweep.csv holds them exact (the energies to 16 or 17 digits).
+TEST(SweepReport, TheTableShowsNumbersRounded) {
+  if (!HaveGnuplot()) GTEST_SKIP() << "gnuplot is not installed";
+  const std::string folder = SweepTempDir("report_rounded");
+  SweepWithReport(folder, R"(scene: base.yaml
+set: {mesh.spacing: 0.05}
+grid:
+  material.finite_volume.kes.W: [8.0, 16.0]
+)");
+  const fs::path out = folder + "/out";
+  bool exact_is_longer = false;
+  for (const auto& row : ReadCsv((out / "sweep.csv").string())) {
+    for (const std::string& cell : row) {
+      const auto number = WholeNumber(cell);
+      exact_is_longer = exact_is_longer || (number && RoundedNumber(*number, 6) != cell);
+    }
+  }
+  EXPECT_TRUE(exact_is_longer) << "no number of sweep.csv needs rounding: the test shows nothing";
+  const std::string html = WithoutDataUris(ReadText((out / "sweep.html").string()));
+  static const std::regex cell("<td>([^<]*)</td>");
+  int numbers = 0;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), cell); it != std::sregex_iterator();
+       ++it) {
+    const std::string text = (*it)[1];
+    const auto number = WholeNumber(text);
+    if (!number) continue;
+    ++numbers;
+    EXPECT_EQ(text, RoundedNumber(*number, 6));
+  }
+  EXPECT_GT(numbers, 10);
 }
 
 TEST(SweepReport, MissingValuesAreEmptyCellsAndSkippedByThePlots) {

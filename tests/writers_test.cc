@@ -25,6 +25,8 @@
 #include "src/output/atomic_file.h"
 #include "src/output/png_text.h"
 #include "src/output/version.h"
+#include "src/run/run.h"
+#include "src/scene/scene_loader.h"
 #include "tests/folded_skirt.h"
 #include "tests/scratch_folder.h"
 
@@ -203,17 +205,46 @@ TEST_F(WritersTest, NodesCsvHasOneFullPrecisionRowPerNode) {
     EXPECT_EQ(std::stoi(fields[0]), node);
     EXPECT_EQ(std::stoi(fields[1]), model.grid_index[node][0]);
     EXPECT_EQ(std::stoi(fields[2]), model.grid_index[node][1]);
-    EXPECT_EQ(fields[9], "0");  // no obstacle
+    EXPECT_EQ(fields[9], "false");  // no obstacle
     for (int c = 0; c < 3; ++c) {
       const int k = 3 * node + c;
       EXPECT_EQ(std::stod(fields[3 + c]), model.positions[k]);
-      EXPECT_EQ(fields[6 + c], model.fixed[k] ? "1" : "0");  // booleans are 0/1
+      EXPECT_EQ(fields[6 + c], model.fixed[k] ? "true" : "false");  // as pandas reads booleans
       // The certificate's force: a reaction where the coordinate is fixed, else a residual.
       EXPECT_EQ(std::stod(fields[10 + c]), model.fixed[k] ? result.certificate.node_forces[k] : 0);
       EXPECT_EQ(std::stod(fields[13 + c]), model.fixed[k] ? 0 : result.certificate.node_forces[k]);
       EXPECT_EQ(std::stod(fields[16 + c]), 0.0);
     }
   }
+}
+
+// A drape tester whose clamp reaches nearly to the support disk's rim, on a 2 cm lattice with no
+// node between the clamp (4.6 cm from the centre) and 1 mm beyond the rim (5.2 cm): the fabric
+// rests on the disk only where its edges cross the rim (the edge contact, costs/edge_contact.h),
+// with no node in the disk's clearance layer. summary.json's contact.nodes_in_contact counts the
+// nodes nodes.csv marks in_contact (NodeInContact), not the nodes in a layer (none).
+TEST_F(WritersTest, NodesInContactAgreeWhereTheEdgeContactAloneHoldsTheFabric) {
+  const Scene scene = LoadSceneText(R"(name: rim
+drape_test: {specimen_diameter: 0.2, disc_diameter: 0.104, clamp_diameter: 0.092, offset: [0, 0]}
+mesh: {spacing: 0.02}
+material:
+  model: finite_volume
+  density: 0.08
+  finite_volume: {E_warp: 9000, E_weft: 8000, G: 20, D_warp: 2.6e-6, D_weft: 1.7e-6}
+output: {write: [summary, nodes]}
+)",
+                                    "rim.yaml", scratch_->path().string());
+  Model model = BuildModel(scene);
+  const RunResult result = RunSolve(scene, model, "newton");
+  WriteReported(scene, model, result, directory_.string());
+  const YAML::Node contact = YAML::LoadFile(Path("summary.json"))["contact"];
+  EXPECT_EQ(contact["max_penetration"].as<double>(), 0.0);  // no node in the layer
+  const auto lines = Lines(Path("nodes.csv"));
+  ASSERT_EQ(Fields(lines[0])[9], "in_contact");
+  int marked = 0;
+  for (size_t k = 1; k < lines.size(); ++k) marked += Fields(lines[k])[9] == "true" ? 1 : 0;
+  EXPECT_GT(marked, 0);
+  EXPECT_EQ(contact["nodes_in_contact"].as<int>(), marked);
 }
 
 TEST_F(WritersTest, HistoryCsvHasOneRowPerRecordedIteration) {
@@ -477,8 +508,8 @@ for name in ["strain", "strain_warp", "strain_weft", "shear_angle"]:
             "");
 }
 
-// nodes.csv as pandas reads it with no option: every column numeric, no NaN in a boolean.
-TEST_F(WritersTest, PandasReadsNodesCsvWithNumericColumns) {
+// nodes.csv as pandas reads it with no option: whole numbers, booleans and numbers, no NaN.
+TEST_F(WritersTest, PandasReadsNodesCsvWithTypedColumns) {
   if (!PythonHas("pandas")) GTEST_SKIP() << "python3-pandas is not installed (CI installs it)";
   const Model model = SmallSheet();
   WriteReported(SceneWriting({"nodes"}), model, ResultOf(model), directory_.string());
@@ -486,11 +517,13 @@ TEST_F(WritersTest, PandasReadsNodesCsvWithNumericColumns) {
 import pandas
 nodes = pandas.read_csv("nodes.csv")
 assert len(nodes) == 4, len(nodes)
-for column in ["id", "i", "j", "fixed_x", "fixed_y", "fixed_z", "in_contact"]:
+for column in ["id", "i", "j"]:
     assert str(nodes[column].dtype) == "int64", (column, nodes[column].dtype)
+for column in ["fixed_x", "fixed_y", "fixed_z", "in_contact"]:
+    assert str(nodes[column].dtype) == "bool", (column, nodes[column].dtype)
 for column in nodes.columns:
-    assert nodes[column].dtype.kind in "if", (column, nodes[column].dtype)
-assert list(nodes["fixed_z"]) == [1, 0, 1, 1]
+    assert nodes[column].dtype.kind in "ibf", (column, nodes[column].dtype)
+assert list(nodes["fixed_z"]) == [True, False, True, True]
 assert nodes.notna().all().all()
 )"),
             "");

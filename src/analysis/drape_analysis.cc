@@ -328,8 +328,17 @@ double DiscRadius(const Scene& scene) {
 }
 
 bool HasDrapeCoefficient(const Scene& scene, const Model& model) {
-  const bool disc_mesh =
-      scene.mesh.kind == MeshSpec::Kind::kCircle || scene.mesh.kind == MeshSpec::Kind::kArc;
+  bool disc_mesh = false;  // a circular specimen
+  switch (scene.mesh.kind) {
+    case MeshSpec::Kind::kCircle:
+    case MeshSpec::Kind::kArc:
+      disc_mesh = true;
+      break;
+    case MeshSpec::Kind::kGrid:
+    case MeshSpec::Kind::kChain:
+    case MeshSpec::Kind::kFile:
+      break;
+  }
   return !model.triangles.empty() && (DiscRadius(scene) > 0.0 || disc_mesh);
 }
 

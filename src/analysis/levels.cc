@@ -41,18 +41,29 @@ int CircleHalfWidth(const MeshSpec& mesh) {
   return static_cast<int>(std::floor(mesh.radius / mesh.spacing * (1.0 + 1e-9)));
 }
 
+// The axes of a mesh of nested lattices (CheckScalable, LatticeSpacing).
 LatticeAxes AxesOf(const MeshSpec& mesh) {
   LatticeAxes axes;
-  if (mesh.kind == MeshSpec::Kind::kCircle) {
-    const int m = CircleHalfWidth(mesh);
-    axes.u = axes.v = Axis{mesh.spacing, static_cast<double>(m), 2 * m + 1};
-    return axes;
+  switch (mesh.kind) {
+    case MeshSpec::Kind::kCircle: {
+      const int m = CircleHalfWidth(mesh);
+      axes.u = axes.v = Axis{mesh.spacing, static_cast<double>(m), 2 * m + 1};
+      break;
+    }
+    case MeshSpec::Kind::kGrid: {
+      auto axis = [](double size, int nodes) {
+        return Axis{nodes > 1 ? size / (nodes - 1) : 0.0, 0.0, nodes};
+      };
+      axes.u = axis(mesh.size.x(), mesh.nodes[0]);
+      axes.v = axis(mesh.size.y(), mesh.nodes[1]);
+      break;
+    }
+    case MeshSpec::Kind::kArc:
+    case MeshSpec::Kind::kChain:
+    case MeshSpec::Kind::kFile:
+      assert(false && "no lattice: CheckScalable and LatticeSpacing keep this kind out");
+      break;
   }
-  auto axis = [](double size, int nodes) {
-    return Axis{nodes > 1 ? size / (nodes - 1) : 0.0, 0.0, nodes};
-  };
-  axes.u = axis(mesh.size.x(), mesh.nodes[0]);
-  axes.v = axis(mesh.size.y(), mesh.nodes[1]);
   return axes;
 }
 
@@ -68,22 +79,34 @@ double MapIndex(double i, const Axis& fine, const Axis& coarse) {
 
 void CheckScalable(const Scene& scene) {
   const MeshSpec& mesh = scene.mesh;
-  if (mesh.kind != MeshSpec::Kind::kGrid && mesh.kind != MeshSpec::Kind::kCircle) {
-    Refuse(scene, "needs a grid or circle mesh (nested lattices)");
-  }
-  if (mesh.kind == MeshSpec::Kind::kGrid && (!mesh.u.empty() || !mesh.v.empty())) {
-    Refuse(scene, "needs a uniform grid (mesh.size and mesh.nodes, not explicit u/v)");
+  switch (mesh.kind) {
+    case MeshSpec::Kind::kGrid:
+      if (!mesh.u.empty() || !mesh.v.empty()) {
+        Refuse(scene, "needs a uniform grid (mesh.size and mesh.nodes, not explicit u/v)");
+      }
+      break;
+    case MeshSpec::Kind::kCircle:
+      break;
+    case MeshSpec::Kind::kArc:
+    case MeshSpec::Kind::kChain:
+    case MeshSpec::Kind::kFile:
+      Refuse(scene, "needs a grid or circle mesh (nested lattices)");
   }
   if (scene.material.mass_kind == MaterialSpec::MassKind::kNodeMass) {
     Refuse(scene, "needs the mass as density or total_mass (a mass per node changes with h)");
   }
   for (const ForceSpec& force : scene.loads.forces) {
-    const bool per_area =
-        force.kind == ForceSpec::Kind::kTraction || force.kind == ForceSpec::Kind::kPressure;
-    if (force.kind != ForceSpec::Kind::kTotal && !per_area) {
-      Refuse(scene,
-             "needs forces given as `total`, `traction` or `pressure` (a force per node changes "
-             "with h)");
+    switch (force.kind) {
+      case ForceSpec::Kind::kTotal:
+      case ForceSpec::Kind::kTraction:
+      case ForceSpec::Kind::kPressure:
+        break;  // the same load on every lattice
+      case ForceSpec::Kind::kEach:
+      case ForceSpec::Kind::kValues:
+      case ForceSpec::Kind::kRamp:
+        Refuse(scene,
+               "needs forces given as `total`, `traction` or `pressure` (a force per node changes "
+               "with h)");
     }
   }
 }
@@ -91,13 +114,21 @@ void CheckScalable(const Scene& scene) {
 // The coarse mesh spec for `factor`; refused if a lattice would have fewer than 3 nodes across.
 MeshSpec CoarsenedMesh(const Scene& scene, int factor) {
   MeshSpec mesh = scene.mesh;
-  if (mesh.kind == MeshSpec::Kind::kCircle) {
-    mesh.spacing *= factor;
-    if (CircleHalfWidth(mesh) < 1) {
-      Refuse(scene, "is too many for this circle: the coarsest spacing " +
-                        std::to_string(mesh.spacing) + " m leaves fewer than 3 nodes across");
-    }
-    return mesh;
+  switch (mesh.kind) {
+    case MeshSpec::Kind::kCircle:
+      mesh.spacing *= factor;
+      if (CircleHalfWidth(mesh) < 1) {
+        Refuse(scene, "is too many for this circle: the coarsest spacing " +
+                          std::to_string(mesh.spacing) + " m leaves fewer than 3 nodes across");
+      }
+      return mesh;
+    case MeshSpec::Kind::kGrid:
+      break;  // below
+    case MeshSpec::Kind::kArc:
+    case MeshSpec::Kind::kChain:
+    case MeshSpec::Kind::kFile:
+      assert(false && "no lattice: CheckScalable keeps this kind out");
+      return mesh;
   }
   for (int k = 0; k < 2; ++k) {
     const int n = scene.mesh.nodes[k];
@@ -488,9 +519,17 @@ std::string LengthText(double metres, int cm_digits) {
 }
 
 double LatticeSpacing(const MeshSpec& mesh) {
-  if (mesh.kind != MeshSpec::Kind::kCircle && mesh.kind != MeshSpec::Kind::kGrid) return 0.0;
-  if (mesh.kind == MeshSpec::Kind::kGrid && !mesh.u.empty()) return 0.0;  // not uniform
-  return AxesOf(mesh).u.h;
+  switch (mesh.kind) {
+    case MeshSpec::Kind::kGrid:
+      return mesh.u.empty() ? AxesOf(mesh).u.h : 0.0;  // 0: not uniform
+    case MeshSpec::Kind::kCircle:
+      return AxesOf(mesh).u.h;
+    case MeshSpec::Kind::kArc:
+    case MeshSpec::Kind::kChain:
+    case MeshSpec::Kind::kFile:
+      return 0.0;
+  }
+  return 0.0;
 }
 
 std::optional<DrapeErrorBar> DrapeErrorOf(const std::vector<LevelRecord>& levels,

@@ -28,8 +28,13 @@ std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
 
 std::optional<MeshAdvice> AdviseMeshOfScene(const Scene& scene) {
   const MaterialSpec& material = scene.material;
-  if (material.model != MaterialModel::kFiniteVolume ||
-      material.mass_kind != MaterialSpec::MassKind::kDensity || !scene.loads.gravity) {
+  switch (material.model) {
+    case MaterialModel::kSprings:
+      return std::nullopt;  // the rule is the finite-volume fabric's refinement study's
+    case MaterialModel::kFiniteVolume:
+      break;
+  }
+  if (material.mass_kind != MaterialSpec::MassKind::kDensity || !scene.loads.gravity) {
     return std::nullopt;
   }
   if (!(DiscRadius(scene) > 0.0)) return std::nullopt;

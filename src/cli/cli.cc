@@ -39,7 +39,7 @@
 #include "src/parallel/task_farm.h"
 #include "src/run/run.h"
 #include "src/run/state_text.h"
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_models.h"
 #include "src/scene/output_kinds.h"
@@ -238,7 +238,10 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
   RequireKnownSolver(scene);
   const std::string directory = OutputDirectory(scene);
   try {  // before the model is built and solved: an unwritable folder costs nothing
-    CheckOutputWritable(directory);
+    CheckOutputWritable(directory, arguments.out ? Location{} : scene.output.directory_where,
+                        arguments.out ? "--out" : "");
+  } catch (const InputError&) {
+    throw;  // the scene's output.directory names a file: located, as every bad key
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
     return kExitBadInput;
@@ -315,8 +318,16 @@ int Check(const Arguments& arguments, std::ostream& out) {
       << " free dofs, " << TermSummary(model) << "; solver " << scene.solver.method << "\n";
   if (scene.drape_test) out << DrapeTestText(scene);
   const MaterialSpec& material = scene.material;
-  out << "material " << MaterialModelName(material.model)
-      << (material.model != MaterialModel::kSprings && material.springs.present ? " + springs" : "")
+  std::string beside, twist;  // the springs beside the model's own terms; its twist's line
+  switch (material.model) {
+    case MaterialModel::kSprings:
+      break;
+    case MaterialModel::kFiniteVolume:
+      if (material.springs.present) beside = " + springs";
+      twist = TwistLine(material.finite_volume);
+      break;
+  }
+  out << "material " << MaterialModelName(material.model) << beside
       << (material.lines.empty() ? ""
                                  : " + " + std::to_string(material.lines.size()) + " spring lines")
       << " (SI):";
@@ -333,7 +344,7 @@ int Check(const Arguments& arguments, std::ostream& out) {
     }
     out << "\n";
   }
-  if (material.model == MaterialModel::kFiniteVolume) out << TwistLine(material.finite_volume);
+  out << twist;
   if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model); advice && advice->coarse) {
     out << "warning: " << CoarseMeshWarning(*advice) << "\n";
   }

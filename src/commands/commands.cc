@@ -10,7 +10,7 @@
 #include "src/output/provenance.h"
 #include "src/output/writers.h"
 #include "src/parallel/process_group.h"
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/solvers/solver.h"
 #include "src/sweep/drops_report.h"
 #include "src/sweep/sweep_file.h"
@@ -63,7 +63,7 @@ FitCommandResult RunFitCommand(const FitCommand& command, const CommandContext& 
   outcome.coordinator = Processes().IsCoordinator();
   if (outcome.coordinator) {
     try {  // before any solve: an unwritable folder costs nothing
-      CheckOutputWritable(spec.output_directory);
+      CheckOutputWritable(spec.output_directory, {}, command.out ? "out" : "");
     } catch (const std::exception& error) {
       throw OutputFolderError(std::string(error.what()) + "; nothing solved");
     }

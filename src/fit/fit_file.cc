@@ -47,9 +47,10 @@ std::optional<double> ParseDataNumber(const std::string& text, std::string* erro
   return number;
 }
 
-// The numbers of one comma- or blank-separated row; the column of each field for messages.
+// The numbers of one comma- or blank-separated row; the column of each field for messages. With
+// `booleans`, a field true or false is 1 or 0.
 bool SplitNumbers(const std::string& line, std::vector<double>* numbers, std::vector<int>* columns,
-                  int* bad_column) {
+                  int* bad_column, bool booleans) {
   numbers->clear();
   columns->clear();
   size_t k = 0;
@@ -62,7 +63,10 @@ bool SplitNumbers(const std::string& line, std::vector<double>* numbers, std::ve
            !std::isspace(static_cast<unsigned char>(line[end])))
       ++end;
     std::string error;
-    const auto number = ParseDataNumber(line.substr(k, end - k), &error);
+    const std::string field = line.substr(k, end - k);
+    const auto number = booleans && (field == "true" || field == "false")
+                            ? std::optional<double>(field == "true" ? 1.0 : 0.0)
+                            : ParseDataNumber(field, &error);
     if (!number) {
       *bad_column = static_cast<int>(k) + 1;
       return false;
@@ -100,21 +104,24 @@ std::ifstream OpenData(const std::string& path, const Location& where) {
 }
 
 // Rows of numbers; a first line that is not numeric is a header. `first_line` is the file line of
-// the stream's first line; `max_rows` < 0 reads to the end.
+// the stream's first line; `max_rows` < 0 reads to the end. Under the header of drape's own
+// nodes.csv (NodesCsvColumns), its booleans (fixed_x, ..., in_contact: true or false) are 1 or 0.
 Rows ReadRows(std::istream& in, const std::string& path, int first_line, int max_rows,
               bool allow_header) {
   Rows rows;
   std::string line;
   std::vector<double> numbers;
   std::vector<int> columns;
+  bool booleans = false;
   for (int number = first_line;
        (max_rows < 0 || static_cast<int>(rows.values.size()) < max_rows) && std::getline(in, line);
        ++number) {
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
     int bad_column = 0;
-    if (!SplitNumbers(line, &numbers, &columns, &bad_column)) {
+    if (!SplitNumbers(line, &numbers, &columns, &bad_column, booleans)) {
       if (allow_header && number == first_line) {
         rows.header = HeaderNames(line);
+        booleans = rows.header == NodesCsvColumns();
         continue;
       }
       throw InputError(Location{path, number, bad_column, ""}, "expected a number");

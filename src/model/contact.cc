@@ -1,6 +1,7 @@
 #include "src/model/contact.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -104,8 +105,19 @@ int EdgeContactPoints(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
   return static_cast<int>(std::ceil(spacing)) - 1;
 }
 
+bool NodeInContact(const std::vector<double>& contact_forces, int node) {
+  if (contact_forces.empty()) return false;
+  assert(3 * node + 2 < static_cast<int>(contact_forces.size()));
+  for (int c = 0; c < 3; ++c) {
+    const double force = contact_forces[3 * node + c];
+    if (std::isfinite(force) && force != 0.0) return true;
+  }
+  return false;
+}
+
 ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
-                             const Model& model, const double* positions) {
+                             const Model& model, const double* positions,
+                             const std::vector<double>& contact_forces) {
   ContactReport report;
   report.thickness = contact.thickness;
   if (obstacles.empty()) return report;
@@ -124,7 +136,7 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
       deepest = std::max(
           deepest, contact.thickness - ObstacleDistance(obstacle, NodeAt(positions, k).data()));
     }
-    if (deepest > 0.0) ++report.nodes_in_contact;
+    if (NodeInContact(contact_forces, k)) ++report.nodes_in_contact;
     report.max_penetration = std::max(report.max_penetration, deepest);
   }
   if (contact.thickness > 0.0) {

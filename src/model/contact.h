@@ -33,7 +33,7 @@ struct ContactReport {
   int terms = 0;                                  // contact terms in the model
   double thickness = 0.0;                         // contact.thickness t, m
   double stiffness = 0.0;                         // k of the penalty, N/m²
-  int nodes_in_contact = 0;                       // nodes inside some obstacle's clearance layer
+  int nodes_in_contact = 0;                       // nodes an obstacle pushes on (NodeInContact)
   double max_penetration = 0.0;                   // m, the deepest node's depth g inside the layer
   double max_penetration_fraction = 0.0;          // max_penetration / t
   double allowed_fraction = kAllowedPenetration;  // what the stiffness rule aims to keep
@@ -95,10 +95,21 @@ struct UnderDisks {
 UnderDisks NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double clearance,
                            const Model& model, const double* positions);
 
-// Penetration into the clearance layers at `positions` (3 per node), over every node and obstacle,
-// and the nodes under a support disk.
+// Whether an obstacle pushes on `node`: its force in `contact_forces` (3 per node, N: −∇ of the
+// contact terms, Certificate::contact_forces, empty without obstacles) is finite and not zero. The
+// one meaning of "in contact": summary.json's contact.nodes_in_contact counts these nodes, and
+// nodes.csv and mesh.vtk mark them (in_contact). A node's own term pushes while the node is inside
+// the clearance layer; an edge's term pushes on both its ends while a point inside the edge is
+// (costs/edge_contact.h), so a node held only where its edges cross a support disk's rim, outside
+// every layer itself, is in contact, as is a fixed node at such an edge's other end.
+bool NodeInContact(const std::vector<double>& contact_forces, int node);
+
+// Penetration into the clearance layers at `positions` (3 per node), over every node and obstacle;
+// the nodes in contact by `contact_forces`, the contact forces at `positions` (NodeInContact); and
+// the nodes under a support disk.
 ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
-                             const Model& model, const double* positions);
+                             const Model& model, const double* positions,
+                             const std::vector<double>& contact_forces);
 
 // The step limit that keeps nodes from passing through obstacles between two iterates (thin ones
 // too: a pin is a point, a disk has no thickness, so a long step can jump over them). A node that

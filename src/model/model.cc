@@ -541,17 +541,22 @@ Model BuildModel(const Scene& scene, const std::vector<double>* friction_referen
   model.fringe = mesh.fringe;
   model.edges = mesh.lines;
 
-  if (scene.material.model == MaterialModel::kFiniteVolume) {
-    std::vector<const FiniteVolumeSpec*> of_node(mesh.nodes.size());
-    for (size_t k = 0; k < of_node.size(); ++k) {
-      of_node[k] = &materials.at(static_cast<int>(k)).finite_volume;
+  switch (scene.material.model) {
+    case MaterialModel::kSprings:
+      AddSprings(materials, mesh, &model);
+      break;
+    case MaterialModel::kFiniteVolume: {
+      std::vector<const FiniteVolumeSpec*> of_node(mesh.nodes.size());
+      for (size_t k = 0; k < of_node.size(); ++k) {
+        of_node[k] = &materials.at(static_cast<int>(k)).finite_volume;
+      }
+      assert(!friction_reference || friction_reference->size() == model.positions.size());
+      AddFiniteVolumeTerms(of_node, mesh, &model,
+                           friction_reference ? friction_reference->data() : nullptr);
+      // Springs given beside the finite-volume terms.
+      if (scene.material.springs.present) AddSprings(materials, mesh, &model);
+      break;
     }
-    assert(!friction_reference || friction_reference->size() == model.positions.size());
-    AddFiniteVolumeTerms(of_node, mesh, &model,
-                         friction_reference ? friction_reference->data() : nullptr);
-  }
-  if (scene.material.model == MaterialModel::kSprings || scene.material.springs.present) {
-    AddSprings(materials, mesh, &model);
   }
   if (scene.material.springs.stretch_limit) {
     AddStretchLimitTerms(*scene.material.springs.stretch_limit, &model);

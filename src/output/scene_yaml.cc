@@ -235,11 +235,14 @@ void WriteMaterial(const MaterialSpec& material, YAML::Emitter& out) {
   out << YAML::Value << MaterialModelName(material.model);
   Key(out, mass_keys[static_cast<int>(material.mass_kind)]);
   Number(out, material.mass_value);
-  if (material.model == MaterialModel::kFiniteVolume) {
-    WriteFiniteVolume(material.finite_volume, out);
-  }
-  if (material.model == MaterialModel::kSprings || material.springs.present) {
-    WriteSprings(material.springs, out);
+  switch (material.model) {
+    case MaterialModel::kSprings:
+      WriteSprings(material.springs, out);
+      break;
+    case MaterialModel::kFiniteVolume:
+      WriteFiniteVolume(material.finite_volume, out);
+      if (material.springs.present) WriteSprings(material.springs, out);  // given beside it
+      break;
   }
   if (!material.lines.empty()) {
     Key(out, "lines");

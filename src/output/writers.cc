@@ -332,13 +332,10 @@ double Residual(const Model& model, const RunResult& result, int k) {
   return model.fixed[k] ? 0.0 : NodeForce(result, k);
 }
 
-// 1 where an obstacle pushes on the node (the contact penalty is active), else 0.
+// mesh.vtk's in_contact: 1 where an obstacle pushes on the node (NodeInContact, as nodes.csv's
+// in_contact and summary.json's nodes_in_contact), else 0.
 int InContact(const RunResult& result, int node) {
-  for (int c = 0; c < 3; ++c) {
-    const double force = ContactForce(result, 3 * node + c);
-    if (std::isfinite(force) && force != 0.0) return 1;
-  }
-  return 0;
+  return NodeInContact(result.certificate.contact_forces, node) ? 1 : 0;
 }
 
 }  // namespace
@@ -397,8 +394,8 @@ void WriteNodes(const Model& model, const RunResult& result, std::ostream& out) 
                                                                      : std::array<int, 2>{-1, -1};
     out << node << ',' << ij[0] << ',' << ij[1];
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(model.positions[3 * node + c]);
-    for (int c = 0; c < 3; ++c) out << ',' << (model.fixed[3 * node + c] ? 1 : 0);
-    out << ',' << InContact(result, node);
+    for (int c = 0; c < 3; ++c) out << ',' << JsonBool(model.fixed[3 * node + c] != 0);
+    out << ',' << JsonBool(NodeInContact(result.certificate.contact_forces, node));
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(Reaction(model, result, 3 * node + c));
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(Residual(model, result, 3 * node + c));
     for (int c = 0; c < 3; ++c) out << ',' << FormatNumber(ContactForce(result, 3 * node + c));
@@ -708,15 +705,20 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
   static const char* const mass_units[] = {"kg/m^2", "kg", "kg"};
   const int mass = static_cast<int>(material.mass_kind);
   std::vector<MaterialValue> values = {{mass_keys[mass], material.mass_value, mass_units[mass]}};
-  if (material.model == MaterialModel::kFiniteVolume) {
-    const FiniteVolumeSpec& fv = material.finite_volume;
-    for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
-      if (key.reported_when_zero || fv.*key.member != 0.0) {
-        values.push_back({key.key, fv.*key.member, key.unit});
+  switch (material.model) {
+    case MaterialModel::kSprings:
+      break;  // the springs below
+    case MaterialModel::kFiniteVolume: {
+      const FiniteVolumeSpec& fv = material.finite_volume;
+      for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
+        if (key.reported_when_zero || fv.*key.member != 0.0) {
+          values.push_back({key.key, fv.*key.member, key.unit});
+        }
       }
-    }
-    for (const FrictionSetting& setting : FrictionSettings(fv)) {
-      values.push_back({setting.key, setting.value, setting.unit});
+      for (const FrictionSetting& setting : FrictionSettings(fv)) {
+        values.push_back({setting.key, setting.value, setting.unit});
+      }
+      break;
     }
   }
   const std::pair<const char*, const SpringFamilySpec*> families[] = {
@@ -732,15 +734,25 @@ std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material) {
   return values;
 }
 
-void CheckOutputWritable(const std::string& directory) {
+void CheckOutputWritable(const std::string& directory, const Location& key,
+                         const std::string& option) {
   const fs::path folder = fs::absolute(fs::path(directory));
   // The outermost folder this check creates: removed again, so a run that fails later (a model
   // that cannot be built) leaves nothing behind.
   fs::path created;
   for (fs::path p = folder; !p.empty() && p != p.root_path(); p = p.parent_path()) {
     std::error_code ignored;
-    if (fs::exists(p, ignored)) break;
-    created = p;
+    if (!fs::exists(p, ignored)) {
+      created = p;
+      continue;
+    }
+    if (fs::is_directory(p, ignored)) break;
+    // A file in the way: nothing is made.
+    const std::string problem = p == folder ? "'" + p.string() + "' is a file, not a folder"
+                                            : "cannot make the folder '" + folder.string() +
+                                                  "': '" + p.string() + "' is a file";
+    if (key.line > 0) throw InputError(key, problem);
+    throw std::runtime_error(option.empty() ? problem : option + ": " + problem);
   }
   std::error_code error;
   fs::create_directories(folder, error);

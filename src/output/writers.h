@@ -20,12 +20,16 @@
 namespace drape {
 
 // Creates `directory` if needed and checks that a file can be written into it (before a solve, so
-// that an unwritable folder costs no solving). Throws std::runtime_error saying why not.
-void CheckOutputWritable(const std::string& directory);
+// that an unwritable folder costs no solving). Throws std::runtime_error saying why not. A file
+// where the folder or a folder above it would be is the fault of what named the folder: an
+// InputError at `key` where a key of an input file did (a scene's output.directory; line 0: no
+// key), else an error that names `option` where an option did ("--out"; empty: none).
+void CheckOutputWritable(const std::string& directory, const Location& key = {},
+                         const std::string& option = "");
 
 // The version of the result files' layout (summary.json's `format_version`, for every file of the
-// folder); raised whenever a file changes its columns or keys.
-constexpr int kResultFormatVersion = 3;
+// folder); raised whenever a file changes its columns, its keys or the form of its values.
+constexpr int kResultFormatVersion = 4;
 
 // One material parameter in SI units, as the model uses it (after any KES or Peirce conversion).
 struct MaterialValue {
@@ -35,8 +39,9 @@ struct MaterialValue {
 };
 std::vector<MaterialValue> MaterialSiValues(const MaterialSpec& material);
 
-// nodes.csv's columns, in order (units in the names, booleans as 0/1). `drape fit` reads a
-// nodes.csv as measured positions by these names (src/fit/fit_file.cc).
+// nodes.csv's columns, in order (units in the names; booleans true/false, which pandas reads as
+// booleans). `drape fit` reads a nodes.csv as measured positions by these names
+// (src/fit/fit_file.cc).
 const std::vector<std::string>& NodesCsvColumns();
 
 // summary.json's `mesh_rule` object (also in a drops run's summary.json).

@@ -201,7 +201,8 @@ RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
       result.summary.constraint_forces.empty() ? nullptr : &result.summary.constraint_forces;
   result.certificate = ComputeCertificate(model, model.positions.data(), constraint);
   ReturnToLastFinite(scene, method, last, model, &result);
-  result.contact = MeasureContact(scene.obstacles, scene.contact, model, model.positions.data());
+  result.contact = MeasureContact(scene.obstacles, scene.contact, model, model.positions.data(),
+                                  result.certificate.contact_forces);
   if (has_free && !workspace) workspace = std::make_unique<HessianWorkspace>(model);
   FreeHessian* hessian = workspace ? &workspace->hessian : nullptr;
   result.residual_floor = RelativeResidualFloor(model, model.positions.data(), hessian);

@@ -8,9 +8,11 @@
 // Adding a model: a value in MaterialModel, one row in MaterialModels()
 // (src/scene/material_models.cc) with its rescaling rule, its reading in the scene loader
 // (src/scene/scene_loader.cc, ReadMaterial), its terms in BuildModel (src/model/model.cc), its
-// writing in scene.yaml (src/output/scene_yaml.cc), and its row in docs/reference.md's table of
-// material models. tests/material_models_test.cc fails until the row, its rule and its
-// documentation are there.
+// writing in scene.yaml (src/output/scene_yaml.cc), its case in every other switch over
+// MaterialModel, and its row in docs/reference.md's table of material models. The code asks the
+// model by a switch with no default, never by ==, so -Wswitch lists every place it is missing.
+// tests/material_models_test.cc fails until the row, its rule and its documentation are there,
+// and where the model is compared instead of switched on.
 #ifndef DRAPE_SRC_SCENE_MATERIAL_MODELS_H_
 #define DRAPE_SRC_SCENE_MATERIAL_MODELS_H_
 

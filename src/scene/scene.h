@@ -266,10 +266,11 @@ struct OutputSpec {
   // so drape's +z is the file's +y (right-handed; Blender's and three.js's default import).
   std::string obj_up = "z";
   Location where;
+  Location directory_where;  // the output.directory key's, where the scene gives one (else line 0)
 };
 
 // A drape test (Cusick 1968; BS 5058, ISO 9073-9) given by its geometry: the scene's `drape_test`
-// block, which src/scene/drape_test.h expands into the mesh, the clamp, the support disc and
+// block, which src/scene/drape_tester.h expands into the mesh, the clamp, the support disc and
 // gravity of a hand-written tester scene. Lengths in m.
 struct DrapeTestSpec {
   double specimen_diameter = 0.30;

@@ -17,7 +17,7 @@
 #include <map>
 #include <sstream>
 
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
@@ -646,23 +646,27 @@ MaterialSpec ReadMaterial(const YamlValue& value) {
   if (const auto model = map.Find("model")) {
     material.model = MaterialModelNamed(ReadChoice(*model, MaterialModelNames()));
   }
-  if (material.model == MaterialModel::kSprings) {
-    ReadMass(map, &material);
-    if (map.Has("finite_volume")) {
-      throw InputError(map.KeyLocation("finite_volume"),
-                       "'finite_volume' applies only when material.model is finite_volume (here "
-                       "it is springs; springs may be added beside a finite_volume material)");
-    }
-    material.springs = ReadSprings(map.Get("springs"));
-  } else {
-    const ArealDensity density = ReadFiniteVolumeMass(map, &material);
-    material.finite_volume = ReadFiniteVolume(map.Get("finite_volume"), density);
-    if (const auto springs = map.Find("springs")) {
-      material.springs = ReadSprings(*springs);
-      if (material.springs.stretch_limit) {
-        throw InputError(YamlMap(*springs).KeyLocation("stretch_limit"),
-                         "'stretch_limit' applies only when material.model is springs");
+  switch (material.model) {
+    case MaterialModel::kSprings:
+      ReadMass(map, &material);
+      if (map.Has("finite_volume")) {
+        throw InputError(map.KeyLocation("finite_volume"),
+                         "'finite_volume' applies only when material.model is finite_volume (here "
+                         "it is springs; springs may be added beside a finite_volume material)");
       }
+      material.springs = ReadSprings(map.Get("springs"));
+      break;
+    case MaterialModel::kFiniteVolume: {
+      const ArealDensity density = ReadFiniteVolumeMass(map, &material);
+      material.finite_volume = ReadFiniteVolume(map.Get("finite_volume"), density);
+      if (const auto springs = map.Find("springs")) {
+        material.springs = ReadSprings(*springs);
+        if (material.springs.stretch_limit) {
+          throw InputError(YamlMap(*springs).KeyLocation("stretch_limit"),
+                           "'stretch_limit' applies only when material.model is springs");
+        }
+      }
+      break;
     }
   }
   if (const auto lines = map.Find("lines")) material.lines = ReadLines(*lines);
@@ -753,9 +757,15 @@ void CheckRegionKeyApplies(const YamlMap& map, const std::string& key,
     throw InputError(map.KeyLocation(key),
                      "a region's density needs the material's mass as density (kg/m²)");
   }
-  if (fv_key && material.model != MaterialModel::kFiniteVolume) {
-    throw InputError(map.KeyLocation(key),
-                     "'" + key + "' applies only when material.model is finite_volume");
+  switch (material.model) {
+    case MaterialModel::kSprings:
+      if (fv_key) {
+        throw InputError(map.KeyLocation(key),
+                         "'" + key + "' applies only when material.model is finite_volume");
+      }
+      break;
+    case MaterialModel::kFiniteVolume:
+      break;
   }
   const bool spring_key =
       key == "structural" || key == "shear" || key == "flexion" || key == "tension_only";
@@ -1076,6 +1086,7 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
     const std::string given = ReadString(*directory);
     if (given.empty()) Fail(*directory, "expected a folder, got nothing");
     output.directory = ResolvePath(scene.directory, given);
+    output.directory_where = directory->where;
   }
   output.write = DefaultOutputWrite(scene.drape_test.has_value());
   if (const auto write = map.Find("write")) {

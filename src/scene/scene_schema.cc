@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
 #include "src/scene/number_text.h"

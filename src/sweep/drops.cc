@@ -20,7 +20,7 @@
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
 #include "src/run/state_text.h"
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/solvers/solver.h"
 #include "src/sweep/drops_report.h"
 #include "src/sweep/sweep.h"

@@ -12,7 +12,7 @@
 #include "src/output/provenance.h"
 #include "src/output/svg_chart.h"
 #include "src/output/writers.h"
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 #include "src/scene/material_models.h"
 
 namespace drape {

@@ -598,7 +598,7 @@ FabricsSummary RunFabrics(const FabricsSpec& spec, const FabricsOptions& options
   summary.fabrics = static_cast<int>(spec.fabrics.size());
   summary.tasks = spec.tasks();
   if (Processes().IsCoordinator()) {
-    CheckOutputWritable(spec.directory);
+    CheckOutputWritable(spec.directory, {}, options.out.empty() ? "" : "out");
     std::vector<std::string> names;
     std::vector<std::optional<MeshAdvice>> advice;
     for (const FabricCase& fabric : spec.fabrics) {

@@ -487,7 +487,7 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   // Before any solve (it leaves no folder behind), by the coordinator alone: on every rank, one
   // rank's removal of the folder it made raced another's probe of it.
   if (Processes().IsCoordinator()) {
-    CheckOutputWritable(summary.directory);
+    CheckOutputWritable(summary.directory, {}, options.out.empty() ? "" : "out");
     WarnOfCoarseMeshes(spec, options, log);
   }
   fs::create_directories(summary.directory);  // sweep.csv is written even if no task finishes

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -255,7 +256,12 @@ void WriteHtml(const SweepSpec& spec, const Table& table, const std::vector<Figu
   out << "</tr>\n";
   for (const auto& row : table.rows) {
     out << "<tr>";
-    for (const std::string& cell : row) out << "<td>" << HtmlText(cell) << "</td>";
+    for (const std::string& cell : row) {
+      // A number rounded for people, as drape's other tables show it (sweep.csv keeps it exact).
+      const std::optional<double> number = WholeNumber(cell);
+      const bool shown = number && std::isfinite(*number);
+      out << "<td>" << HtmlText(shown ? RoundedNumber(*number, 6) : cell) << "</td>";
+    }
     out << "</tr>\n";
   }
   out << "</table>\n</body></html>\n";

@@ -9,8 +9,8 @@
 //   loads      gravity (0, 0, −9.81) m/s² unless the scene gives its own.
 // The ring between the clamp and the disc's rim rests on the disc by contact, over which the
 // fabric folds.
-#ifndef DRAPE_SRC_SCENE_DRAPE_TEST_H_
-#define DRAPE_SRC_SCENE_DRAPE_TEST_H_
+#ifndef DRAPE_SRC_SCENE_DRAPE_TESTER_H_
+#define DRAPE_SRC_SCENE_DRAPE_TESTER_H_
 
 #include <string>
 #include <vector>
@@ -45,4 +45,4 @@ double ClampDiameter(const DrapeTestSpec& test);
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_SCENE_DRAPE_TEST_H_
+#endif  // DRAPE_SRC_SCENE_DRAPE_TESTER_H_

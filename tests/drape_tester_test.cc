@@ -1,7 +1,7 @@
-// The scene's drape_test block (src/scene/drape_test.h): it builds the model of the hand-written
+// The scene's drape_test block (src/scene/drape_tester.h): it builds the model of the hand-written
 // tester scene it stands for, fills its defaults, refuses what would contradict it, and says
 // what it expands to.
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 
 #include <gtest/gtest.h>
 

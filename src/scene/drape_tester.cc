@@ -1,4 +1,4 @@
-#include "src/scene/drape_test.h"
+#include "src/scene/drape_tester.h"
 
 #include <cstdio>
 
