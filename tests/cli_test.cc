@@ -1,5 +1,7 @@
 // The `drape` command, run as a process (drape_tests::kDrapeBinary): subcommands, exit status,
 // what is written and what is not.
+#include "src/cli/cli.h"
+
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -153,6 +155,27 @@ std::vector<std::string> SectionWords(const std::string& help, const std::string
     words.push_back(first);
   }
   return words;
+}
+
+// The command table (CommandList): every row has a one-line help that `drape --help` lists beside
+// its name, in the table's order; `drape NAME --help` reaches it; a misspelt name suggests it.
+TEST_F(CliTest, EveryRowOfTheCommandTableIsListedReachableAndSuggested) {
+  const std::vector<CommandHelp> table = CommandList();
+  ASSERT_GE(table.size(), 9u);
+  const std::string help = Drape({"--help"}).out;
+  std::vector<std::string> names;
+  for (const CommandHelp& command : table) {
+    names.push_back(command.name);
+    EXPECT_FALSE(command.help.empty()) << command.name;
+    EXPECT_NE(help.find(command.help.substr(0, 24)), std::string::npos) << command.name << help;
+    const ProgramOutcome own = Drape({command.name, "--help"});
+    EXPECT_EQ(own.exit_status, 0) << command.name << own.err;
+    EXPECT_NE(own.out.find("Usage: drape " + command.name), std::string::npos) << own.out;
+    const ProgramOutcome typo = Drape({command.name + "x"});
+    EXPECT_EQ(typo.exit_status, 2) << command.name;
+    EXPECT_NE(typo.err.find("did you mean '" + command.name + "'?"), std::string::npos) << typo.err;
+  }
+  EXPECT_EQ(SectionWords(help, "Subcommands:"), names);
 }
 
 // The completion script is generated from the parser: every subcommand `drape --help` lists, and
