@@ -335,25 +335,19 @@ std::vector<ReportBlock> SceneBlocks(const SceneComparison& c, GnuplotPlots* plo
 // compare.json: how the report was made (ProvenanceMembers) and what was asked, beside the CSV
 // files (which carry no comment line, so that pandas reads them as they are).
 void WriteCompareJson(const CompareOptions& options, double total_time_s, std::ostream& out) {
-  std::string scenes, solvers;
-  for (const std::string& scene : options.scenes) {
-    scenes += (scenes.empty() ? "" : ", ") + JsonString(scene);
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"scenes", JsonList(JsonStrings(options.scenes))},
+      {"solvers", JsonList(JsonStrings(options.solvers))},
+      {"repeat", std::to_string(options.repeat)},
+      {"time_limit_s", JsonNumber(options.time_limit)},
+      {"reference_tolerance", JsonNumber(options.reference_tolerance)},
+      {"total_time_s", JsonNumber(total_time_s)},
+      {"files", JsonList(JsonStrings(
+                    {"runs.csv", "curves.csv", "references.csv", "report.md", "report.html"}))}};
+  for (auto& member : ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
+    members.push_back(std::move(member));
   }
-  for (const std::string& solver : options.solvers) {
-    solvers += (solvers.empty() ? "" : ", ") + JsonString(solver);
-  }
-  out << "{\n  \"scenes\": [" << scenes << "],\n  \"solvers\": [" << solvers
-      << "],\n  \"repeat\": " << options.repeat
-      << ",\n  \"time_limit_s\": " << JsonNumber(options.time_limit)
-      << ",\n  \"reference_tolerance\": " << JsonNumber(options.reference_tolerance)
-      << ",\n  \"total_time_s\": " << JsonNumber(total_time_s)
-      << ",\n  \"files\": [\"runs.csv\", \"curves.csv\", \"references.csv\", \"report.md\", "
-         "\"report.html\"]";
-  for (const auto& [key, value] :
-       ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
-    out << ",\n  " << JsonString(key) << ": " << value;
-  }
-  out << "\n}\n";
+  out << JsonObject(members, 0) << "\n";
 }
 
 std::vector<ReportBlock> HeaderBlocks(const CompareOptions& options, double total_time_s) {

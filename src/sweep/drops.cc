@@ -174,34 +174,33 @@ void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const Dr
                        std::ostream& out) {
   const DropStatistics& s = summary.statistics;
   const DrapeTestSpec& test = *scene.drape_test;
-  std::string histogram, modal;
+  std::vector<std::pair<std::string, std::string>> histogram;
   for (const auto& [folds, count] : s.folds_histogram) {
-    histogram += (histogram.empty() ? "" : ", ") + JsonString(std::to_string(folds)) + ": " +
-                 std::to_string(count);
+    histogram.emplace_back(std::to_string(folds), std::to_string(count));
   }
-  for (int folds : s.modal_folds) modal += (modal.empty() ? "" : ", ") + std::to_string(folds);
+  std::vector<std::string> modal;
+  for (int folds : s.modal_folds) modal.push_back(std::to_string(folds));
   const bool any = s.counted > 0;
-  out << "{\n  \"scene\": " << JsonString(scene.name) << ",\n  \"drops\": " << s.drops
-      << ",\n  \"drops_counted\": " << s.counted
-      << ",\n  \"perturbation\": {\"seed\": " << test.seed
-      << ", \"placement_m\": " << JsonNumber(test.placement)
-      << ", \"waviness_m\": " << JsonNumber(test.waviness) << "}"
-      << ",\n  \"drape_coefficient_mean\": " << (any ? JsonNumber(s.mean) : "null")
-      << ",\n  \"drape_coefficient_standard_deviation\": "
-      << (any ? JsonNumber(s.standard_deviation) : "null") << ",\n  \"folds_histogram\": {"
-      << histogram << "}"
-      << ",\n  \"most_frequent_folds\": [" << modal << "]"
-      << ",\n  \"most_frequent_folds_drops\": " << s.modal_drops
-      << ",\n  \"most_frequent_folds_drape_coefficient_mean\": "
-      << (any ? JsonNumber(s.modal_mean) : "null");
   const auto advice = any ? SpecimenSizeAdvice(test.specimen_diameter, s.mean) : std::nullopt;
-  out << ",\n  \"specimen_size_advice\": " << (advice ? JsonString(*advice) : "null");
-  if (summary.mesh_advice) out << ",\n  \"mesh_rule\": " << MeshRuleJson(*summary.mesh_advice);
-  for (const auto& [key, value] :
-       ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
-    out << ",\n  " << JsonString(key) << ": " << value;
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"scene", JsonString(scene.name)},
+      {"drops", std::to_string(s.drops)},
+      {"drops_counted", std::to_string(s.counted)},
+      {"perturbation", JsonInlineObject({{"seed", std::to_string(test.seed)},
+                                         {"placement_m", JsonNumber(test.placement)},
+                                         {"waviness_m", JsonNumber(test.waviness)}})},
+      {"drape_coefficient_mean", any ? JsonNumber(s.mean) : "null"},
+      {"drape_coefficient_standard_deviation", any ? JsonNumber(s.standard_deviation) : "null"},
+      {"folds_histogram", JsonInlineObject(histogram)},
+      {"most_frequent_folds", JsonList(modal)},
+      {"most_frequent_folds_drops", std::to_string(s.modal_drops)},
+      {"most_frequent_folds_drape_coefficient_mean", any ? JsonNumber(s.modal_mean) : "null"},
+      {"specimen_size_advice", advice ? JsonString(*advice) : "null"}};
+  if (summary.mesh_advice) members.emplace_back("mesh_rule", MeshRuleJson(*summary.mesh_advice));
+  for (auto& member : ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
+    members.push_back(std::move(member));
   }
-  out << "\n}\n";
+  out << JsonObject(members, 0) << "\n";
 }
 
 }  // namespace

@@ -339,14 +339,15 @@ std::vector<int> FarmTasks(const SweepSpec& spec, const SweepOptions& options) {
 // reads it as it is.
 void WriteSweepJson(const SweepSpec& spec, const SweepSummary& summary,
                     const Provenance& provenance, std::ostream& out) {
-  out << "{\n  \"sweep_file\": " << JsonString(spec.file)
-      << ",\n  \"scene_file\": " << JsonString(spec.scene_file)
-      << ",\n  \"design\": " << JsonString(spec.design) << ",\n  \"tasks\": " << spec.tasks.size()
-      << ",\n  \"rows\": " << summary.rows << ",\n  \"rows_converged\": " << summary.converged;
-  for (const auto& [key, value] : ProvenanceMembers(provenance)) {
-    out << ",\n  " << JsonString(key) << ": " << value;
-  }
-  out << "\n}\n";
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"sweep_file", JsonString(spec.file)},
+      {"scene_file", JsonString(spec.scene_file)},
+      {"design", JsonString(spec.design)},
+      {"tasks", std::to_string(spec.tasks.size())},
+      {"rows", std::to_string(summary.rows)},
+      {"rows_converged", std::to_string(summary.converged)}};
+  for (auto& member : ProvenanceMembers(provenance)) members.push_back(std::move(member));
+  out << JsonObject(members, 0) << "\n";
 }
 
 void CountRows(const SweepTable& table, SweepSummary* summary) {
