@@ -714,7 +714,7 @@ CommandRun DefineSweep(CLI::App* sweep) {
       ->check(kThreadCount)
       ->capture_default_str()
       ->type_name("N");
-  sweep->add_flag("--no-plots", arguments->no_plots, "write sweep.csv without running gnuplot");
+  sweep->add_flag("--no-plots", arguments->no_plots, "write sweep.csv without sweep.html");
   return [arguments](const Invocation& call) {
     return Sweep(*arguments, call.command_line, call.out, call.err);
   };

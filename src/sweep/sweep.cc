@@ -515,7 +515,7 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   const Provenance provenance{options.command_line, {}};
   WriteAtomically(fs::path(summary.directory) / "sweep.json",
                   [&](std::ostream& out) { WriteSweepJson(spec, summary, provenance, out); });
-  if (options.plots && !options.only) WriteSweepReport(spec, summary.directory, provenance, log);
+  if (options.plots && !options.only) WriteSweepReport(spec, summary.directory, provenance);
   return summary;
 }
 
