@@ -16,6 +16,7 @@
 #include "src/output/provenance.h"
 #include "src/output/result_folder.h"
 #include "src/output/writers.h"
+#include "src/parallel/farm_record.h"
 #include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
@@ -97,19 +98,19 @@ AngularWave DrawWave(const DrapeTestSpec& test, int drop) {
   return wave;
 }
 
-// A farm task's result: the drops.csv row, then a line with the outline (centre, radii).
+// A farm task's result: a FarmRecord with the drops.csv row and the outline (centre, radii) as
+// its numbers.
 std::string TaskResult(const DropRecord& record, const DropOutline& outline) {
-  std::string text = DropCsvRow(record) + "\n" + FormatNumber(outline.centre.x()) + " " +
-                     FormatNumber(outline.centre.y());
-  for (double r : outline.radius) text += " " + FormatNumber(r);
-  return text;
+  std::vector<double> numbers = {outline.centre.x(), outline.centre.y()};
+  numbers.insert(numbers.end(), outline.radius.begin(), outline.radius.end());
+  const std::string kind = record.state == "interrupted" ? "interrupted" : "solved";
+  return EncodeFarmRecords({{kind, record.drop, DropCsvRow(record), numbers}});
 }
 
-DropOutline ParseOutline(const std::string& line) {
-  std::istringstream in(line);
+DropOutline OutlineOf(const FarmRecord& record) {
   DropOutline outline;
-  in >> outline.centre.x() >> outline.centre.y();
-  for (double r; in >> r;) outline.radius.push_back(r);
+  outline.centre = Eigen::Vector2d(record.numbers[0], record.numbers[1]);
+  outline.radius.assign(record.numbers.begin() + 2, record.numbers.end());
   return outline;
 }
 
@@ -320,9 +321,9 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   const TaskFarmSummary farm = RunTaskFarm(
       tasks, [&](int task) { return RunDrop(scene, options, task + 1); },
       [&](int task, const std::string& result) {
-        const size_t end = result.find('\n');
-        rows[task] = result.substr(0, end);
-        outlines[task] = ParseOutline(result.substr(end + 1));
+        const FarmRecord record_of_task = DecodeFarmRecords(result).at(0);
+        rows[task] = record_of_task.row;
+        outlines[task] = OutlineOf(record_of_task);
         records[task] = ParseDropCsvRow(rows[task]);
         const DropRecord& record = records[task];
         char text[96];

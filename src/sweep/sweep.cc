@@ -20,6 +20,7 @@
 #include "src/output/result_folder.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/parallel/farm_record.h"
 #include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
@@ -220,9 +221,9 @@ TaskOutcome RunTask(const Context& context, int task, const std::vector<double>*
 }
 
 // One farm task: a chain's tasks in order, up to `last` (-1: all), each skipped if finished. The
-// result: one line per task, "kind task row".
+// result: a FarmRecord per task (its kind, number and sweep.csv row).
 std::string RunChain(const Context& context, const std::vector<int>& chain, int last) {
-  std::string result;
+  std::vector<FarmRecord> result;
   std::vector<double> warm;  // the previous task's final positions
   int previous = -1;
   for (const int task : chain) {
@@ -239,12 +240,12 @@ std::string RunChain(const Context& context, const std::vector<int>& chain, int 
     } else {
       outcome = RunTask(context, task, previous >= 0 && !warm.empty() ? &warm : nullptr, previous);
     }
-    result += outcome.kind + " " + std::to_string(task) + " " + outcome.row + "\n";
+    result.push_back({outcome.kind, task, outcome.row, {}});
     warm = std::move(outcome.positions);
     previous = task;
     if (task == last) break;
   }
-  return result;
+  return EncodeFarmRecords(result);
 }
 
 // ---- the coordinator's table --------------------------------------------------------------------
@@ -268,18 +269,14 @@ class SweepTable {
   }
 
   void Collect(const std::string& result, SweepSummary* summary) {
-    std::istringstream lines(result);
-    std::string kind, line;
-    int task = 0;
-    while (lines >> kind >> task && std::getline(lines, line)) {
-      line.erase(0, 1);
-      if (kind == "skipped") ++summary->skipped;
-      if (kind == "interrupted") summary->interrupted = true;
-      if (kind == "interrupted" || kind == "skipped") continue;
-      rows_[task] = line;
-      if (kind == "solved") ++summary->solved;
+    for (const FarmRecord& record : DecodeFarmRecords(result)) {
+      if (record.kind == "skipped") ++summary->skipped;
+      if (record.kind == "interrupted") summary->interrupted = true;
+      if (record.kind == "interrupted" || record.kind == "skipped") continue;
+      rows_[record.task] = record.row;
+      if (record.kind == "solved") ++summary->solved;
       ++done_;
-      Progress(task, line);
+      Progress(record.task, record.row);
     }
     Write();
   }
