@@ -13,7 +13,7 @@ namespace drape {
 namespace {
 
 std::vector<ReportBlock> Page() {
-  ReportBlock table = TableBlock({{"drop", "files"}, {"1", "[drop_1](drop_1/)"}});
+  ReportBlock table = TableBlock({{"drop", "files"}, {"1", ReportLink("drop_1", "drop_1/")}});
   table.row_colours = {"#1f77b4"};
   return {HeadingBlock("Drops <3>"),
           TextBlock("run `drape solve` in [the folder](out/a b/); [1, 2] (not a link)"), table,

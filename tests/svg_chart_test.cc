@@ -27,6 +27,15 @@ TEST(SvgChart, AScatterChartHasAPointPerValueItsBarsAndItsTitleFirst) {
   EXPECT_NE(svg.find(">W</text>"), std::string::npos);
 }
 
+// A drape coefficient's axis stays within 0 to 1, its bars cut there.
+TEST(SvgChart, TheYAxisStaysWithinItsLimits) {
+  const std::string svg =
+      ScatterChart("t", "x", "dc", {{1.0, 0.9, 0.5}, {2.0, 0.2, 0.0}}, false, 0.0, 1.0);
+  EXPECT_NE(svg.find(">1</text>"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find(">1.2</text>"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("=\"-"), std::string::npos) << svg;  // nothing above the frame
+}
+
 TEST(SvgChart, ALogAxisIsLabelledAtItsDecades) {
   const std::string svg = ScatterChart("t", "k", "e", {{0.01, 1.0}, {10.0, 2.0}}, true);
   for (const char* decade : {">0.01</text>", ">0.1</text>", ">1</text>", ">10</text>"}) {
@@ -38,8 +47,8 @@ TEST(SvgChart, AHeatMapColoursItsCellsFromBlueToRedAndLabelsThem) {
   const std::string svg = HeatMapChart("dc", "W", {"8", "16"}, "B", {"0.06", "0.24"},
                                        {{0, 0, 0.4}, {1, 0, 0.5}, {1, 1, 0.6}});
   EXPECT_EQ(Occurrences(svg, "<rect x="), 3u);                    // the missing cell is blank
-  EXPECT_NE(svg.find("fill:#313695"), std::string::npos) << svg;  // the lowest
-  EXPECT_NE(svg.find("fill:#a50026"), std::string::npos) << svg;  // the highest
+  EXPECT_NE(svg.find("fill:#4575b4"), std::string::npos) << svg;  // the lowest
+  EXPECT_NE(svg.find("fill:#d73027"), std::string::npos) << svg;  // the highest
   for (const char* label : {">0.4</text>", ">0.6</text>", ">16</text>", ">0.24</text>"}) {
     EXPECT_NE(svg.find(label), std::string::npos) << label;
   }

@@ -120,6 +120,9 @@ ReportBlock ChartBlock(const std::string& svg, const std::string& caption) {
   block.svg = svg;
   return block;
 }
+std::string ReportLink(const std::string& text, const std::string& target) {
+  return "[" + text + "](" + target + ")";
+}
 ReportBlock PreformattedBlock(const std::string& text) {
   return Block(ReportBlock::Kind::kPreformatted, text);
 }

@@ -30,6 +30,9 @@ ReportBlock TextBlock(const std::string& text);
 ReportBlock TableBlock(std::vector<std::vector<std::string>> rows);
 ReportBlock ImageBlock(const std::string& path, const std::string& caption);
 ReportBlock ChartBlock(const std::string& svg, const std::string& caption);
+
+// "[text](target)": a link in a block's text or a table cell.
+std::string ReportLink(const std::string& text, const std::string& target);
 ReportBlock PreformattedBlock(const std::string& text);
 
 // The first heading is the title (#), the others sections (##); tables align their first and last

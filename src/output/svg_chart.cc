@@ -30,9 +30,9 @@ std::pair<double, double> Padded(double low, double high, double margin) {
   return {low - pad, high + pad};
 }
 
-// From blue (0) through pale yellow (0.5) to red (1).
+// From blue (0) through pale yellow (0.5) to red (1), each light enough for black text.
 std::string RampColour(double share) {
-  static const double kStops[3][3] = {{49, 54, 149}, {255, 255, 191}, {165, 0, 38}};
+  static const double kStops[3][3] = {{69, 117, 180}, {255, 255, 191}, {215, 48, 39}};
   const double t = std::clamp(share, 0.0, 1.0) * 2.0;
   const int from = t >= 1.0 ? 1 : 0;
   const double f = t - from;
@@ -135,7 +135,7 @@ void DrawChartAxes(SvgPicture* svg, const ChartAxes& a, const std::string& x_lab
 
 std::string ScatterChart(const std::string& title, const std::string& x_label,
                          const std::string& y_label, const std::vector<ScatterPoint>& points,
-                         bool log_x) {
+                         bool log_x, double y_min, double y_max) {
   auto x_of = [log_x](double x) { return log_x ? std::log10(x) : x; };
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   for (const ScatterPoint& p : points) {
@@ -146,7 +146,8 @@ std::string ScatterChart(const std::string& title, const std::string& x_label,
   }
   if (points.empty()) x0 = y0 = 0.0, x1 = y1 = 1.0;
   const auto [x_low, x_high] = Padded(x0, x1, 0.03);
-  const auto [y_low, y_high] = Padded(y0, y1, 0.05);
+  const auto [y_padded_low, y_padded_high] = Padded(std::max(y0, y_min), std::min(y1, y_max), 0.05);
+  const double y_low = std::max(y_padded_low, y_min), y_high = std::min(y_padded_high, y_max);
   const ChartAxes a{x_low, x_high, y_low, y_high};
   SvgPicture svg(480, 320, title);
   LabelledTicks x_ticks;
@@ -161,8 +162,8 @@ std::string ScatterChart(const std::string& title, const std::string& x_label,
   const std::string colour = "#1f5fa8";
   for (const ScatterPoint& p : points) {
     if (p.error > 0.0) {
-      svg.Line(a.X(x_of(p.x)), a.Y(p.y - p.error), a.X(x_of(p.x)), a.Y(p.y + p.error),
-               "stroke:" + colour + ";stroke-width:1.5");
+      svg.Line(a.X(x_of(p.x)), a.Y(std::max(p.y - p.error, y_low)), a.X(x_of(p.x)),
+               a.Y(std::min(p.y + p.error, y_high)), "stroke:" + colour + ";stroke-width:1.5");
     }
     svg.TitledCircle(a.X(x_of(p.x)), a.Y(p.y), 4, "fill:" + colour,
                      x_label + " " + TickText(p.x) + ": " + y_label + " " + TickText(p.y) +
@@ -184,6 +185,10 @@ std::string HeatMapChart(const std::string& title, const std::string& x_label,
   a.width = 440;
   a.height = 300;
   SvgPicture svg(580, 380, title);
+  LabelledTicks x_ticks, y_ticks;
+  for (size_t k = 0; k < columns.size(); ++k) x_ticks.emplace_back(k, columns[k]);
+  for (size_t k = 0; k < rows.size(); ++k) y_ticks.emplace_back(k, rows[k]);
+  DrawChartAxes(&svg, a, x_label, y_label, x_ticks, y_ticks);  // under the cells: no grid on them
   for (const HeatCell& cell : cells) {
     const double share = high > low ? (cell.value - low) / (high - low) : 0.5;
     svg.Rect(a.X(cell.column - 0.5), a.Y(cell.row + 0.5),
@@ -191,10 +196,6 @@ std::string HeatMapChart(const std::string& title, const std::string& x_label,
              a.Y(cell.row - 0.5) - a.Y(cell.row + 0.5), "fill:" + RampColour(share));
     svg.Text(a.X(cell.column), a.Y(cell.row) + 4, RoundedNumber(cell.value, 3), "middle", 11);
   }
-  LabelledTicks x_ticks, y_ticks;
-  for (size_t k = 0; k < columns.size(); ++k) x_ticks.emplace_back(k, columns[k]);
-  for (size_t k = 0; k < rows.size(); ++k) y_ticks.emplace_back(k, rows[k]);
-  DrawChartAxes(&svg, a, x_label, y_label, x_ticks, y_ticks);
   if (!cells.empty()) {
     svg.Text(a.left + a.width, a.top - 12,
              "blue " + RoundedNumber(low, 3) + " to red " + RoundedNumber(high, 3), "end", 11);

@@ -5,6 +5,7 @@
 #define DRAPE_SRC_OUTPUT_SVG_CHART_H_
 
 #include <array>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -67,10 +68,11 @@ struct ScatterPoint {
 };
 
 // The points in one colour against their axes (x logarithmic when `log_x`, every x then > 0),
-// which span the points and their bars; `title` first.
+// which span the points and their bars, the y axis within [y_min, y_max] (a drape coefficient's
+// 0 to 1: bars beyond it are cut at it); `title` first.
 std::string ScatterChart(const std::string& title, const std::string& x_label,
                          const std::string& y_label, const std::vector<ScatterPoint>& points,
-                         bool log_x);
+                         bool log_x, double y_min = -INFINITY, double y_max = INFINITY);
 
 // A cell of a heat map: its column and row (from 0) and its value.
 struct HeatCell {

@@ -183,7 +183,7 @@ ReportBlock DropsTable(const DropsSummary& summary) {
         {std::to_string(d.drop),
          "(" + FixedText(1e3 * d.offset.x(), 2) + ", " + FixedText(1e3 * d.offset.y(), 2) + ")",
          FixedText(d.drape_coefficient, 3), std::to_string(d.folds), RoundedNumber(d.energy, 6),
-         d.counted ? "yes" : "no", d.state, "[" + folder + "](" + folder + "/)"});
+         d.counted ? "yes" : "no", d.state, ReportLink(folder, folder + "/")});
     table.row_colours.push_back(SeriesColour(static_cast<int>(k)));
   }
   return table;

@@ -55,7 +55,7 @@ ReportBlock FabricsTable(const FabricsSpec& spec,
          compared ? (delta >= 0 ? "+" : "") + FixedText(delta, 3) : "",
          p.drape_coefficient ? std::to_string(p.folds) : "",
          std::to_string(p.counted) + " of " + std::to_string(p.tasks), p.state,
-         "[" + fabric.folder + "](" + fabric.folder + "/)"});
+         ReportLink(fabric.folder, fabric.folder + "/")});
   }
   return table;
 }

@@ -114,7 +114,8 @@ std::vector<ReportBlock> ScalarCharts(const SweepSpec& spec, const Table& table)
       if (points.empty()) continue;
       const std::string title = response.label + " against " + key;
       charts.push_back(ChartBlock(
-          ScatterChart(title, key, response.label, points, WideAndPositive(table, x)),
+          ScatterChart(title, key, response.label, points, WideAndPositive(table, x),
+                       bars ? 0.0 : -INFINITY, bars ? 1.0 : INFINITY),
           title + (bars
                        ? " (bars: the discretisation error, " + std::string(kDrapeErrorColumn) + ")"
                        : "")));
