@@ -1,5 +1,7 @@
 // The `drape` command, run as a process (drape_tests::kDrapeBinary): subcommands, exit status,
 // what is written and what is not.
+#include "src/cli/cli.h"
+
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include "src/output/json.h"
+#include "src/output/scene_json_schema.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/scene/fabric_parameters.h"
@@ -112,6 +115,19 @@ TEST_F(CliTest, SolversListsEveryMethod) {
   }
 }
 
+TEST_F(CliTest, SchemaPrintsTheRowsOrAJsonSchema) {
+  const ProgramOutcome rows = Drape({"schema"});
+  EXPECT_EQ(rows.exit_status, 0);
+  EXPECT_EQ(rows.out, SceneSchemaRowsJson());
+  EXPECT_EQ(Drape({"schema", "--json"}).out, rows.out);
+  const ProgramOutcome schema = Drape({"schema", "--json-schema"});
+  EXPECT_EQ(schema.exit_status, 0);
+  EXPECT_EQ(schema.out, SceneJsonSchema());
+  EXPECT_EQ(YAML::Load(schema.out)["$schema"].as<std::string>(),
+            "https://json-schema.org/draft/2020-12/schema");
+  EXPECT_EQ(Drape({"schema", "--json", "--json-schema"}).exit_status, 2);
+}
+
 TEST_F(CliTest, HelpExitsZero) {
   for (const char* help : {"help", "--help", "-h"}) {
     const ProgramOutcome outcome = Drape({help});
@@ -153,6 +169,27 @@ std::vector<std::string> SectionWords(const std::string& help, const std::string
     words.push_back(first);
   }
   return words;
+}
+
+// The command table (CommandList): every row has a one-line help that `drape --help` lists beside
+// its name, in the table's order; `drape NAME --help` reaches it; a misspelt name suggests it.
+TEST_F(CliTest, EveryRowOfTheCommandTableIsListedReachableAndSuggested) {
+  const std::vector<CommandHelp> table = CommandList();
+  ASSERT_GE(table.size(), 9u);
+  const std::string help = Drape({"--help"}).out;
+  std::vector<std::string> names;
+  for (const CommandHelp& command : table) {
+    names.push_back(command.name);
+    EXPECT_FALSE(command.help.empty()) << command.name;
+    EXPECT_NE(help.find(command.help.substr(0, 24)), std::string::npos) << command.name << help;
+    const ProgramOutcome own = Drape({command.name, "--help"});
+    EXPECT_EQ(own.exit_status, 0) << command.name << own.err;
+    EXPECT_NE(own.out.find("Usage: drape " + command.name), std::string::npos) << own.out;
+    const ProgramOutcome typo = Drape({command.name + "x"});
+    EXPECT_EQ(typo.exit_status, 2) << command.name;
+    EXPECT_NE(typo.err.find("did you mean '" + command.name + "'?"), std::string::npos) << typo.err;
+  }
+  EXPECT_EQ(SectionWords(help, "Subcommands:"), names);
 }
 
 // The completion script is generated from the parser: every subcommand `drape --help` lists, and

@@ -42,5 +42,22 @@ TEST(RoundedNumber, KeepsTheDigitsAskedForPeopleToRead) {
   EXPECT_EQ(RoundedNumber(123456.0, 2), "1.2e+05");
 }
 
+// The one JSON writer: objects one member a line (at a depth) or on one line, lists likewise; each
+// value is JSON text already, each key quoted.
+TEST(JsonWriter, WritesObjectsAndListsOnOneLineOrOneItemALine) {
+  EXPECT_EQ(JsonObject({{"a", "1"}, {"b\"", JsonList({"1", "null"})}}, 0),
+            "{\n  \"a\": 1,\n  \"b\\\"\": [1, null]\n}");
+  EXPECT_EQ(JsonObject({{"a", JsonObject({{"b", "true"}}, 1)}}, 0),
+            "{\n  \"a\": {\n    \"b\": true\n  }\n}");
+  EXPECT_EQ(JsonObject({}, 1), "{}");
+  EXPECT_EQ(JsonInlineObject({{"seed", "1"}, {"unit", JsonString("m")}}),
+            "{\"seed\": 1, \"unit\": \"m\"}");
+  EXPECT_EQ(JsonInlineObject({}), "{}");
+  EXPECT_EQ(JsonList({}), "[]");
+  EXPECT_EQ(JsonListLines({"{}", "[]"}, 1), "[\n    {},\n    []\n  ]");
+  EXPECT_EQ(JsonListLines({}, 1), "[]");
+  EXPECT_EQ(JsonList(JsonStrings({"a", "b\n"})), "[\"a\", \"b\\n\"]");
+}
+
 }  // namespace
 }  // namespace drape

@@ -77,12 +77,12 @@ TEST_F(SceneJsonSchemaTest, EveryShippedSceneIsValid) {
   EXPECT_EQ(validation.status, 0) << validation.lines;
 }
 
-constexpr char kSheet[] = R"(mesh: {kind: grid, nodes: [3, 3]}
+constexpr char kSchemaSheet[] = R"(mesh: {kind: grid, nodes: [3, 3]}
 material: {density: 0.2, springs: {structural: 100}}
 )";
 
 TEST_F(SceneJsonSchemaTest, RefusesWhatTheLoaderRefuses) {
-  const std::string sheet = kSheet;
+  const std::string sheet = kSchemaSheet;
   struct Bad {
     std::string name, text, where;
   };

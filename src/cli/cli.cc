@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <new>
 #include <optional>
 #include <set>
@@ -33,6 +34,7 @@
 #include "src/output/json.h"
 #include "src/output/result_folder.h"
 #include "src/output/scene_json.h"
+#include "src/output/scene_json_schema.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
 #include "src/parallel/process_group.h"
@@ -582,180 +584,284 @@ int PrintHelp(const CLI::App& app, const std::string& name, std::ostream& out) {
   return kExitConverged;
 }
 
-int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
-             const CommandOptions& options) {
-  CLI::App app(kDescription, "drape");
-  app.set_version_flag("--version", DrapeVersion(), "print drape's version and exit");
-  app.require_subcommand(1);
-  app.get_formatter()->column_width(34);
+// What a command's run is given: the parser (help, completion), the whole command line
+// (summary.json's command_line), the streams and the caller's options.
+struct Invocation {
+  const CLI::App& app;
+  const std::string& command_line;
+  std::ostream& out;
+  std::ostream& err;
+  const CommandOptions& options;
+};
 
-  Arguments arguments;
-  arguments.command_line = CommandLine(args);
-  CLI::App* solve = app.add_subcommand(
-      "solve", "load the scene, solve it, write the results into output.directory");
-  AddSceneArguments(solve, &arguments, "scene file (YAML)");
+// Runs a command once its options are parsed; returns the exit status.
+using CommandRun = std::function<int(const Invocation&)>;
+
+// `drape solve`.
+CommandRun DefineSolve(CLI::App* solve) {
+  auto arguments = std::make_shared<Arguments>();
+  AddSceneArguments(solve, arguments.get(), "scene file (YAML)");
   solve
-      ->add_option("--solver", arguments.solver,
+      ->add_option("--solver", arguments->solver,
                    "use this method instead of the scene's solver.method (see `drape solvers`)")
       ->type_name("NAME");
   solve
-      ->add_option("-o,--out", arguments.out,
+      ->add_option("-o,--out", arguments->out,
                    "write into this folder instead of output.directory (default: "
                    "output.directory, else out/<scene name>)")
       ->type_name("DIR");
   solve
-      ->add_option("--drops", arguments.drops,
+      ->add_option("--drops", arguments->drops,
                    "solve N drops of the scene's drape test, seeded perturbations of the "
                    "specimen's placement and waviness (default: drape_test.drops)")
       ->check(CLI::Range(1, kMostDrops))
       ->type_name("N");
   solve
-      ->add_option("--threads", arguments.threads,
+      ->add_option("--threads", arguments->threads,
                    std::string("with --drops, the drops' ") + kLocalThreadsHelp)
       ->check(kThreadCount)
       ->capture_default_str()
       ->type_name("N");
   solve->footer(kExitStatus);
+  return [arguments](const Invocation& call) {
+    arguments->command_line = call.command_line;
+    return Solve(*arguments, call.out, call.err, call.options);
+  };
+}
 
-  CLI::App* check = app.add_subcommand(
-      "check",
-      "load and build the scene, print what it contains (and the SI material values "
-      "derived from KES, FAST or Peirce inputs, and those inputs as given); write nothing");
-  AddSceneArguments(check, &arguments, "scene file (YAML)");
-  check->add_flag("--json", arguments.json,
+// `drape check`.
+CommandRun DefineCheck(CLI::App* check) {
+  auto arguments = std::make_shared<Arguments>();
+  AddSceneArguments(check, arguments.get(), "scene file (YAML)");
+  check->add_flag("--json", arguments->json,
                   "print the scene as solved (defaults filled in, SI) as JSON, each value "
                   "{\"value\": ..., \"unit\": ...}, instead of the summary");
+  return [arguments](const Invocation& call) { return Check(*arguments, call.out); };
+}
 
-  app.add_subcommand("solvers",
-                     "list the methods and their options (solver.<method>.<key>) with defaults");
+// `drape solvers`.
+CommandRun DefineSolvers(CLI::App*) {
+  return [](const Invocation& call) { return ListSolvers(call.out); };
+}
 
-  CompareOptions compare_options;
-  CLI::App* compare = app.add_subcommand(
-      "compare", "solver comparison report (speed against error) for one or more scenes");
-  compare->add_option("scenes", compare_options.scenes, "scene files (YAML)")
+// `drape schema`: the scene schema's rows, or a JSON Schema of a scene file.
+CommandRun DefineSchema(CLI::App* schema) {
+  auto json_schema = std::make_shared<bool>(false);
+  CLI::Option* rows = schema->add_flag("--json", "print the rows as JSON (the default)");
+  schema
+      ->add_flag("--json-schema", *json_schema,
+                 "print a JSON Schema (draft 2020-12) of a scene file instead, for an editor's "
+                 "completion and checking")
+      ->excludes(rows);
+  return [json_schema](const Invocation& call) {
+    call.out << (*json_schema ? SceneJsonSchema() : SceneSchemaRowsJson());
+    return kExitConverged;
+  };
+}
+
+// `drape compare`.
+CommandRun DefineCompare(CLI::App* compare) {
+  struct CompareArguments {
+    CompareOptions options;
+    bool no_plots = false;
+  };
+  auto arguments = std::make_shared<CompareArguments>();
+  CompareOptions& options = arguments->options;
+  compare->add_option("scenes", options.scenes, "scene files (YAML)")
       ->required()
       ->type_name("SCENE.yaml...");
   compare
-      ->add_option("--solvers", compare_options.solvers,
+      ->add_option("--solvers", options.solvers,
                    "all, or a comma-separated list of methods (default: all)")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->type_name("all|a,b,...");
-  compare->add_option("-o,--out", compare_options.out_dir, "report folder")
+  compare->add_option("-o,--out", options.out_dir, "report folder")
       ->capture_default_str()
       ->type_name("DIR");
-  compare->add_option("--repeat", compare_options.repeat, "timed repeats of each run (median)")
+  compare->add_option("--repeat", options.repeat, "timed repeats of each run (median)")
       ->check(kWholeNumber)
       ->capture_default_str()
       ->type_name("N");
-  compare->add_option("--time-limit", compare_options.time_limit, "seconds per run")
+  compare->add_option("--time-limit", options.time_limit, "seconds per run")
       ->check(kFinitePositive)
       ->capture_default_str()
       ->type_name("S");
-  AddSetOption(compare, &compare_options.overrides);
-  bool no_plots = false;
-  compare->add_flag("--no-plots", no_plots, "write the report without running gnuplot");
+  AddSetOption(compare, &options.overrides);
+  compare->add_flag("--no-plots", arguments->no_plots, "write the report without running gnuplot");
+  return [arguments](const Invocation& call) {
+    arguments->options.plots = !arguments->no_plots;
+    arguments->options.command_line = call.command_line;
+    return RunCompare(arguments->options, call.err, &call.out);
+  };
+}
 
-  CLI::App* fit = app.add_subcommand(
-      "fit",
-      "fit scene parameters (stiffnesses) to measurements; writes fit.json, history.csv, "
-      "sensitivity.csv, fit.png, report.md");
-  AddSceneArguments(fit, &arguments, "fit file (YAML)", "FIT.yaml");
-  fit->add_option("-o,--out", arguments.out,
+// `drape fit`.
+CommandRun DefineFit(CLI::App* fit) {
+  auto arguments = std::make_shared<Arguments>();
+  AddSceneArguments(fit, arguments.get(), "fit file (YAML)", "FIT.yaml");
+  fit->add_option("-o,--out", arguments->out,
                   "write into this folder (default: the fit file's output.directory, else "
                   "out/<fit file name>)")
       ->type_name("DIR");
-  fit->add_option("--method", arguments.method,
+  fit->add_option("--method", arguments->method,
                   "outer method instead of the fit file's (" + FitMethodList() + ")")
       ->type_name("NAME");
-  fit->add_option("--threads", arguments.threads, kLocalThreadsHelp)
+  fit->add_option("--threads", arguments->threads, kLocalThreadsHelp)
       ->check(kThreadCount)
       ->capture_default_str()
       ->type_name("N");
   fit->get_option("--set")->description(
       "override a key of every scene the fit solves (repeatable; value is YAML; the fitted "
       "parameters win)");
+  return [arguments](const Invocation& call) {
+    arguments->command_line = call.command_line;
+    return Fit(*arguments, call.out, call.err);
+  };
+}
 
-  SweepArguments sweep_arguments;
-  CLI::App* sweep = app.add_subcommand(
-      "sweep",
-      "solve a base scene over a grid, zip or sample of its keys (one task per variant, each in "
-      "OUT/tasks/NNNN); writes sweep.csv, sweep.html; reruns skip the finished tasks");
-  sweep->add_option("file", sweep_arguments.file, "sweep file (YAML)")
+// `drape sweep`.
+CommandRun DefineSweep(CLI::App* sweep) {
+  auto arguments = std::make_shared<SweepArguments>();
+  sweep->add_option("file", arguments->file, "sweep file (YAML)")
       ->required()
       ->type_name("SWEEP.yaml");
   sweep
-      ->add_option("-o,--out", sweep_arguments.out,
+      ->add_option("-o,--out", arguments->out,
                    "write into this folder (default: the sweep file's output.directory, else "
                    "out/<sweep file name>)")
       ->type_name("DIR");
-  sweep->add_option("--only", sweep_arguments.only, "run only this task (0-based)")->type_name("I");
+  sweep->add_option("--only", arguments->only, "run only this task (0-based)")->type_name("I");
   sweep
-      ->add_option("--task-id", sweep_arguments.task_id,
+      ->add_option("--task-id", arguments->task_id,
                    "run only this task; without a value, $SLURM_ARRAY_TASK_ID (a Slurm job array)")
       ->expected(0, 1)
       ->type_name("I");
-  sweep->add_option("--threads", sweep_arguments.threads, kLocalThreadsHelp)
+  sweep->add_option("--threads", arguments->threads, kLocalThreadsHelp)
       ->check(kThreadCount)
       ->capture_default_str()
       ->type_name("N");
-  sweep->add_flag("--no-plots", sweep_arguments.no_plots,
-                  "write sweep.csv without running gnuplot");
+  sweep->add_flag("--no-plots", arguments->no_plots, "write sweep.csv without sweep.html");
+  return [arguments](const Invocation& call) {
+    return Sweep(*arguments, call.command_line, call.out, call.err);
+  };
+}
 
-  FabricsArguments fabrics_arguments;
-  CLI::App* fabrics = app.add_subcommand(
-      "fabrics",
-      "predict the drape coefficient of every fabric in a table (KES, FAST, Peirce or SI "
-      "columns) and set it beside the measured one; writes fabrics.csv, fabrics.json, "
-      "report.html; reruns solve only what is missing");
-  fabrics->add_option("table", fabrics_arguments.options.table, "the fabric table (CSV)")
+// `drape fabrics`.
+CommandRun DefineFabrics(CLI::App* fabrics) {
+  auto arguments = std::make_shared<FabricsArguments>();
+  FabricsOptions& options = arguments->options;
+  fabrics->add_option("table", options.table, "the fabric table (CSV)")
       ->required()
       ->type_name("FABRICS.csv");
   fabrics
-      ->add_option("--scene", fabrics_arguments.options.scene,
+      ->add_option("--scene", options.scene,
                    "the base scene, a drape test whose material each row replaces (default: the "
                    "standard tester, 30 cm on the 18 cm disc, 5 mm lattice)")
       ->type_name("BASE.yaml");
-  AddSetOption(fabrics, &fabrics_arguments.options.overrides);
+  AddSetOption(fabrics, &options.overrides);
   fabrics->get_option("--set")->description(
       "override a key of every fabric's scene, after its material (repeatable; value is YAML)");
   fabrics
-      ->add_option("--drops", fabrics_arguments.options.drops,
+      ->add_option("--drops", options.drops,
                    "solve N drops of each fabric and predict their mean (default: the base "
                    "scene's drape_test.drops)")
       ->check(CLI::Range(1, kMostDrops))
       ->type_name("N");
-  fabrics->add_option("--threads", fabrics_arguments.options.threads, kLocalThreadsHelp)
+  fabrics->add_option("--threads", options.threads, kLocalThreadsHelp)
       ->check(kThreadCount)
       ->capture_default_str()
       ->type_name("N");
-  fabrics
-      ->add_option("-o,--out", fabrics_arguments.options.out,
-                   "write into this folder (default: out/<table name>)")
+  fabrics->add_option("-o,--out", options.out, "write into this folder (default: out/<table name>)")
       ->type_name("DIR");
   fabrics
-      ->add_option("--only", fabrics_arguments.options.only,
+      ->add_option("--only", options.only,
                    "run only this task (0-based: fabric × drops + drop − 1)")
       ->type_name("I");
   fabrics
-      ->add_option("--task-id", fabrics_arguments.task_id,
+      ->add_option("--task-id", arguments->task_id,
                    "run only this task; without a value, $SLURM_ARRAY_TASK_ID (a Slurm job array)")
       ->expected(0, 1)
       ->type_name("I");
+  return [arguments](const Invocation& call) {
+    return Fabrics(*arguments, call.command_line, call.out, call.err);
+  };
+}
 
-  std::string help_topic;
-  CLI::App* help = app.add_subcommand("help", "print this help, or a command's");
-  help->add_option("command", help_topic, "the command")->type_name("COMMAND");
+// `drape help [COMMAND]`.
+CommandRun DefineHelp(CLI::App* help) {
+  auto topic = std::make_shared<std::string>();
+  help->add_option("command", *topic, "the command")->type_name("COMMAND");
+  return [topic](const Invocation& call) { return PrintHelp(call.app, *topic, call.out); };
+}
 
-  std::string shell;
-  CLI::App* completion =
-      app.add_subcommand("completion",
-                         "print the shell completion script (bash: source it, or install it as "
-                         "share/bash-completion/completions/drape)");
-  completion->add_option("shell", shell, "the shell (bash)")
+// `drape completion SHELL`.
+CommandRun DefineCompletion(CLI::App* completion) {
+  auto shell = std::make_shared<std::string>();
+  completion->add_option("shell", *shell, "the shell (bash)")
       ->required()
       ->check(CLI::IsMember({"bash"}))
       ->type_name("bash");
+  return [shell](const Invocation& call) {  // bash, the one shell CLI11 lets through
+    call.out << BashCompletion(call.app);
+    return kExitConverged;
+  };
+}
+
+// One subcommand: its name, its one-line help (`drape --help`, the man page), and what adds its
+// options to the parser and returns its run.
+struct CommandRow {
+  const char* name;
+  const char* help;
+  CommandRun (*define)(CLI::App* command);
+};
+
+// Every subcommand, in the order `drape --help`, the usage and the completion script list them.
+const CommandRow kCommands[] = {
+    {"solve", "load the scene, solve it, write the results into output.directory", DefineSolve},
+    {"check",
+     "load and build the scene, print what it contains (and the SI material values derived from "
+     "KES, FAST or Peirce inputs, and those inputs as given); write nothing",
+     DefineCheck},
+    {"solvers", "list the methods and their options (solver.<method>.<key>) with defaults",
+     DefineSolvers},
+    {"schema",
+     "print the scene schema: its rows as JSON (--json), or a JSON Schema of a scene file "
+     "(--json-schema) for an editor's completion and checking",
+     DefineSchema},
+    {"compare", "solver comparison report (speed against error) for one or more scenes",
+     DefineCompare},
+    {"fit",
+     "fit scene parameters (stiffnesses) to measurements; writes fit.json, history.csv, "
+     "sensitivity.csv, fit.png, report.md",
+     DefineFit},
+    {"sweep",
+     "solve a base scene over a grid, zip or sample of its keys (one task per variant, each in "
+     "OUT/tasks/NNNN); writes sweep.csv, sweep.html; reruns skip the finished tasks",
+     DefineSweep},
+    {"fabrics",
+     "predict the drape coefficient of every fabric in a table (KES, FAST, Peirce or SI "
+     "columns) and set it beside the measured one; writes fabrics.csv, fabrics.json, "
+     "report.html; reruns solve only what is missing",
+     DefineFabrics},
+    {"help", "print this help, or a command's", DefineHelp},
+    {"completion",
+     "print the shell completion script (bash: source it, or install it as "
+     "share/bash-completion/completions/drape)",
+     DefineCompletion},
+};
+
+int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+             const CommandOptions& options) {
+  CLI::App app(kDescription, "drape");
+  app.set_version_flag("--version", DrapeVersion(), "print drape's version and exit");
+  app.require_subcommand(1);
+  app.get_formatter()->column_width(34);
+  std::vector<std::pair<CLI::App*, CommandRun>> commands;
+  for (const CommandRow& row : kCommands) {
+    CLI::App* command = app.add_subcommand(row.name, row.help);
+    commands.emplace_back(command, row.define(command));
+  }
   app.footer("\n" + UsageText(app, {}) + kExitStatus);
 
   try {
@@ -775,29 +881,23 @@ int Dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     } catch (const CLI::ParseError& error) {
       throw UsageError(error.what());
     }
-
-    if (help->parsed()) return PrintHelp(app, help_topic, out);
-    if (completion->parsed()) {
-      out << BashCompletion(app);
-      return kExitConverged;
+    const std::string command_line = CommandLine(args);
+    for (const auto& [command, run] : commands) {
+      if (command->parsed()) return run(Invocation{app, command_line, out, err, options});
     }
-    if (app.got_subcommand("solvers")) return ListSolvers(out);
-    if (compare->parsed()) {
-      compare_options.plots = !no_plots;
-      compare_options.command_line = arguments.command_line;
-      return RunCompare(compare_options, err, &out);
-    }
-    if (fit->parsed()) return Fit(arguments, out, err);
-    if (sweep->parsed()) return Sweep(sweep_arguments, arguments.command_line, out, err);
-    if (fabrics->parsed()) return Fabrics(fabrics_arguments, arguments.command_line, out, err);
-    if (check->parsed()) return Check(arguments, out);
-    return Solve(arguments, out, err, options);
+    throw UsageError("a command is required");  // require_subcommand(1) has refused this already
   } catch (const UsageError& error) {
     throw UsageError(std::string(error.what()) + "\n" + UsageText(app, args));
   }
 }
 
 }  // namespace
+
+std::vector<CommandHelp> CommandList() {
+  std::vector<CommandHelp> list;
+  for (const CommandRow& row : kCommands) list.push_back({row.name, row.help});
+  return list;
+}
 
 int RunCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
                const CommandOptions& options) {

@@ -34,6 +34,16 @@ std::string UnknownSolverText(const std::string& name);
 // InputError at solver.method, "unknown solver 'newtn' (known: …); did you mean 'newton'?".
 void RequireKnownSolver(const Scene& scene);
 
+// A subcommand of `drape` and its one-line help, as `drape --help` lists them.
+struct CommandHelp {
+  std::string name;
+  std::string help;
+};
+
+// Every subcommand, in the order `drape --help` lists them: the rows of the table that the
+// parser, the usage, the completion script and the man page are all made from.
+std::vector<CommandHelp> CommandList();
+
 // Runs `drape args...` (args without the program name): prints results on `out`, errors, usage
 // and progress on `err`, and returns the exit status. Input errors are caught here and printed as
 // their located message; nothing is written unless a solve ran.

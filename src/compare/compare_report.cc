@@ -138,7 +138,8 @@ void WriteReferencesCsv(const std::vector<SceneComparison>& comparisons, std::os
 // Log axes drop zeros: times and errors are floored for the plot only (the CSVs keep them).
 double Floor(double value, double floor) { return std::max(value, floor); }
 
-std::string CurvesPlot(const SceneComparison& comparison, GnuplotPlots& plotter) {
+// The PNG, "" where gnuplot could not draw it, nothing where there is nothing to plot.
+std::optional<std::string> CurvesPlot(const SceneComparison& comparison, GnuplotPlots& plotter) {
   std::string files, titles;
   for (const RunRecord& run : comparison.runs) {
     if (run.curve.empty() || !run.curve_positions_valid) continue;
@@ -154,7 +155,7 @@ std::string CurvesPlot(const SceneComparison& comparison, GnuplotPlots& plotter)
     files += (files.empty() ? "" : " ") + file;
     titles += (titles.empty() ? "" : " ") + run.solver;
   }
-  if (files.empty()) return "";
+  if (files.empty()) return std::nullopt;
   return plotter.Draw("compare_curves.gp", Slug(comparison.name) + "_curves.png",
                       {{"files", files}, {"titles", titles}, {"title", comparison.name}});
 }
@@ -163,7 +164,9 @@ std::string CurvesPlot(const SceneComparison& comparison, GnuplotPlots& plotter)
 // solver's). compare_pareto.gp draws the same types in its legend of scenes.
 int ScenePointType(size_t k) { return static_cast<int>(k % 13) + 1; }
 
-std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, GnuplotPlots& plotter) {
+// The PNG, "" where gnuplot could not draw it, nothing where there is nothing to plot.
+std::optional<std::string> ParetoPlot(const std::vector<SceneComparison>& comparisons,
+                                      GnuplotPlots& plotter) {
   std::vector<std::string> solvers;
   for (const SceneComparison& c : comparisons) {
     for (const RunRecord& run : c.runs) {
@@ -189,7 +192,7 @@ std::string ParetoPlot(const std::vector<SceneComparison>& comparisons, GnuplotP
     files += (files.empty() ? "" : " ") + file;
     titles += (titles.empty() ? "" : " ") + solver;
   }
-  if (files.empty()) return "";
+  if (files.empty()) return std::nullopt;
   std::string scenes;
   for (const SceneComparison& c : comparisons) scenes += (scenes.empty() ? "" : " ") + Slug(c.name);
   return plotter.Draw("compare_pareto.gp", "pareto.png",
@@ -286,6 +289,20 @@ const RunRecord* LargestDeviation(const SceneComparison& c) {
   return largest;
 }
 
+// The plot, or where gnuplot could not draw it (missing, too old: GnuplotPlots::Draw), a line that
+// says so in its place: a chart is never silently missing. Nothing where there is nothing to plot.
+void AddPlot(const std::optional<std::string>& png, const std::string& caption,
+             std::vector<ReportBlock>* blocks) {
+  if (!png) return;
+  if (!png->empty()) {
+    blocks->push_back(ImageBlock(*png, caption));
+    return;
+  }
+  blocks->push_back(
+      TextBlock("Not drawn: " + caption +
+                " (gnuplot failed or is not installed; its messages are in plots/gnuplot.log)"));
+}
+
 std::vector<ReportBlock> SceneBlocks(const SceneComparison& c, GnuplotPlots* plots) {
   std::vector<ReportBlock> blocks = {HeadingBlock(c.name)};
   if (!c.error.empty()) {
@@ -313,21 +330,15 @@ std::vector<ReportBlock> SceneBlocks(const SceneComparison& c, GnuplotPlots* plo
   }
   if (!plots) return blocks;
   GnuplotPlots& plotter = *plots;
-  if (std::string png = CurvesPlot(c, plotter); !png.empty()) {
-    blocks.push_back(ImageBlock(png, "Position error against time, " + c.name));
-  }
-  if (std::string png = DrapePlot(c, c.reference.positions, false, "reference",
-                                  c.name + ": reference (" + c.reference.method + ")", plotter);
-      !png.empty()) {
-    blocks.push_back(ImageBlock(png, "Reference drape, " + c.name));
-  }
+  AddPlot(CurvesPlot(c, plotter), "Position error against time, " + c.name, &blocks);
+  AddPlot(DrapePlot(c, c.reference.positions, false, "reference",
+                    c.name + ": reference (" + c.reference.method + ")", plotter),
+          "Reference drape, " + c.name, &blocks);
   if (const RunRecord* run = LargestDeviation(c)) {
     const std::string title =
         c.name + ": " + run->solver + ", largest distance " + Number(run->error.max_m) + " m";
-    if (std::string png = DrapePlot(c, run->positions, true, "deviation", title, plotter);
-        !png.empty()) {
-      blocks.push_back(ImageBlock(png, "Largest deviation: " + run->solver + " on " + c.name));
-    }
+    AddPlot(DrapePlot(c, run->positions, true, "deviation", title, plotter),
+            "Largest deviation: " + run->solver + " on " + c.name, &blocks);
   }
   return blocks;
 }
@@ -335,25 +346,19 @@ std::vector<ReportBlock> SceneBlocks(const SceneComparison& c, GnuplotPlots* plo
 // compare.json: how the report was made (ProvenanceMembers) and what was asked, beside the CSV
 // files (which carry no comment line, so that pandas reads them as they are).
 void WriteCompareJson(const CompareOptions& options, double total_time_s, std::ostream& out) {
-  std::string scenes, solvers;
-  for (const std::string& scene : options.scenes) {
-    scenes += (scenes.empty() ? "" : ", ") + JsonString(scene);
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"scenes", JsonList(JsonStrings(options.scenes))},
+      {"solvers", JsonList(JsonStrings(options.solvers))},
+      {"repeat", std::to_string(options.repeat)},
+      {"time_limit_s", JsonNumber(options.time_limit)},
+      {"reference_tolerance", JsonNumber(options.reference_tolerance)},
+      {"total_time_s", JsonNumber(total_time_s)},
+      {"files", JsonList(JsonStrings(
+                    {"runs.csv", "curves.csv", "references.csv", "report.md", "report.html"}))}};
+  for (auto& member : ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
+    members.push_back(std::move(member));
   }
-  for (const std::string& solver : options.solvers) {
-    solvers += (solvers.empty() ? "" : ", ") + JsonString(solver);
-  }
-  out << "{\n  \"scenes\": [" << scenes << "],\n  \"solvers\": [" << solvers
-      << "],\n  \"repeat\": " << options.repeat
-      << ",\n  \"time_limit_s\": " << JsonNumber(options.time_limit)
-      << ",\n  \"reference_tolerance\": " << JsonNumber(options.reference_tolerance)
-      << ",\n  \"total_time_s\": " << JsonNumber(total_time_s)
-      << ",\n  \"files\": [\"runs.csv\", \"curves.csv\", \"references.csv\", \"report.md\", "
-         "\"report.html\"]";
-  for (const auto& [key, value] :
-       ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
-    out << ",\n  " << JsonString(key) << ": " << value;
-  }
-  out << "\n}\n";
+  out << JsonObject(members, 0) << "\n";
 }
 
 std::vector<ReportBlock> HeaderBlocks(const CompareOptions& options, double total_time_s) {
@@ -402,10 +407,8 @@ void WriteCompareReport(const std::vector<SceneComparison>& comparisons,
   if (options.plots) plots.emplace(out_dir, options.tools_dir, log);
   std::vector<ReportBlock> blocks = HeaderBlocks(options, total_time_s);
   if (plots) {
-    if (std::string png = ParetoPlot(comparisons, *plots); !png.empty()) {
-      blocks.push_back(
-          ImageBlock(png, "Time against final position error, every solver and scene"));
-    }
+    AddPlot(ParetoPlot(comparisons, *plots),
+            "Time against final position error, every solver and scene", &blocks);
   }
   for (const SceneComparison& comparison : comparisons) {
     std::vector<ReportBlock> scene_blocks = SceneBlocks(comparison, plots ? &*plots : nullptr);

@@ -91,67 +91,61 @@ void WriteJson(const FitProblem& problem, const FitResult& result, const Provena
                std::ostream& out) {
   const auto& parameters = problem.spec().parameters;
   const int p = static_cast<int>(parameters.size());
-  out << "{\n  \"fit_file\": " << JsonString(problem.spec().file) << ",\n";
-  out << "  \"method\": " << JsonString(problem.spec().method) << ",\n";
-  out << "  \"converged\": " << (result.converged ? "true" : "false") << ",\n";
-  out << "  \"termination\": " << JsonString(result.termination) << ",\n";
-  out << "  \"objective\": " << Number(result.objective) << ",\n";
-  out << "  \"residual_variance\": " << Number(result.residual_variance) << ",\n";
-  out << "  \"evaluations\": " << result.evaluations << ",\n";
-  out << "  \"jacobian_evaluations\": " << result.jacobian_evaluations << ",\n";
-  out << "  \"jacobian\": "
-      << JsonString(result.jacobian_implicit ? "implicit" : "finite differences") << ",\n";
-  out << "  \"wall_time_s\": " << Number(result.wall_time_s) << ",\n";
-  auto by_key = [&](const std::string& name, const std::function<std::string(int)>& value) {
-    out << "  " << JsonString(name) << ": {";
-    for (int j = 0; j < p; ++j) {
-      out << (j ? ", " : "") << JsonString(parameters[j].key) << ": " << value(j);
-    }
-    out << "},\n";
+  auto by_key = [&](const std::function<std::string(int)>& value) {
+    std::vector<std::pair<std::string, std::string>> members;
+    for (int j = 0; j < p; ++j) members.emplace_back(parameters[j].key, value(j));
+    return JsonInlineObject(members);
   };
-  by_key("parameters", [&](int j) { return Number(result.parameters[j]); });
-  by_key("initial", [&](int j) { return Number(parameters[j].initial); });
-  by_key("standard_errors", [&](int j) { return Number(result.standard_errors[j]); });
+  auto numbers = [](int n, const std::function<double(int)>& value) {
+    std::vector<std::string> items;
+    for (int k = 0; k < n; ++k) items.push_back(Number(value(k)));
+    return JsonList(items);
+  };
   const std::vector<std::string> units = ParameterUnits(problem);
-  by_key("units", [&](int j) { return JsonString(units[j]); });
-  by_key("identifiable", [&](int j) {
-    return std::string(result.identifiability.identifiable[j] ? "true" : "false");
-  });
-  out << "  \"correlation\": [";
+  std::vector<std::string> correlation;
   for (int i = 0; i < p; ++i) {
-    out << (i ? ", " : "") << "[";
-    for (int j = 0; j < p; ++j) out << (j ? ", " : "") << Number(result.correlation(i, j));
-    out << "]";
+    correlation.push_back(numbers(p, [&](int j) { return result.correlation(i, j); }));
   }
-  out << "],\n  \"singular_values\": [";
-  for (int k = 0; k < p; ++k) {
-    out << (k ? ", " : "") << Number(result.identifiability.singular_values[k]);
-  }
-  out << "],\n  \"identifiability\": [";
-  const auto& statements = result.identifiability.statements;
-  for (size_t k = 0; k < statements.size(); ++k)
-    out << (k ? ", " : "") << JsonString(statements[k]);
-  out << "],\n  \"measurements\": [";
+  std::vector<std::string> measurements;
   const auto& blocks = problem.blocks();
   for (size_t b = 0; b < blocks.size(); ++b) {
     const FitMeasurement& measurement = MeasurementOf(problem, blocks[b]);
-    out << (b ? ",\n    " : "\n    ") << "{\"label\": " << JsonString(blocks[b].label);
+    std::vector<std::pair<std::string, std::string>> members = {
+        {"label", JsonString(blocks[b].label)}};
     if (IsScalar(measurement)) {
-      out << ", \"measured\": " << Number(measurement.value)
-          << ", \"model\": " << Number(result.final_evaluation.model_values[b]);
+      members.emplace_back("measured", Number(measurement.value));
+      members.emplace_back("model", Number(result.final_evaluation.model_values[b]));
     } else {
-      out << ", \"rms_difference\": " << Number(result.final_evaluation.model_values[b]);
+      members.emplace_back("rms_difference", Number(result.final_evaluation.model_values[b]));
     }
-    out << ", \"unit\": " << JsonString(UnitOf(measurement)) << "}";
+    members.emplace_back("unit", JsonString(UnitOf(measurement)));
+    measurements.push_back(JsonInlineObject(members));
   }
-  out << "\n  ],\n  \"warnings\": [";
-  const auto& warnings = problem.spec().warnings;
-  for (size_t k = 0; k < warnings.size(); ++k) out << (k ? ", " : "") << JsonString(warnings[k]);
-  out << "]";
-  for (const auto& [key, value] : ProvenanceMembers(provenance)) {
-    out << ",\n  " << JsonString(key) << ": " << value;
-  }
-  out << "\n}\n";
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"fit_file", JsonString(problem.spec().file)},
+      {"method", JsonString(problem.spec().method)},
+      {"converged", JsonBool(result.converged)},
+      {"termination", JsonString(result.termination)},
+      {"objective", Number(result.objective)},
+      {"residual_variance", Number(result.residual_variance)},
+      {"evaluations", std::to_string(result.evaluations)},
+      {"jacobian_evaluations", std::to_string(result.jacobian_evaluations)},
+      {"jacobian", JsonString(result.jacobian_implicit ? "implicit" : "finite differences")},
+      {"wall_time_s", Number(result.wall_time_s)},
+      {"parameters", by_key([&](int j) { return Number(result.parameters[j]); })},
+      {"initial", by_key([&](int j) { return Number(parameters[j].initial); })},
+      {"standard_errors", by_key([&](int j) { return Number(result.standard_errors[j]); })},
+      {"units", by_key([&](int j) { return JsonString(units[j]); })},
+      {"identifiable",
+       by_key([&](int j) { return JsonBool(result.identifiability.identifiable[j]); })},
+      {"correlation", JsonList(correlation)},
+      {"singular_values",
+       numbers(p, [&](int k) { return result.identifiability.singular_values[k]; })},
+      {"identifiability", JsonList(JsonStrings(result.identifiability.statements))},
+      {"measurements", JsonListLines(measurements, 1)},
+      {"warnings", JsonList(JsonStrings(problem.spec().warnings))}};
+  for (auto& member : ProvenanceMembers(provenance)) members.push_back(std::move(member));
+  out << JsonObject(members, 0) << "\n";
 }
 
 void WriteHistory(const FitProblem& problem, const FitResult& result, std::ostream& out) {

@@ -67,15 +67,54 @@ std::string JsonString(const std::string& text) {
 
 std::string JsonBool(bool value) { return value ? "true" : "false"; }
 
-std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth) {
-  if (members.empty()) return "{}";
-  const std::string inner(2 * (depth + 1), ' ');
-  std::string text = "{\n";
-  for (size_t k = 0; k < members.size(); ++k) {
-    text += inner + JsonString(members[k].first) + ": " + members[k].second;
-    text += k + 1 < members.size() ? ",\n" : "\n";
+namespace {
+
+// `items` between `open` and `close`: on one line, or one a line indented for `depth` (< 0: one
+// line).
+std::string Joined(const std::vector<std::string>& items, const char* open, const char* close,
+                   int depth) {
+  if (items.empty()) return std::string(open) + close;
+  if (depth < 0) {
+    std::string text = open;
+    for (size_t k = 0; k < items.size(); ++k) text += (k ? ", " : "") + items[k];
+    return text + close;
   }
-  return text + std::string(2 * depth, ' ') + "}";
+  const std::string inner(2 * (depth + 1), ' ');
+  std::string text = std::string(open) + "\n";
+  for (size_t k = 0; k < items.size(); ++k) {
+    text += inner + items[k] + (k + 1 < items.size() ? ",\n" : "\n");
+  }
+  return text + std::string(2 * depth, ' ') + close;
+}
+
+std::vector<std::string> Members(const std::vector<std::pair<std::string, std::string>>& members) {
+  std::vector<std::string> items;
+  items.reserve(members.size());
+  for (const auto& [key, value] : members) items.push_back(JsonString(key) + ": " + value);
+  return items;
+}
+
+}  // namespace
+
+std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth) {
+  return Joined(Members(members), "{", "}", depth);
+}
+
+std::string JsonInlineObject(const std::vector<std::pair<std::string, std::string>>& members) {
+  return Joined(Members(members), "{", "}", -1);
+}
+
+std::string JsonList(const std::vector<std::string>& items) { return Joined(items, "[", "]", -1); }
+
+std::string JsonListLines(const std::vector<std::string>& items, int depth) {
+  return Joined(items, "[", "]", depth);
+}
+
+std::vector<std::string> JsonStrings(const std::vector<std::string>& values) {
+  std::vector<std::string> items;
+  items.reserve(values.size());
+  for (const std::string& value : values) items.push_back(JsonString(value));
+  return items;
 }
 
 }  // namespace drape

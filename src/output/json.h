@@ -1,6 +1,7 @@
 // Numbers and strings as written into result files: the one number format and the one JSON
-// string writer of every output (summary.json, nodes.csv, mesh.vtk, scene.yaml, fit.json, the
-// comparison and sweep tables, ...) and of the values substituted into scenes by `--set`.
+// writer (strings, objects, lists) of every output (summary.json, nodes.csv, mesh.vtk, scene.yaml,
+// fit.json, the comparison and sweep tables, ...) and of the values substituted into scenes by
+// `--set`.
 #ifndef DRAPE_SRC_OUTPUT_JSON_H_
 #define DRAPE_SRC_OUTPUT_JSON_H_
 
@@ -31,6 +32,19 @@ std::string JsonBool(bool value);
 // A JSON object of `"key": value` members (each value JSON text already), one per line with the
 // indentation of `depth` (0: the file's top level).
 std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth);
+
+// The same object on one line: {"seed": 1, "placement_m": 0.002}; {} when empty.
+std::string JsonInlineObject(const std::vector<std::pair<std::string, std::string>>& members);
+
+// A JSON list of `items` (each JSON text already) on one line: [1, "a", null]; [] when empty.
+std::string JsonList(const std::vector<std::string>& items);
+
+// A JSON list one item a line, with the indentation of `depth` (as JsonObject): for lists of
+// objects. [] when empty.
+std::string JsonListLines(const std::vector<std::string>& items, int depth);
+
+// `values` as JSON strings (JsonString), each: for JsonList and JsonObject.
+std::vector<std::string> JsonStrings(const std::vector<std::string>& values);
 
 }  // namespace drape
 

@@ -1,4 +1,4 @@
-// The gnuplot scripts of the reports (tools/compare_*.gp, tools/sweep_*.gp), embedded in the binary
+// The gnuplot scripts of `drape compare`'s report (tools/compare_*.gp), embedded in the binary
 // when it is built (CMakeLists.txt generates plot_scripts.cc from src/output/plot_scripts.cc.in),
 // so that an installed or copied drape draws its plots without a file lookup.
 #ifndef DRAPE_SRC_OUTPUT_PLOT_SCRIPTS_H_

@@ -9,14 +9,10 @@
 namespace drape {
 
 std::vector<std::pair<std::string, std::string>> ProvenanceMembers(const Provenance& provenance) {
-  std::string overrides = "[";
-  for (size_t k = 0; k < provenance.overrides.size(); ++k) {
-    overrides += (k ? ", " : "") + JsonString(provenance.overrides[k]);
-  }
   return {{"drape_version", JsonString(DrapeVersion())},
           {"blas_kernels", JsonString(BlasKernelsText())},
           {"command_line", JsonString(provenance.command_line)},
-          {"overrides", overrides + "]"}};
+          {"overrides", JsonList(JsonStrings(provenance.overrides))}};
 }
 
 std::string ProvenanceLine(const Provenance& provenance) {

@@ -6,7 +6,25 @@ namespace drape {
 
 namespace {
 
-// Text for Markdown (`|` escaped) or HTML (HtmlText, and Markdown's `code` spans turned into
+// HTML of text outside code spans: escaped (HtmlText), its Markdown links [text](target) as <a>.
+std::string HtmlWithLinks(const std::string& text) {
+  std::string html;
+  size_t start = 0;
+  for (size_t open = text.find('['); open != std::string::npos; open = text.find('[', open + 1)) {
+    const size_t middle = text.find(']', open);
+    if (middle == std::string::npos || text.compare(middle, 2, "](") != 0) continue;
+    const size_t close = text.find(')', middle);
+    if (close == std::string::npos) break;
+    html += HtmlText(text.substr(start, open - start)) + "<a href=\"" +
+            HtmlText(text.substr(middle + 2, close - middle - 2)) + "\">" +
+            HtmlText(text.substr(open + 1, middle - open - 1)) + "</a>";
+    start = close + 1;
+    open = close;
+  }
+  return html + HtmlText(text.substr(start));
+}
+
+// Text for Markdown (`|` escaped) or HTML (HtmlWithLinks, and Markdown's `code` spans turned into
 // <code> elements, so no backtick shows).
 std::string Escaped(const std::string& text, bool html) {
   if (!html) {
@@ -18,11 +36,12 @@ std::string Escaped(const std::string& text, bool html) {
   bool code = false;
   size_t start = 0;
   for (size_t tick = text.find('`'); tick != std::string::npos; tick = text.find('`', start)) {
-    escaped += HtmlText(text.substr(start, tick - start)) + (code ? "</code>" : "<code>");
+    const std::string part = text.substr(start, tick - start);
+    escaped += (code ? HtmlText(part) : HtmlWithLinks(part)) + (code ? "</code>" : "<code>");
     code = !code;
     start = tick + 1;
   }
-  escaped += HtmlText(text.substr(start));
+  escaped += code ? HtmlText(text.substr(start)) : HtmlWithLinks(text.substr(start));
   return code ? escaped + "</code>" : escaped;
 }
 
@@ -50,16 +69,27 @@ void WriteMarkdownTable(const std::vector<std::vector<std::string>>& rows, std::
   out << '\n';
 }
 
-void WriteHtmlTable(const std::vector<std::vector<std::string>>& rows, std::ostream& out) {
+void WriteHtmlTable(const ReportBlock& table, std::ostream& out) {
+  const auto& rows = table.rows;
   out << "<table>\n";
   for (size_t r = 0; r < rows.size(); ++r) {
     out << "<tr>";
-    for (const std::string& cell : rows[r]) {
-      out << (r == 0 ? "<th>" : "<td>") << Escaped(cell, true) << (r == 0 ? "</th>" : "</td>");
+    for (size_t k = 0; k < rows[r].size(); ++k) {
+      out << (r == 0 ? "<th>" : "<td>");
+      if (r > 0 && k == 0 && r - 1 < table.row_colours.size()) {
+        out << "<span style=\"color:" << HtmlText(table.row_colours[r - 1]) << "\">&#9632;</span> ";
+      }
+      out << Escaped(rows[r][k], true) << (r == 0 ? "</th>" : "</td>");
     }
     out << "</tr>\n";
   }
   out << "</table>\n";
+}
+
+// A chart as a figure: its SVG inline, its caption below (HTML, which Markdown lets through).
+std::string ChartFigure(const ReportBlock& chart) {
+  return "<figure>" + chart.svg + "<figcaption>" + Escaped(chart.text, true) +
+         "</figcaption></figure>";
 }
 
 ReportBlock Block(ReportBlock::Kind kind, const std::string& text) {
@@ -85,6 +115,17 @@ ReportBlock ImageBlock(const std::string& path, const std::string& caption) {
   block.image = path;
   return block;
 }
+ReportBlock ChartBlock(const std::string& svg, const std::string& caption) {
+  ReportBlock block = Block(ReportBlock::Kind::kChart, caption);
+  block.svg = svg;
+  return block;
+}
+std::string ReportLink(const std::string& text, const std::string& target) {
+  return "[" + text + "](" + target + ")";
+}
+ReportBlock PreformattedBlock(const std::string& text) {
+  return Block(ReportBlock::Kind::kPreformatted, text);
+}
 
 void WriteMarkdownReport(const std::vector<ReportBlock>& blocks, std::ostream& out) {
   bool first_heading = true;
@@ -99,6 +140,14 @@ void WriteMarkdownReport(const std::vector<ReportBlock>& blocks, std::ostream& o
         break;
       case ReportBlock::Kind::kImage:
         out << "![" << block.text << "](" << block.image << ")\n\n";
+        break;
+      case ReportBlock::Kind::kChart:
+        out << ChartFigure(block) << "\n\n";
+        break;
+      case ReportBlock::Kind::kPreformatted:
+        out << "```\n"
+            << block.text << (block.text.empty() || block.text.back() != '\n' ? "\n" : "")
+            << "```\n\n";
         break;
       case ReportBlock::Kind::kTable:
         WriteMarkdownTable(block.rows, out);
@@ -120,7 +169,7 @@ void WriteHtmlReport(const std::vector<ReportBlock>& blocks, const std::filesyst
       << "</title><style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
          "table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #bbb;padding:2px "
          "6px}td{text-align:right}td:first-child,td:last-child{text-align:left}img{max-width:100%"
-         "}</style></head><body>\n";
+         "}figure{display:inline-block;margin:0.5em;vertical-align:top}</style></head><body>\n";
   bool first_heading = true;
   for (const ReportBlock& block : blocks) {
     switch (block.kind) {
@@ -136,8 +185,14 @@ void WriteHtmlReport(const std::vector<ReportBlock>& blocks, const std::filesyst
         out << "<figure>" << HtmlPngImage(folder / block.image, Plain(block.text)) << "<figcaption>"
             << Escaped(block.text, true) << "</figcaption></figure>\n";
         break;
+      case ReportBlock::Kind::kChart:
+        out << ChartFigure(block) << "\n";
+        break;
+      case ReportBlock::Kind::kPreformatted:
+        out << "<pre>" << HtmlText(block.text) << "</pre>\n";
+        break;
       case ReportBlock::Kind::kTable:
-        WriteHtmlTable(block.rows, out);
+        WriteHtmlTable(block, out);
         break;
     }
   }

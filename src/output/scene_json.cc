@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "src/output/json.h"
 #include "src/output/scene_yaml.h"
@@ -39,17 +40,16 @@ std::string JsonScalar(const YAML::Node& node) {
 
 std::string YamlAsJson(const YAML::Node& node) {
   if (node.IsMap()) {
-    std::string text = "{";
+    std::vector<std::pair<std::string, std::string>> members;
     for (const auto& entry : node) {
-      text += (text.size() > 1 ? ", " : "") + JsonString(entry.first.Scalar()) + ": " +
-              YamlAsJson(entry.second);
+      members.emplace_back(entry.first.Scalar(), YamlAsJson(entry.second));
     }
-    return text + "}";
+    return JsonInlineObject(members);
   }
   if (!node.IsSequence()) return JsonScalar(node);
-  std::string text = "[";
-  for (const auto& item : node) text += (text.size() > 1 ? ", " : "") + YamlAsJson(item);
-  return text + "]";
+  std::vector<std::string> items;
+  for (const auto& item : node) items.push_back(YamlAsJson(item));
+  return JsonList(items);
 }
 
 namespace {
@@ -66,32 +66,27 @@ std::string AsciiUnit(std::string unit) {
   return unit;
 }
 
-void Write(const YAML::Node& node, const std::string& path, const std::string& indent,
-           std::ostream& out) {
+// The scene's node at `path` as JSON at `depth`: maps and lists one member a line, each leaf
+// {"value": ..., "unit": ...}.
+std::string SceneNodeJson(const YAML::Node& node, const std::string& path, int depth) {
   if (IsLeaf(node)) {
-    out << "{\"value\": " << YamlAsJson(node)
-        << ", \"unit\": " << JsonString(AsciiUnit(SchemaUnit(path))) << "}";
-    return;
+    return JsonInlineObject(
+        {{"value", YamlAsJson(node)}, {"unit", JsonString(AsciiUnit(SchemaUnit(path)))}});
   }
-  const std::string inner = indent + "  ";
   if (node.IsSequence()) {
-    out << "[";
+    std::vector<std::string> items;
     for (size_t k = 0; k < node.size(); ++k) {
-      out << (k == 0 ? "\n" : ",\n") << inner;
-      Write(node[k], path + "[" + std::to_string(k) + "]", inner, out);
+      items.push_back(SceneNodeJson(node[k], path + "[" + std::to_string(k) + "]", depth + 1));
     }
-    out << (node.size() == 0 ? "" : "\n" + indent) << "]";
-    return;
+    return JsonListLines(items, depth);
   }
-  out << "{";
-  bool first = true;
+  std::vector<std::pair<std::string, std::string>> members;
   for (const auto& entry : node) {
     const std::string key = entry.first.as<std::string>();
-    out << (first ? "\n" : ",\n") << inner << JsonString(key) << ": ";
-    Write(entry.second, path.empty() ? key : path + "." + key, inner, out);
-    first = false;
+    members.emplace_back(
+        key, SceneNodeJson(entry.second, path.empty() ? key : path + "." + key, depth + 1));
   }
-  out << (first ? "" : "\n" + indent) << "}";
+  return JsonObject(members, depth);
 }
 
 }  // namespace
@@ -99,10 +94,7 @@ void Write(const YAML::Node& node, const std::string& path, const std::string& i
 std::string SceneJson(const Scene& scene) {
   std::ostringstream yaml;
   WriteSceneYaml(scene, yaml);
-  std::ostringstream json;
-  Write(YAML::Load(yaml.str()), "", "", json);
-  json << "\n";
-  return json.str();
+  return SceneNodeJson(YAML::Load(yaml.str()), "", 0) + "\n";
 }
 
 }  // namespace drape

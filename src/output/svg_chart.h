@@ -1,12 +1,14 @@
-// Charts drawn as inline SVG text: the pictures of the reports that stand alone without any
-// program beside drape (the drops report, the fabrics report). Pixel coordinates, the title first
-// (what a screen reader and a tooltip say), numbers with one decimal.
+// Charts drawn as inline SVG text: the one chart path of the HTML reports (the drops report, the
+// fabrics report, sweep.html), which stand alone without any program beside drape. Pixel
+// coordinates, the title first (what a screen reader and a tooltip say), numbers with one decimal.
 #ifndef DRAPE_SRC_OUTPUT_SVG_CHART_H_
 #define DRAPE_SRC_OUTPUT_SVG_CHART_H_
 
 #include <array>
+#include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace drape {
@@ -51,6 +53,38 @@ std::string TickText(double value);
 void DrawChartAxes(SvgPicture* svg, const ChartAxes& axes, const std::string& x_label,
                    const std::string& y_label, const std::vector<double>& x_ticks,
                    const std::vector<double>& y_ticks);
+
+// A tick: where on its axis (data units) and its label.
+using LabelledTicks = std::vector<std::pair<double, std::string>>;
+
+// The same with labelled ticks (a log axis's decades, a grid's values).
+void DrawChartAxes(SvgPicture* svg, const ChartAxes& axes, const std::string& x_label,
+                   const std::string& y_label, const LabelledTicks& x_ticks,
+                   const LabelledTicks& y_ticks);
+
+// A point of a scatter chart, with a ± bar on y (0: none).
+struct ScatterPoint {
+  double x = 0.0, y = 0.0, error = 0.0;
+};
+
+// The points in one colour against their axes (x logarithmic when `log_x`, every x then > 0),
+// which span the points and their bars, the y axis within [y_min, y_max] (a drape coefficient's
+// 0 to 1: bars beyond it are cut at it); `title` first.
+std::string ScatterChart(const std::string& title, const std::string& x_label,
+                         const std::string& y_label, const std::vector<ScatterPoint>& points,
+                         bool log_x, double y_min = -INFINITY, double y_max = INFINITY);
+
+// A cell of a heat map: its column and row (from 0) and its value.
+struct HeatCell {
+  int column = 0, row = 0;
+  double value = 0.0;
+};
+
+// The cells coloured from blue (the lowest value) to red (the highest), each labelled with its
+// value (3 digits); the columns and rows labelled; cells not given left blank.
+std::string HeatMapChart(const std::string& title, const std::string& x_label,
+                         const std::vector<std::string>& columns, const std::string& y_label,
+                         const std::vector<std::string>& rows, const std::vector<HeatCell>& cells);
 
 }  // namespace drape
 

@@ -53,9 +53,9 @@ double NodeForce(const RunResult& result, int k) {
 }
 
 std::string JsonArray(const std::vector<double>& values) {
-  std::string text = "[";
-  for (size_t k = 0; k < values.size(); ++k) text += (k ? ", " : "") + JsonNumber(values[k]);
-  return text + "]";
+  std::vector<std::string> items;
+  for (double value : values) items.push_back(JsonNumber(value));
+  return JsonList(items);
 }
 
 // For a scene with a drape coefficient (HasDrapeCoefficient): `drape_coefficient` (Cusick's, with
@@ -83,9 +83,7 @@ void AddDrapeMembers(const DrapeAnalysis& analysis,
                                    1));
 }
 
-std::string JsonVector(const Eigen::Vector3d& v) {
-  return "[" + JsonNumber(v.x()) + ", " + JsonNumber(v.y()) + ", " + JsonNumber(v.z()) + "]";
-}
+std::string JsonVector(const Eigen::Vector3d& v) { return JsonArray({v.x(), v.y(), v.z()}); }
 
 // How deep the fabric sits in the obstacles' clearance layer (the contact penalty's accuracy), and
 // the force the obstacles exert on it, in total and per obstacle (in the scene's order), N.
@@ -119,9 +117,8 @@ void AddContactMembers(const Scene& scene, const RunResult& result,
 // quantity: value, error_estimate, observed_order, or available: false with the reason).
 void AddLevelsMembers(const LevelsReport& report,
                       std::vector<std::pair<std::string, std::string>>* members) {
-  std::string levels = "[";
-  for (size_t k = 0; k < report.levels.size(); ++k) {
-    const LevelRecord& level = report.levels[k];
+  std::vector<std::string> levels;
+  for (const LevelRecord& level : report.levels) {
     std::vector<std::pair<std::string, std::string>> fields = {
         {"spacing_m", JsonNumber(level.spacing)},
         {"nodes", std::to_string(level.nodes)},
@@ -136,9 +133,9 @@ void AddLevelsMembers(const LevelsReport& report,
         {"edges_through_disk", std::to_string(level.edges_through_disk)},
         {"started_flat", JsonBool(level.started_flat)},
         {"restarted_flat", JsonBool(level.restarted_flat)}};
-    levels += (k ? ", " : "") + JsonObject(fields, 2);
+    levels.push_back(JsonObject(fields, 2));
   }
-  members->emplace_back("levels", levels + "]");
+  members->emplace_back("levels", JsonList(levels));
   std::vector<std::pair<std::string, std::string>> extrapolation;
   for (const Extrapolation& e : report.extrapolations) {
     std::vector<std::pair<std::string, std::string>> fields = {
@@ -154,10 +151,8 @@ void AddLevelsMembers(const LevelsReport& report,
   }
   members->emplace_back("extrapolation", JsonObject(extrapolation, 1));
   if (const auto& bar = report.drape_error) {
-    std::string folds = "[";
-    for (size_t k = 0; k < bar->folds.size(); ++k) {
-      folds += (k ? ", " : "") + std::to_string(bar->folds[k]);
-    }
+    std::vector<std::string> folds;
+    for (int count : bar->folds) folds.push_back(std::to_string(count));
     std::vector<std::pair<std::string, std::string>> fields = {
         {"estimate", JsonNumber(bar->error())},
         {"basis", JsonString(bar->basis())},
@@ -166,7 +161,7 @@ void AddLevelsMembers(const LevelsReport& report,
     if (bar->mesh_rule_error) {
       fields.emplace_back("mesh_rule_estimate", JsonNumber(*bar->mesh_rule_error));
     }
-    fields.emplace_back("folds_by_level", folds + "]");
+    fields.emplace_back("folds_by_level", JsonList(folds));
     fields.emplace_back("folds_differ", JsonBool(bar->folds_differ));
     members->emplace_back("drape_coefficient_error", JsonObject(fields, 1));
   }

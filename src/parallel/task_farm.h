@@ -4,7 +4,8 @@
 //
 // Contract:
 // - `run(task)` is called exactly once per task, on some worker; it returns the task's result as
-//   text (CSV rows, JSON, ...) and must not throw (a failed task is a result saying so).
+//   text (drape's commands: FarmRecords, src/parallel/farm_record.h) and must not throw (a failed
+//   task is a result saying so).
 // - `collect(task, result)` is called on the coordinator only, once per task, one call at a time,
 //   in the order the tasks finish.
 // - What a task computes must depend only on its number, never on which worker ran it or when:

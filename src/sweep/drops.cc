@@ -16,6 +16,7 @@
 #include "src/output/provenance.h"
 #include "src/output/result_folder.h"
 #include "src/output/writers.h"
+#include "src/parallel/farm_record.h"
 #include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
@@ -97,19 +98,19 @@ AngularWave DrawWave(const DrapeTestSpec& test, int drop) {
   return wave;
 }
 
-// A farm task's result: the drops.csv row, then a line with the outline (centre, radii).
+// A farm task's result: a FarmRecord with the drops.csv row and the outline (centre, radii) as
+// its numbers.
 std::string TaskResult(const DropRecord& record, const DropOutline& outline) {
-  std::string text = DropCsvRow(record) + "\n" + FormatNumber(outline.centre.x()) + " " +
-                     FormatNumber(outline.centre.y());
-  for (double r : outline.radius) text += " " + FormatNumber(r);
-  return text;
+  std::vector<double> numbers = {outline.centre.x(), outline.centre.y()};
+  numbers.insert(numbers.end(), outline.radius.begin(), outline.radius.end());
+  const std::string kind = record.state == "interrupted" ? "interrupted" : "solved";
+  return EncodeFarmRecords({{kind, record.drop, DropCsvRow(record), numbers}});
 }
 
-DropOutline ParseOutline(const std::string& line) {
-  std::istringstream in(line);
+DropOutline OutlineOf(const FarmRecord& record) {
   DropOutline outline;
-  in >> outline.centre.x() >> outline.centre.y();
-  for (double r; in >> r;) outline.radius.push_back(r);
+  outline.centre = Eigen::Vector2d(record.numbers[0], record.numbers[1]);
+  outline.radius.assign(record.numbers.begin() + 2, record.numbers.end());
   return outline;
 }
 
@@ -174,34 +175,33 @@ void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const Dr
                        std::ostream& out) {
   const DropStatistics& s = summary.statistics;
   const DrapeTestSpec& test = *scene.drape_test;
-  std::string histogram, modal;
+  std::vector<std::pair<std::string, std::string>> histogram;
   for (const auto& [folds, count] : s.folds_histogram) {
-    histogram += (histogram.empty() ? "" : ", ") + JsonString(std::to_string(folds)) + ": " +
-                 std::to_string(count);
+    histogram.emplace_back(std::to_string(folds), std::to_string(count));
   }
-  for (int folds : s.modal_folds) modal += (modal.empty() ? "" : ", ") + std::to_string(folds);
+  std::vector<std::string> modal;
+  for (int folds : s.modal_folds) modal.push_back(std::to_string(folds));
   const bool any = s.counted > 0;
-  out << "{\n  \"scene\": " << JsonString(scene.name) << ",\n  \"drops\": " << s.drops
-      << ",\n  \"drops_counted\": " << s.counted
-      << ",\n  \"perturbation\": {\"seed\": " << test.seed
-      << ", \"placement_m\": " << JsonNumber(test.placement)
-      << ", \"waviness_m\": " << JsonNumber(test.waviness) << "}"
-      << ",\n  \"drape_coefficient_mean\": " << (any ? JsonNumber(s.mean) : "null")
-      << ",\n  \"drape_coefficient_standard_deviation\": "
-      << (any ? JsonNumber(s.standard_deviation) : "null") << ",\n  \"folds_histogram\": {"
-      << histogram << "}"
-      << ",\n  \"most_frequent_folds\": [" << modal << "]"
-      << ",\n  \"most_frequent_folds_drops\": " << s.modal_drops
-      << ",\n  \"most_frequent_folds_drape_coefficient_mean\": "
-      << (any ? JsonNumber(s.modal_mean) : "null");
   const auto advice = any ? SpecimenSizeAdvice(test.specimen_diameter, s.mean) : std::nullopt;
-  out << ",\n  \"specimen_size_advice\": " << (advice ? JsonString(*advice) : "null");
-  if (summary.mesh_advice) out << ",\n  \"mesh_rule\": " << MeshRuleJson(*summary.mesh_advice);
-  for (const auto& [key, value] :
-       ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
-    out << ",\n  " << JsonString(key) << ": " << value;
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"scene", JsonString(scene.name)},
+      {"drops", std::to_string(s.drops)},
+      {"drops_counted", std::to_string(s.counted)},
+      {"perturbation", JsonInlineObject({{"seed", std::to_string(test.seed)},
+                                         {"placement_m", JsonNumber(test.placement)},
+                                         {"waviness_m", JsonNumber(test.waviness)}})},
+      {"drape_coefficient_mean", any ? JsonNumber(s.mean) : "null"},
+      {"drape_coefficient_standard_deviation", any ? JsonNumber(s.standard_deviation) : "null"},
+      {"folds_histogram", JsonInlineObject(histogram)},
+      {"most_frequent_folds", JsonList(modal)},
+      {"most_frequent_folds_drops", std::to_string(s.modal_drops)},
+      {"most_frequent_folds_drape_coefficient_mean", any ? JsonNumber(s.modal_mean) : "null"},
+      {"specimen_size_advice", advice ? JsonString(*advice) : "null"}};
+  if (summary.mesh_advice) members.emplace_back("mesh_rule", MeshRuleJson(*summary.mesh_advice));
+  for (auto& member : ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
+    members.push_back(std::move(member));
   }
-  out << "\n}\n";
+  out << JsonObject(members, 0) << "\n";
 }
 
 }  // namespace
@@ -321,9 +321,9 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   const TaskFarmSummary farm = RunTaskFarm(
       tasks, [&](int task) { return RunDrop(scene, options, task + 1); },
       [&](int task, const std::string& result) {
-        const size_t end = result.find('\n');
-        rows[task] = result.substr(0, end);
-        outlines[task] = ParseOutline(result.substr(end + 1));
+        const FarmRecord record_of_task = DecodeFarmRecords(result).at(0);
+        rows[task] = record_of_task.row;
+        outlines[task] = OutlineOf(record_of_task);
         records[task] = ParseDropCsvRow(rows[task]);
         const DropRecord& record = records[task];
         char text[96];

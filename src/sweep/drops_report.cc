@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "src/output/axis_ticks.h"
-#include "src/output/html_text.h"
 #include "src/output/json.h"
 #include "src/output/provenance.h"
+#include "src/output/report_page.h"
 #include "src/output/svg_chart.h"
 #include "src/output/writers.h"
 #include "src/scene/drape_tester.h"
@@ -173,32 +173,30 @@ std::string ProfilesFigure(const Scene& scene, const DropsSummary& summary) {
   return svg.Close();
 }
 
-void WriteDropsTable(const DropsSummary& summary, std::ostream& html) {
-  html << "<table>\n<tr><th>drop</th><th>disc centre (mm)</th><th>drape coefficient</th>"
-          "<th>folds</th><th>energy (J)</th><th>counted</th><th>state</th><th>files</th></tr>\n";
+ReportBlock DropsTable(const DropsSummary& summary) {
+  ReportBlock table = TableBlock({{"drop", "disc centre (mm)", "drape coefficient", "folds",
+                                   "energy (J)", "counted", "state", "files"}});
   for (size_t k = 0; k < summary.drops.size(); ++k) {
     const DropRecord& d = summary.drops[k];
     const std::string folder = DropFolderName(d.drop, static_cast<int>(summary.drops.size()));
-    html << "<tr><td><span style=\"color:" << SeriesColour(static_cast<int>(k))
-         << "\">&#9632;</span> " << d.drop << "</td><td>(" << FixedText(1e3 * d.offset.x(), 2)
-         << ", " << FixedText(1e3 * d.offset.y(), 2) << ")</td><td>"
-         << FixedText(d.drape_coefficient, 3) << "</td><td>" << d.folds << "</td><td>"
-         << RoundedNumber(d.energy, 6) << "</td><td>" << (d.counted ? "yes" : "no") << "</td><td>"
-         << HtmlText(d.state) << "</td><td><a href=\"" << folder << "/\">" << folder
-         << "</a></td></tr>\n";
+    table.rows.push_back(
+        {std::to_string(d.drop),
+         "(" + FixedText(1e3 * d.offset.x(), 2) + ", " + FixedText(1e3 * d.offset.y(), 2) + ")",
+         FixedText(d.drape_coefficient, 3), std::to_string(d.folds), RoundedNumber(d.energy, 6),
+         d.counted ? "yes" : "no", d.state, ReportLink(folder, folder + "/")});
+    table.row_colours.push_back(SeriesColour(static_cast<int>(k)));
   }
-  html << "</table>\n";
+  return table;
 }
 
-void WriteFabric(const Scene& scene, std::ostream& html) {
-  html << "<h2>The test and the fabric</h2>\n<pre>" << HtmlText(DrapeTestText(scene))
-       << "</pre>\n<table>\n<tr><th>material." << HtmlText(MaterialModelName(scene.material.model))
-       << "</th><th>SI</th></tr>\n";
+ReportBlock MaterialTable(const Scene& scene) {
+  ReportBlock table =
+      TableBlock({{"material." + std::string(MaterialModelName(scene.material.model)), "SI"}});
   for (const MaterialValue& value : MaterialSiValues(scene.material)) {
-    html << "<tr><td>" << HtmlText(value.key) << "</td><td>" << RoundedNumber(value.value, 6)
-         << (value.unit == "1" ? "" : " " + HtmlText(value.unit)) << "</td></tr>\n";
+    table.rows.push_back(
+        {value.key, RoundedNumber(value.value, 6) + (value.unit == "1" ? "" : " " + value.unit)});
   }
-  html << "</table>\n";
+  return table;
 }
 
 }  // namespace
@@ -219,33 +217,29 @@ std::optional<std::string> SpecimenSizeAdvice(double specimen_diameter, double d
 void WriteDropsReport(const Scene& scene, const DropsSummary& summary, const Provenance& provenance,
                       std::ostream& html) {
   const DropStatistics& s = summary.statistics;
-  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>drape: "
-       << HtmlText(scene.name) << ", " << s.drops << " drops</title>\n<style>"
-       << "body{font-family:sans-serif;max-width:80em;margin:1em auto}"
-       << "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 6px}"
-       << "figure{display:inline-block;margin:0.5em}</style></head><body>\n"
-       << "<h1>Drape test: " << HtmlText(scene.name) << "</h1>\n<p><b>"
-       << HtmlText(DropsLine(s, summary.mesh_advice)) << "</b></p>\n";
+  std::vector<ReportBlock> blocks = {HeadingBlock("Drape test: " + scene.name),
+                                     TextBlock(DropsLine(s, summary.mesh_advice))};
   if (s.counted > 0) {
     if (const auto advice = SpecimenSizeAdvice(scene.drape_test->specimen_diameter, s.mean)) {
-      html << "<p>Specimen size: " << HtmlText(*advice) << ".</p>\n";
+      blocks.push_back(TextBlock("Specimen size: " + *advice + "."));
     }
   }
-  html << "<figure>" << OutlinesFigure(scene, summary)
-       << "<figcaption>Shadows from above (dashed: not counted)</figcaption></figure>\n";
+  blocks.push_back(
+      ChartBlock(OutlinesFigure(scene, summary), "Shadows from above (dashed: not counted)"));
   if (s.counted > 0) {
-    html << "<figure>" << DrapeCoefficientHistogram(summary)
-         << "<figcaption>Drape coefficient</figcaption></figure>\n<figure>"
-         << FoldsHistogram(summary) << "<figcaption>Fold count</figcaption></figure>\n";
+    blocks.push_back(ChartBlock(DrapeCoefficientHistogram(summary), "Drape coefficient"));
+    blocks.push_back(ChartBlock(FoldsHistogram(summary), "Fold count"));
   }
-  html << "<figure>" << ProfilesFigure(scene, summary)
-       << "<figcaption>Radial profiles of the shadows</figcaption></figure>\n"
-       << "<h2>The drops</h2>\n";
-  WriteDropsTable(summary, html);
-  WriteFabric(scene, html);
-  html << "<p>" << HtmlText(ProvenanceLine(provenance))
-       << ". drops.csv and summary.json hold these "
-       << "figures; each drop's folder holds its solve.</p>\n</body></html>\n";
+  blocks.push_back(ChartBlock(ProfilesFigure(scene, summary), "Radial profiles of the shadows"));
+  blocks.push_back(HeadingBlock("The drops"));
+  blocks.push_back(DropsTable(summary));
+  blocks.push_back(HeadingBlock("The test and the fabric"));
+  blocks.push_back(PreformattedBlock(DrapeTestText(scene)));
+  blocks.push_back(MaterialTable(scene));
+  blocks.push_back(TextBlock(ProvenanceLine(provenance) +
+                             ". drops.csv and summary.json hold these figures; each drop's folder "
+                             "holds its solve."));
+  WriteHtmlReport(blocks, "", html);
 }
 
 }  // namespace drape

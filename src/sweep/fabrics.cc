@@ -17,6 +17,7 @@
 #include "src/output/result_folder.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/parallel/farm_record.h"
 #include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
@@ -232,19 +233,21 @@ FabricTaskRecord RunFabricTask(const FabricsContext& context, int task) {
   return failed;
 }
 
-// A farm task's result: "solved|skipped|interrupted RECORD".
+// A farm task's result: a FarmRecord, solved, skipped or interrupted, with the task's record.
 std::string RunFarmTask(const FabricsContext& context, int task) {
-  if (const auto record = FinishedFabricRecord(context, task))
-    return "skipped " + RecordText(*record);
+  auto result = [task](const std::string& kind, const FabricTaskRecord& record) {
+    return EncodeFarmRecords({{kind, task, RecordText(record), {}}});
+  };
+  if (const auto record = FinishedFabricRecord(context, task)) return result("skipped", *record);
   if (InterruptRequested()) {
     FabricTaskRecord record;
     record.fabric = FabricOf(context.spec, task);
     record.drop = DropOf(context.spec, task);
     record.state = "not run (interrupted)";
-    return "interrupted " + RecordText(record);
+    return result("interrupted", record);
   }
   const FabricTaskRecord record = RunFabricTask(context, task);
-  return (record.state == "interrupted" ? "interrupted " : "solved ") + RecordText(record);
+  return result(record.state == "interrupted" ? "interrupted" : "solved", record);
 }
 
 // ---- the outputs --------------------------------------------------------------------------------
@@ -424,9 +427,9 @@ class FabricsCollector {
         waiting_(spec.fabrics.size(), spec.drops) {}
 
   void Collect(const std::string& result, FabricsSummary* summary) {
-    const size_t space = result.find(' ');
-    const std::string kind = result.substr(0, space);
-    const auto record = ParseRecord(result.substr(space + 1));
+    const FarmRecord farmed = DecodeFarmRecords(result).at(0);
+    const std::string& kind = farmed.kind;
+    const auto record = ParseRecord(farmed.row);
     if (!record) return;
     if (kind == "interrupted") {
       summary->interrupted = true;

@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "src/output/axis_ticks.h"
-#include "src/output/html_text.h"
 #include "src/output/json.h"
+#include "src/output/report_page.h"
 #include "src/output/svg_chart.h"
 #include "src/sweep/drops.h"
 
@@ -38,39 +38,41 @@ std::string PlusMinus(const std::optional<double>& value, double bar) {
   return FixedText(*value, 3) + (bar > 0.0 ? " ± " + FixedText(bar, 3) : "");
 }
 
-void WriteTable(const FabricsSpec& spec, const std::vector<FabricPrediction>& predictions,
-                std::ostream& html) {
-  html << "<table>\n<tr><th>fabric</th><th>measured DC</th><th>predicted DC</th><th>Δ</th>"
-          "<th>folds</th><th>drops counted</th><th>state</th><th>files</th></tr>\n";
+ReportBlock FabricsTable(const FabricsSpec& spec,
+                         const std::vector<FabricPrediction>& predictions) {
+  ReportBlock table = TableBlock(
+      {{"fabric", "measured DC", "predicted DC", "Δ", "folds", "drops counted", "state", "files"}});
   for (size_t f = 0; f < spec.fabrics.size(); ++f) {
     const FabricCase& fabric = spec.fabrics[f];
     const FabricPrediction& p = predictions[f];
     const bool compared = fabric.row.measured_dc && p.drape_coefficient;
     const double delta = compared ? *p.drape_coefficient - *fabric.row.measured_dc : 0.0;
-    html << "<tr><td>" << HtmlText(fabric.row.name) << "</td><td>"
-         << PlusMinus(fabric.row.measured_dc, fabric.row.measured_dc_sd.value_or(0.0))
-         << "</td><td>" << PlusMinus(p.drape_coefficient, p.error)
-         << (p.standard_deviation ? " (SD " + FixedText(*p.standard_deviation, 3) + ")" : "")
-         << "</td><td>" << (compared ? (delta >= 0 ? "+" : "") + FixedText(delta, 3) : "")
-         << "</td><td>" << (p.drape_coefficient ? std::to_string(p.folds) : "") << "</td><td>"
-         << p.counted << " of " << p.tasks << "</td><td>" << HtmlText(p.state)
-         << "</td><td><a href=\"" << HtmlText(fabric.folder) << "/\">" << HtmlText(fabric.folder)
-         << "</a></td></tr>\n";
+    table.rows.push_back(
+        {fabric.row.name,
+         PlusMinus(fabric.row.measured_dc, fabric.row.measured_dc_sd.value_or(0.0)),
+         PlusMinus(p.drape_coefficient, p.error) +
+             (p.standard_deviation ? " (SD " + FixedText(*p.standard_deviation, 3) + ")" : ""),
+         compared ? (delta >= 0 ? "+" : "") + FixedText(delta, 3) : "",
+         p.drape_coefficient ? std::to_string(p.folds) : "",
+         std::to_string(p.counted) + " of " + std::to_string(p.tasks), p.state,
+         ReportLink(fabric.folder, fabric.folder + "/")});
   }
-  html << "</table>\n";
+  return table;
 }
 
-void WriteShadows(const FabricsSpec& spec, const fs::path& directory, std::ostream& html) {
-  html << "<h2>The shadows</h2>\n";
+// Each fabric's shadow (its first drop's), relative to the report's folder.
+std::vector<ReportBlock> Shadows(const FabricsSpec& spec) {
+  std::vector<ReportBlock> blocks = {HeadingBlock("The shadows")};
   for (const FabricCase& fabric : spec.fabrics) {
-    const fs::path folder = directory / fabric.folder;
+    const fs::path folder = fabric.folder;
     const fs::path png = spec.drops > 1 ? folder / DropFolderName(1, spec.drops) / "shadow.png"
                                         : folder / "shadow.png";
-    const std::string caption =
-        fabric.row.name + (spec.drops > 1 ? " (drop 1 of " + std::to_string(spec.drops) + ")" : "");
-    html << "<figure>" << HtmlPngImage(png, "the shadow of " + caption) << "<figcaption>"
-         << HtmlText(caption) << "</figcaption></figure>\n";
+    blocks.push_back(
+        ImageBlock(png.string(),
+                   "The shadow of " + fabric.row.name +
+                       (spec.drops > 1 ? " (drop 1 of " + std::to_string(spec.drops) + ")" : "")));
   }
+  return blocks;
 }
 
 }  // namespace
@@ -117,37 +119,33 @@ std::string MeasuredAgainstPredictedChart(const FabricsSpec& spec,
 void WriteFabricsReport(const FabricsSpec& spec, const std::vector<FabricPrediction>& predictions,
                         const FabricsSummary& summary, const Provenance& provenance,
                         std::ostream& html) {
-  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>drape fabrics: "
-       << HtmlText(spec.table.file) << "</title>\n<style>"
-       << "body{font-family:sans-serif;max-width:80em;margin:1em auto}"
-       << "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 6px}"
-       << "figure{display:inline-block;margin:0.5em}img{width:300px}</style></head><body>\n"
-       << "<h1>Fabrics: " << HtmlText(spec.table.file) << "</h1>\n<p><b>"
-       << HtmlText(FabricsLine(summary)) << "</b></p>\n<p>Each fabric solved on "
-       << HtmlText(spec.scene_label) << " with its row's material"
-       << (spec.drops > 1 ? ", " + std::to_string(spec.drops) +
-                                " drops each (the prediction is "
-                                "their mean)"
-                          : "")
-       << ". Δ = predicted − measured; a fabric is within its error bars when |Δ| ≤ the "
-          "prediction's error bar + the measured standard deviation.</p>\n"
-       << "<figure>" << MeasuredAgainstPredictedChart(spec, predictions)
-       << "<figcaption>Predicted against measured: the prediction's error bar vertical, the "
-          "measured SD horizontal, dashed y = x</figcaption></figure>\n<h2>The fabrics</h2>\n";
-  WriteTable(spec, predictions, html);
-  html
-      << "<h2>Which number to quote</h2>\n<p>A lab quotes the mean drape coefficient of several "
-         "specimens, and so should a prediction set beside it: one solve settles on one fold "
-         "pattern, and the drape coefficient moves with the fold count (a fabric that folds "
-         "into 11 lobes in one solve may fold into 7 or 8 in another). With <code>--drops N</code> "
-         "(or <code>drape_test.drops</code> in the base scene) each fabric's predicted DC is "
-         "the mean over N drops with its standard deviation; without, the single solve's, with "
-         "the error bar of its lattice alone.</p>\n";
-  WriteShadows(spec, fs::path(spec.directory), html);
-  html
-      << "<p>" << HtmlText(ProvenanceLine(provenance))
-      << ". fabrics.csv and fabrics.json hold these figures (units in fabrics.csv's headers); each "
-         "fabric's folder holds its solve.</p>\n</body></html>\n";
+  std::vector<ReportBlock> blocks = {
+      HeadingBlock("Fabrics: " + spec.table.file),
+      TextBlock(FabricsLine(summary)),
+      TextBlock("Each fabric solved on " + spec.scene_label + " with its row's material" +
+                (spec.drops > 1 ? ", " + std::to_string(spec.drops) +
+                                      " drops each (the prediction is their mean)"
+                                : "") +
+                ". Δ = predicted − measured; a fabric is within its error bars when |Δ| ≤ the "
+                "prediction's error bar + the measured standard deviation."),
+      ChartBlock(MeasuredAgainstPredictedChart(spec, predictions),
+                 "Predicted against measured: the prediction's error bar vertical, the measured "
+                 "SD horizontal, dashed y = x"),
+      HeadingBlock("The fabrics"),
+      FabricsTable(spec, predictions),
+      HeadingBlock("Which number to quote"),
+      TextBlock("A lab quotes the mean drape coefficient of several specimens, and so should a "
+                "prediction set beside it: one solve settles on one fold pattern, and the drape "
+                "coefficient moves with the fold count (a fabric that folds into 11 lobes in one "
+                "solve may fold into 7 or 8 in another). With `--drops N` (or "
+                "`drape_test.drops` in the base scene) each fabric's predicted DC is the mean "
+                "over N drops with its standard deviation; without, the single solve's, with the "
+                "error bar of its lattice alone.")};
+  for (ReportBlock& block : Shadows(spec)) blocks.push_back(std::move(block));
+  blocks.push_back(TextBlock(ProvenanceLine(provenance) +
+                             ". fabrics.csv and fabrics.json hold these figures (units in "
+                             "fabrics.csv's headers); each fabric's folder holds its solve."));
+  WriteHtmlReport(blocks, spec.directory, html);
 }
 
 }  // namespace drape

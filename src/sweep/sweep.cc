@@ -20,6 +20,7 @@
 #include "src/output/result_folder.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/parallel/farm_record.h"
 #include "src/parallel/process_group.h"
 #include "src/parallel/task_farm.h"
 #include "src/run/solve_report.h"
@@ -219,9 +220,9 @@ TaskOutcome RunTask(const Context& context, int task, const std::vector<double>*
 }
 
 // One farm task: a chain's tasks in order, up to `last` (-1: all), each skipped if finished. The
-// result: one line per task, "kind task row".
+// result: a FarmRecord per task (its kind, number and sweep.csv row).
 std::string RunChain(const Context& context, const std::vector<int>& chain, int last) {
-  std::string result;
+  std::vector<FarmRecord> result;
   std::vector<double> warm;  // the previous task's final positions
   int previous = -1;
   for (const int task : chain) {
@@ -238,12 +239,12 @@ std::string RunChain(const Context& context, const std::vector<int>& chain, int 
     } else {
       outcome = RunTask(context, task, previous >= 0 && !warm.empty() ? &warm : nullptr, previous);
     }
-    result += outcome.kind + " " + std::to_string(task) + " " + outcome.row + "\n";
+    result.push_back({outcome.kind, task, outcome.row, {}});
     warm = std::move(outcome.positions);
     previous = task;
     if (task == last) break;
   }
-  return result;
+  return EncodeFarmRecords(result);
 }
 
 // ---- the coordinator's table --------------------------------------------------------------------
@@ -267,18 +268,14 @@ class SweepTable {
   }
 
   void Collect(const std::string& result, SweepSummary* summary) {
-    std::istringstream lines(result);
-    std::string kind, line;
-    int task = 0;
-    while (lines >> kind >> task && std::getline(lines, line)) {
-      line.erase(0, 1);
-      if (kind == "skipped") ++summary->skipped;
-      if (kind == "interrupted") summary->interrupted = true;
-      if (kind == "interrupted" || kind == "skipped") continue;
-      rows_[task] = line;
-      if (kind == "solved") ++summary->solved;
+    for (const FarmRecord& record : DecodeFarmRecords(result)) {
+      if (record.kind == "skipped") ++summary->skipped;
+      if (record.kind == "interrupted") summary->interrupted = true;
+      if (record.kind == "interrupted" || record.kind == "skipped") continue;
+      rows_[record.task] = record.row;
+      if (record.kind == "solved") ++summary->solved;
       ++done_;
-      Progress(task, line);
+      Progress(record.task, record.row);
     }
     Write();
   }
@@ -338,14 +335,15 @@ std::vector<int> FarmTasks(const SweepSpec& spec, const SweepOptions& options) {
 // reads it as it is.
 void WriteSweepJson(const SweepSpec& spec, const SweepSummary& summary,
                     const Provenance& provenance, std::ostream& out) {
-  out << "{\n  \"sweep_file\": " << JsonString(spec.file)
-      << ",\n  \"scene_file\": " << JsonString(spec.scene_file)
-      << ",\n  \"design\": " << JsonString(spec.design) << ",\n  \"tasks\": " << spec.tasks.size()
-      << ",\n  \"rows\": " << summary.rows << ",\n  \"rows_converged\": " << summary.converged;
-  for (const auto& [key, value] : ProvenanceMembers(provenance)) {
-    out << ",\n  " << JsonString(key) << ": " << value;
-  }
-  out << "\n}\n";
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"sweep_file", JsonString(spec.file)},
+      {"scene_file", JsonString(spec.scene_file)},
+      {"design", JsonString(spec.design)},
+      {"tasks", std::to_string(spec.tasks.size())},
+      {"rows", std::to_string(summary.rows)},
+      {"rows_converged", std::to_string(summary.converged)}};
+  for (auto& member : ProvenanceMembers(provenance)) members.push_back(std::move(member));
+  out << JsonObject(members, 0) << "\n";
 }
 
 void CountRows(const SweepTable& table, SweepSummary* summary) {
@@ -512,7 +510,7 @@ SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::o
   const Provenance provenance{options.command_line, {}};
   WriteAtomically(fs::path(summary.directory) / "sweep.json",
                   [&](std::ostream& out) { WriteSweepJson(spec, summary, provenance, out); });
-  if (options.plots && !options.only) WriteSweepReport(spec, summary.directory, provenance, log);
+  if (options.plots && !options.only) WriteSweepReport(spec, summary.directory, provenance);
   return summary;
 }
 

@@ -24,7 +24,7 @@ struct SweepOptions {
   std::optional<int> only;   // run this task alone (with the earlier tasks of its warm-start chain
                              // that are not finished yet)
   int threads = 0;           // local worker threads without MPI (0: the machine's cores)
-  bool plots = true;         // sweep.html and its PNGs (gnuplot)
+  bool plots = true;         // sweep.html (its charts inline SVG)
   std::string command_line;  // the command as run (each task's summary.json)
 };
 
