@@ -3,6 +3,8 @@
 #ifndef DRAPE_TESTS_SOURCE_LINES_H_
 #define DRAPE_TESTS_SOURCE_LINES_H_
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -42,6 +44,16 @@ inline std::vector<std::string> SourceLinesMatching(const std::regex& pattern, i
     }
   }
   return found;
+}
+
+// Fails once for each line of the program that compares a value of the enum `qualified`
+// ("MaterialModel", "MeshSpec::Kind") with == or != instead of switching over it.
+inline void ExpectEveryDispatchIsASwitch(const std::string& qualified) {
+  const std::regex compared("[=!]=\\s*" + qualified + "::k|" + qualified + "::k\\w+\\s*[=!]=");
+  int files = 0;
+  const std::vector<std::string> found = SourceLinesMatching(compared, &files);
+  EXPECT_GT(files, 100);
+  for (const std::string& line : found) ADD_FAILURE() << "compared, not switched: " << line;
 }
 
 }  // namespace drape::testing

@@ -92,11 +92,9 @@ void AddContactMembers(const Scene& scene, const RunResult& result,
   if (scene.obstacles.empty()) return;
   const ContactReport& contact = result.contact;
   const Certificate& certificate = result.certificate;
-  std::string by_obstacle = "[";
-  for (size_t k = 0; k < certificate.contact_sum_by_obstacle.size(); ++k) {
-    by_obstacle += (k ? ", " : "") + JsonVector(certificate.contact_sum_by_obstacle[k]);
-  }
-  by_obstacle += "]";
+  std::vector<std::string> by_obstacle;
+  for (const auto& sum : certificate.contact_sum_by_obstacle)
+    by_obstacle.push_back(JsonVector(sum));
   members->emplace_back(
       "contact",
       JsonObject({{"thickness", JsonNumber(contact.thickness)},
@@ -109,7 +107,7 @@ void AddContactMembers(const Scene& scene, const RunResult& result,
                   {"edges_through_disk", std::to_string(contact.edges_through_disk)},
                   {"under_disk_inside_m", JsonNumber(contact.under_disk_inside)},
                   {"force_sum", JsonVector(certificate.contact_sum)},
-                  {"force_by_obstacle", by_obstacle}},
+                  {"force_by_obstacle", JsonList(by_obstacle)}},
                  1));
 }
 
