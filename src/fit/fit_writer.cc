@@ -93,16 +93,19 @@ void WriteJson(const FitProblem& problem, const FitResult& result, const Provena
   const int p = static_cast<int>(parameters.size());
   auto by_key = [&](const std::function<std::string(int)>& value) {
     std::vector<std::pair<std::string, std::string>> members;
+    members.reserve(p);
     for (int j = 0; j < p; ++j) members.emplace_back(parameters[j].key, value(j));
     return JsonInlineObject(members);
   };
   auto numbers = [](int n, const std::function<double(int)>& value) {
     std::vector<std::string> items;
+    items.reserve(n);
     for (int k = 0; k < n; ++k) items.push_back(Number(value(k)));
     return JsonList(items);
   };
   const std::vector<std::string> units = ParameterUnits(problem);
   std::vector<std::string> correlation;
+  correlation.reserve(p);
   for (int i = 0; i < p; ++i) {
     correlation.push_back(numbers(p, [&](int j) { return result.correlation(i, j); }));
   }

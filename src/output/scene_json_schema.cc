@@ -36,6 +36,7 @@ std::vector<std::string> Backticked(const std::string& text) {
 // A choice among words or numbers.
 Members Choice(const std::vector<std::string>& names) {
   std::vector<std::string> values;
+  values.reserve(names.size());
   for (const std::string& name : names) {
     values.push_back(WholeNumber(name) ? name : JsonString(name));
   }
@@ -93,6 +94,7 @@ Members ObjectOf(const Members& properties, const std::vector<std::string>& requ
 // One of several schemas.
 Members AnyOf(const std::vector<Members>& choices, int depth) {
   std::vector<std::string> texts;
+  texts.reserve(choices.size());
   for (const Members& choice : choices) texts.push_back(JsonObject(choice, depth + 1));
   return {{"anyOf", JsonList(texts)}};
 }

@@ -54,6 +54,7 @@ double NodeForce(const RunResult& result, int k) {
 
 std::string JsonArray(const std::vector<double>& values) {
   std::vector<std::string> items;
+  items.reserve(values.size());
   for (double value : values) items.push_back(JsonNumber(value));
   return JsonList(items);
 }
