@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "src/scene/fabric_parameters.h"
@@ -614,14 +615,35 @@ TEST_F(SceneLoaderTest, ADocumentReadOnceTakesValuesAndStaysAsItWasRead) {
   EXPECT_EQ(plain.material.where.line, 4);  // still located in the file
 }
 
+TEST_F(SceneLoaderTest, ADocumentLoadsOnSeveralThreadsAtOnce) {
+  // A sweep's tasks and a fit's equilibria load from one document on their threads.
+  const SceneDocument document = SceneDocument::Read(Write(kMinimal));
+  std::vector<double> densities(8);
+  std::vector<std::thread> threads;
+  for (size_t t = 0; t < densities.size(); ++t) {
+    threads.emplace_back([&, t] {
+      for (int k = 0; k < 50; ++k) {
+        const double density = 0.1 * static_cast<double>(t + 1);
+        densities[t] =
+            document.Load({}, {{"material.density", YAML::Node(density)}}).material.mass_value;
+      }
+    });
+  }
+  for (auto& thread : threads) thread.join();
+  for (size_t t = 0; t < densities.size(); ++t) {
+    EXPECT_EQ(densities[t], 0.1 * static_cast<double>(t + 1));
+  }
+  EXPECT_EQ(document.Load().material.mass_value, 0.2);
+}
+
 TEST_F(SceneLoaderTest, ADocumentsErrorsAreLocatedAsTheLoadersAre) {
-  // A value is located as the override after the text ones, at its key.
+  // A value is located as the override after the text ones, where "key=value" has its value.
   const SceneDocument document = SceneDocument::Read(Write(kMinimal));
   try {
     document.Load({"solver.tolerance=1e-6"}, {{"material.density", YAML::Node(-1.0)}});
     ADD_FAILURE() << "a negative density loaded";
   } catch (const InputError& error) {
-    EXPECT_TRUE(Contains(error.what(), "--set:2:10: material.density: must be positive"))
+    EXPECT_TRUE(Contains(error.what(), "--set:2:18: material.density: must be positive"))
         << error.what();
   }
   // A bad key of the file in a map that a value changes is still located in the file.

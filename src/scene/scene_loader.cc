@@ -1248,8 +1248,9 @@ SceneDocument SceneDocument::Read(const std::string& path) {
   document.blank_.file = path;
   document.blank_.directory = DirectoryOf(path);
   document.blank_.name = fs::path(path).stem().string();
-  document.text_ = ReadYamlFileText(path, "scene file");
-  document.document_ = ParseYamlText(document.text_, path, "scene file");
+  document.what_ = "scene file";
+  document.text_ = ReadYamlFileText(path, document.what_);
+  ParseYamlText(document.text_, path, document.what_);  // a syntax error now, not at a load
   return document;
 }
 
@@ -1259,18 +1260,19 @@ SceneDocument SceneDocument::Parse(const std::string& text, const std::string& l
   document.blank_.file = label;
   document.blank_.directory = directory;
   document.blank_.name = "scene";
+  document.what_ = "scene";
   document.text_ = text;
-  document.document_ = ParseYamlText(text, label, "scene");
+  ParseYamlText(document.text_, label, document.what_);
   return document;
 }
 
 Scene SceneDocument::Load(const std::vector<std::string>& overrides,
                           const std::vector<SceneValue>& values) const {
+  const std::lock_guard<std::mutex> lock(*loading_);
   Scene scene = blank_;
   scene.root = Location{blank_.file, 1, 1, ""};
   YamlOrigins origins(blank_.file);
-  // The overrides and values graft copies of the maps on their paths: document_ stays as read.
-  YAML::Node document = document_;
+  YAML::Node document = ParseYamlText(text_, blank_.file, what_);
   ApplyOverrides(document, overrides, &origins);
   ApplyValues(document, values, static_cast<int>(overrides.size()), &origins);
   ReadScene(YamlRoot(document, origins), &scene);

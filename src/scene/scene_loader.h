@@ -3,6 +3,8 @@
 #ifndef DRAPE_SRC_SCENE_SCENE_LOADER_H_
 #define DRAPE_SRC_SCENE_SCENE_LOADER_H_
 
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -20,11 +22,15 @@ std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::st
 
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides = {});
 
-// A scene file read and parsed once. Each Load builds a Scene from a copy of the parsed document
-// with `--set` overrides and then typed values set on it, validated as LoadScene does (the same
-// errors, a value's located as the override after the text overrides): a fit's evaluations, a
-// sweep's tasks and a fabric table's rows load their scenes without reading or parsing the file
-// again. LoadScene(path, overrides) is Read(path).Load(overrides).
+// A scene file read once. Each Load builds a Scene from its text, with `--set` overrides and then
+// typed values set on the document, validated as LoadScene does (the same errors; a value's
+// located as the override after the text overrides): a fit's evaluations, a sweep's tasks and a
+// fabric table's rows load their scenes without reading the file again, and their numbers are
+// set as numbers, not through text. Each load parses the text held in memory: yaml-cpp cannot
+// copy a document with its marks, which locate every error, and
+// assigning a node of a shared document into another re-points the shared document's memory
+// (memory_holder::merge), which would grow with every load and race between threads.
+// LoadScene(path, overrides) is Read(path).Load(overrides).
 class SceneDocument {
  public:
   static SceneDocument Read(const std::string& path);
@@ -39,9 +45,12 @@ class SceneDocument {
   const std::string& text() const { return text_; }
 
  private:
-  Scene blank_;          // file, folder and default name
-  YAML::Node document_;  // never changed: each Load works on a clone
+  Scene blank_;       // file, folder and default name
+  std::string what_;  // "scene file" or "scene", for messages
   std::string text_;
+  // Held by each Load: the values (a sweep's `set:` values are every task's) are read by one
+  // thread at a time.
+  std::shared_ptr<std::mutex> loading_ = std::make_shared<std::mutex>();
 };
 
 // The same for a scene's YAML text (the Python module's drape.loads): errors are located in

@@ -55,92 +55,58 @@ std::string PathUpTo(const std::string& path, const PathStep& step) {
   return path.substr(0, step.offset + step.name.size());
 }
 
-// A new map or list holding the same entries as `node` (each entry shared, with its marks): the
-// copy a graft changes, so that the document it came from stays as it was read. It stands in for
-// `node` in locations.
-YAML::Node ShallowCopy(const YAML::Node& node, YamlOrigins* origins) {
-  YAML::Node copy(node.IsSequence() ? YAML::NodeType::Sequence : YAML::NodeType::Map);
-  if (node.IsSequence()) {
-    // Each item a new node sharing the item's value: assigning to it later leaves the item be
-    // (push_back(item) would put the item's own node in both lists).
-    for (const YAML::Node& item : node) {
-      copy.push_back(YAML::Node(YAML::NodeType::Null));
-      copy[copy.size() - 1] = item;
-    }
-  } else if (node.IsMap()) {
-    for (const auto& entry : node) copy[entry.first] = entry.second;
+// The item `index` of the list `node`, which `where` names.
+YAML::Node Item(const Override& override, YAML::Node& node, int index, const std::string& where,
+                int offset) {
+  const YAML::Node& list = node;
+  if (!list.IsSequence()) override.Fail(offset, "'" + where + "' is not a list");
+  if (index >= static_cast<int>(list.size())) {
+    override.Fail(offset, "'" + where + "' has no item " + std::to_string(index) + " (it has " +
+                              std::to_string(list.size()) + ")");
   }
-  if (node.IsDefined()) copy.SetStyle(node.Style());
-  origins->AddCopy(copy, node);
-  return copy;
+  return node[index];
 }
 
-struct Graft {
-  const Override& override;
-  const std::string& path;
-  const std::vector<PathStep>& steps;
-  const YAML::Node& value;
-  int value_offset;
-  YamlOrigins* origins;
-
-  // `map` (a node of the document, or nothing) with the path from step `s` on set to the value:
-  // a new node; `map` itself is not changed.
-  YAML::Node Into(const YAML::Node& map, size_t s) const {
+// Sets `value` at the key path `path` of `root`, in place (creating missing maps), registering
+// the grafted nodes with `origins` as override `override.index`.
+void Graft(YAML::Node& root, const Override& override, const std::string& path,
+           const YAML::Node& value, int value_offset, YamlOrigins* origins) {
+  const auto steps = ParsePath(override, path);
+  YAML::Node current = root;
+  for (size_t s = 0; s < steps.size(); ++s) {
     const PathStep& step = steps[s];
     const bool last = s + 1 == steps.size();
-    if (map.IsDefined() && !map.IsMap() && !map.IsNull()) {
+    const YAML::Node& map = current;
+    if (!map.IsMap() && !map.IsNull()) {
       override.Fail(step.offset, "cannot set '" + step.name + "' inside " + Describe(map));
     }
-    YAML::Node copy = ShallowCopy(map, origins);
     if (last && step.indices.empty()) {
-      copy[step.name] = value;
+      current[step.name] = value;
       origins->AddOverride(value, override.index, step.offset, value_offset);
-      return copy;
+      return;
     }
-    // A const lookup inserts nothing; a missing key gives an undefined node (a zombie that only
-    // answers IsDefined: copied, not reset from).
-    const YAML::Node found = map.IsMap() ? map[step.name] : YAML::Node();
-    YAML::Node child;
-    if (found.IsDefined() && !found.IsNull()) {
-      child.reset(found);
-    } else {
+    const YAML::Node found = map[step.name];  // const lookup: inserts nothing
+    if (!found.IsDefined() || found.IsNull()) {
       if (!step.indices.empty()) {
         override.Fail(step.offset, "'" + PathUpTo(path, step) + "' is not a list");
       }
-      child.reset(YAML::Node(YAML::NodeType::Map));
-      origins->AddOverride(child, override.index, step.offset, step.offset);
+      YAML::Node made(YAML::NodeType::Map);
+      current[step.name] = made;
+      origins->AddOverride(made, override.index, step.offset, step.offset);
     }
-    copy[step.name] = Items(child, s, 0);
-    return copy;
+    YAML::Node child = map[step.name];
+    for (size_t k = 0; k < step.indices.size(); ++k) {
+      const std::string where = PathUpTo(path, step) + (k ? "[...]" : "");
+      YAML::Node item = Item(override, child, step.indices[k], where, step.offset);
+      if (last && k + 1 == step.indices.size()) {
+        item = value;  // operator= replaces the item inside the document
+        origins->AddOverride(value, override.index, step.offset, value_offset);
+        return;
+      }
+      child.reset(item);
+    }
+    current.reset(child);
   }
-
-  // The list `list` (indexed by step `s`'s index `k`) with the rest of the path set.
-  YAML::Node Items(const YAML::Node& list, size_t s, size_t k) const {
-    const PathStep& step = steps[s];
-    if (k == step.indices.size()) {
-      return s + 1 == steps.size() ? value : Into(list, s + 1);
-    }
-    const std::string where = PathUpTo(path, step) + (k ? "[...]" : "");
-    const int index = step.indices[k];
-    if (!list.IsSequence()) override.Fail(step.offset, "'" + where + "' is not a list");
-    if (index >= static_cast<int>(list.size())) {
-      override.Fail(step.offset, "'" + where + "' has no item " + std::to_string(index) +
-                                     " (it has " + std::to_string(list.size()) + ")");
-    }
-    YAML::Node copy = ShallowCopy(list, origins);
-    const bool leaf = s + 1 == steps.size() && k + 1 == step.indices.size();
-    copy[index] = Items(list[index], s, k + 1);
-    if (leaf) origins->AddOverride(value, override.index, step.offset, value_offset);
-    return copy;
-  }
-};
-
-// `root` with `value` put at the key path `path` (grafted nodes registered with `origins` as
-// override `override.index`).
-YAML::Node Grafted(const YAML::Node& root, const Override& override, const std::string& path,
-                   const YAML::Node& value, int value_offset, YamlOrigins* origins) {
-  const auto steps = ParsePath(override, path);
-  return Graft{override, path, steps, value, value_offset, origins}.Into(root, 0);
 }
 
 void ApplyOverride(YAML::Node& root, const Override& override, YamlOrigins* origins) {
@@ -153,9 +119,7 @@ void ApplyOverride(YAML::Node& root, const Override& override, YamlOrigins* orig
   } catch (const YAML::Exception& error) {
     override.Fail(value_offset + std::max(0, error.mark.column), error.msg);
   }
-  // reset, not operator=: that would write the new root into the document `root` refers to.
-  root.reset(
-      Grafted(root, override, override.text.substr(0, equals), value, value_offset, origins));
+  Graft(root, override, override.text.substr(0, equals), value, value_offset, origins);
 }
 
 }  // namespace
@@ -175,8 +139,10 @@ void ApplyValues(YAML::Node& root, const std::vector<SceneValue>& values, int fi
     emitter << YAML::Flow << values[k].value;
     const std::string text = values[k].key + "=" + emitter.c_str();
     const int value_offset = static_cast<int>(values[k].key.size()) + 1;
-    root.reset(Grafted(root, Override{text, first_index + static_cast<int>(k)}, values[k].key,
-                       values[k].value, value_offset, origins));
+    // A clone: the graft puts the node itself into the document, which the caller's value must
+    // not become part of (a sweep's value is set on every task's document).
+    Graft(root, Override{text, first_index + static_cast<int>(k)}, values[k].key,
+          YAML::Clone(values[k].value), value_offset, origins);
   }
 }
 

@@ -20,26 +20,6 @@ void YamlOrigins::AddOverride(const YAML::Node& node, int index, int key_offset,
   overrides_.push_back({node, index, key_offset, value_offset});
 }
 
-void YamlOrigins::AddCopy(const YAML::Node& copy, const YAML::Node& original) {
-  const int override = OverrideOf(original);
-  if (override >= 0) {
-    Override entry = overrides_[override];
-    entry.node = copy;
-    overrides_.push_back(entry);
-  } else if (original.IsDefined() && !original.Mark().is_null()) {
-    copies_.push_back({copy, original.Mark()});
-  }
-}
-
-YAML::Mark YamlOrigins::MarkOf(const YAML::Node& node) const {
-  const YAML::Mark mark = node.Mark();
-  if (!mark.is_null()) return mark;
-  for (auto copy = copies_.rbegin(); copy != copies_.rend(); ++copy) {
-    if (copy->node.is(node)) return copy->mark;
-  }
-  return mark;
-}
-
 int YamlOrigins::OverrideOf(const YAML::Node& node) const {
   for (int k = static_cast<int>(overrides_.size()) - 1; k >= 0; --k) {
     if (overrides_[k].node.is(node)) return k;
@@ -173,8 +153,8 @@ void YamlMap::Read(const std::vector<std::string>* allowed) {
       throw InputError(key_where, "duplicate key '" + key + "' (first given at line " +
                                       std::to_string(first->key_where.line) + ")");
     }
-    YamlValue entry{child, value.origins->Locate(value.origins->MarkOf(child), origin, path),
-                    value.origins, origin};
+    YamlValue entry{child, value.origins->Locate(child.Mark(), origin, path), value.origins,
+                    origin};
     // A block collection or an empty value is best pointed at by its key.
     const bool at_key =
         child.IsNull() || (!child.IsScalar() && child.Style() == YAML::EmitterStyle::Block);
@@ -223,8 +203,7 @@ std::vector<YamlValue> ReadList(const YamlValue& value) {
   int index = 0;
   for (const auto& element : node) {
     const YAML::Node item = element;
-    YamlValue child =
-        Child(value, item, value.origins->MarkOf(item), ItemKey(value.where.key, index++));
+    YamlValue child = Child(value, item, item.Mark(), ItemKey(value.where.key, index++));
     if (item.IsNull()) {  // an empty item's mark is past it: point at the list instead
       child.where.file = value.where.file;
       child.where.line = value.where.line;

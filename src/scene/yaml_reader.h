@@ -29,15 +29,8 @@ class YamlOrigins {
   // at 0-based `value_offset` of the override, and `key_offset` is where its key is named.
   void AddOverride(const YAML::Node& node, int index, int key_offset, int value_offset);
 
-  // `copy` is a new map or list standing in for `original` (an override's graft copies the maps
-  // on its path instead of changing the document): it is located where `original` is.
-  void AddCopy(const YAML::Node& copy, const YAML::Node& original);
-
   // The override that `node` is, or -1 if it came from the file.
   int OverrideOf(const YAML::Node& node) const;
-
-  // Where `node` was read: its mark, or for a copy its original's.
-  YAML::Mark MarkOf(const YAML::Node& node) const;
 
   // The location of `mark` in the file (override == -1) or in an override; a null mark (a node
   // made by an override) falls back to the override's key.
@@ -52,13 +45,8 @@ class YamlOrigins {
     int key_offset = 0;
     int value_offset = 0;
   };
-  struct Copy {
-    YAML::Node node;
-    YAML::Mark mark;
-  };
   std::string file_;
   std::vector<Override> overrides_;
-  std::vector<Copy> copies_;
 };
 
 // A node with its location and dotted key path. (Its implicit move assignment copies the
