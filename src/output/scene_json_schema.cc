@@ -287,7 +287,10 @@ Members TableSchema(const std::string& table, int depth) {
   }
   Members object = ObjectOf(properties, required, depth);
   if (table.empty()) {  // a cross-key rule of the loader's: a drape test makes the mesh
-    object.emplace_back("anyOf", "[{\"required\": [\"mesh\"]}, {\"required\": [\"drape_test\"]}]");
+    auto required_key = [](const char* key) {
+      return JsonInlineObject({{"required", JsonList(JsonStrings({key}))}});
+    };
+    object.emplace_back("anyOf", JsonList({required_key("mesh"), required_key("drape_test")}));
   }
   return object;
 }
@@ -312,11 +315,7 @@ std::string SceneSchemaRowsJson() {
     members.emplace_back("doc", JsonString(row.doc));
     rows.push_back(JsonObject(members, 2));
   }
-  std::string text = "{\n  \"rows\": [\n";
-  for (size_t k = 0; k < rows.size(); ++k) {
-    text += "    " + rows[k] + (k + 1 < rows.size() ? ",\n" : "\n");
-  }
-  return text + "  ]\n}\n";
+  return JsonObject({{"rows", JsonListLines(rows, 1)}}, 0) + "\n";
 }
 
 std::string SceneJsonSchema() {
