@@ -1250,7 +1250,6 @@ SceneDocument SceneDocument::Read(const std::string& path) {
   document.blank_.name = fs::path(path).stem().string();
   document.what_ = "scene file";
   document.text_ = ReadYamlFileText(path, document.what_);
-  ParseYamlText(document.text_, path, document.what_);  // a syntax error now, not at a load
   return document;
 }
 
@@ -1262,19 +1261,20 @@ SceneDocument SceneDocument::Parse(const std::string& text, const std::string& l
   document.blank_.name = "scene";
   document.what_ = "scene";
   document.text_ = text;
-  ParseYamlText(document.text_, label, document.what_);
   return document;
 }
 
 Scene SceneDocument::Load(const std::vector<std::string>& overrides,
                           const std::vector<SceneValue>& values) const {
-  const std::lock_guard<std::mutex> lock(*loading_);
   Scene scene = blank_;
   scene.root = Location{blank_.file, 1, 1, ""};
   YamlOrigins origins(blank_.file);
   YAML::Node document = ParseYamlText(text_, blank_.file, what_);
   ApplyOverrides(document, overrides, &origins);
-  ApplyValues(document, values, static_cast<int>(overrides.size()), &origins);
+  {
+    const std::lock_guard<std::mutex> lock(*loading_);
+    ApplyValues(document, values, static_cast<int>(overrides.size()), &origins);
+  }
   ReadScene(YamlRoot(document, origins), &scene);
   return scene;
 }

@@ -26,10 +26,11 @@ Scene LoadScene(const std::string& path, const std::vector<std::string>& overrid
 // typed values set on the document, validated as LoadScene does (the same errors; a value's
 // located as the override after the text overrides): a fit's evaluations, a sweep's tasks and a
 // fabric table's rows load their scenes without reading the file again, and their numbers are
-// set as numbers, not through text. Each load parses the text held in memory: yaml-cpp cannot
-// copy a document with its marks, which locate every error, and
-// assigning a node of a shared document into another re-points the shared document's memory
-// (memory_holder::merge), which would grow with every load and race between threads.
+// set as numbers, not through text. The text is parsed by each load (a syntax error is the first
+// load's error, as LoadScene's), not kept parsed: yaml-cpp cannot copy a document with its marks,
+// which locate every error, and assigning a node of a shared document into another re-points the
+// shared document's memory (memory_holder::merge), which would grow with every load and race
+// between threads.
 // LoadScene(path, overrides) is Read(path).Load(overrides).
 class SceneDocument {
  public:
@@ -48,8 +49,9 @@ class SceneDocument {
   Scene blank_;       // file, folder and default name
   std::string what_;  // "scene file" or "scene", for messages
   std::string text_;
-  // Held by each Load: the values (a sweep's `set:` values are every task's) are read by one
-  // thread at a time.
+  // Held while a load copies its values into its document: the values are yaml-cpp nodes that
+  // loads on several threads share (a sweep's `set:` values are every task's), and reading one
+  // is not safe from two threads at once.
   std::shared_ptr<std::mutex> loading_ = std::make_shared<std::mutex>();
 };
 
