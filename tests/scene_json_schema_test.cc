@@ -116,22 +116,24 @@ TEST_F(SceneJsonSchemaTest, RefusesWhatTheLoaderRefuses) {
   }
 }
 
-TEST_F(SceneJsonSchemaTest, NumbersAreNumbersAndDefaultsAreTheRowsLiterals) {
+TEST_F(SceneJsonSchemaTest, NumbersAreNumbersAndDefaultsAreTheRows) {
   const YAML::Node rows = YAML::Load(SceneSchemaRowsJson())["rows"];
   ASSERT_EQ(rows.size(), SceneSchema().size());
   for (size_t k = 0; k < rows.size(); ++k) {
     const SchemaRow& row = SceneSchema()[k];
     SCOPED_TRACE(row.Path());
     EXPECT_EQ(rows[k]["path"].as<std::string>(), row.Path());
-    if (const auto bounds = row.Bounds()) {
+    if (const auto& bounds = row.bounds) {
       const bool lower = std::isfinite(bounds->lower);
       const std::string key = bounds->lower_inclusive ? "minimum" : "exclusiveMinimum";
       if (lower) {
         EXPECT_EQ(rows[k][key].as<double>(), bounds->lower);
       }
     }
-    if (!row.DefaultLiteral().empty()) {
-      EXPECT_TRUE(rows[k]["default"].IsDefined()) << row.default_text;
+    const std::string& literal = row.default_yaml;
+    if (!literal.empty()) {
+      ASSERT_TRUE(rows[k]["default"].IsDefined()) << row.default_text;
+      EXPECT_EQ(YAML::Dump(rows[k]["default"]), YAML::Dump(YAML::Load(literal)));
     }
   }
 }

@@ -305,7 +305,7 @@ std::string NumberText(double value) {
   return text.str();
 }
 
-// The rule: a row's default is checked when it is one literal (SchemaRow::DefaultLiteral) and the
+// The rule: a row's default is checked when it is typed (SchemaRow::default_value) and the
 // key is not converted to another one (the kes measurements, written as the SI keys). scene.yaml
 // shows the default where it writes the key; the keys it expands (a drape test's, into the mesh
 // and obstacles) or leaves out at their default (the frictions) are read from the loaded Scene.
@@ -365,7 +365,7 @@ std::string DefaultBase(const SchemaRow& row) {
 
 // Checks one row's default against the loaded scene; false when the rule skips the row.
 bool CheckDefault(const SchemaRow& row) {
-  const std::string literal = row.DefaultLiteral();
+  const std::string literal = row.default_yaml;
   if (literal.empty()) return false;
   std::string path;
   const auto overrides = DefaultContext(row, &path);
@@ -393,8 +393,7 @@ TEST(SceneSchema, LiteralDefaultsAreTheLoadersDefaults) {
   for (const SchemaRow& row : SceneSchema()) {
     (CheckDefault(row) ? checked : skipped).push_back(row.Path());
   }
-  // Every row with a literal default but those converted to another key (the kes measurements)
-  // or that are patterns.
+  // Every row with a typed default but those converted to another key (the kes measurements).
   std::string list;
   for (const std::string& path : checked) list += " " + path;
   EXPECT_EQ(checked.size(), 42u) << "rows whose default is checked (a row added with a literal "
@@ -403,16 +402,17 @@ TEST(SceneSchema, LiteralDefaultsAreTheLoadersDefaults) {
   for (const std::string& path : skipped) {
     const auto row = std::find_if(SceneSchema().begin(), SceneSchema().end(),
                                   [&](const SchemaRow& r) { return r.Path() == path; });
-    if (row->DefaultLiteral().empty()) continue;
+    if (row->default_yaml.empty()) continue;
     EXPECT_EQ(row->table, "material.finite_volume.kes") << path << "'s default is not checked";
   }
 }
 
 // ------------------------------------------------------------------------- the ranges
 
-bool NumericType(const std::string& type) {
-  return type.empty() || type == "integer" || type == "whole number" || type == "number" ||
-         type.rfind("number or", 0) == 0;
+// A number, a whole number, or a spring family (`number or {warp, weft}`).
+bool NumericType(const SchemaRow& row) {
+  return row.value == ValueType::kNumber || row.value == ValueType::kInteger ||
+         row.type.rfind("number or", 0) == 0;
 }
 
 // Where the row's key stands in the scene its example gives: the written path for a list item.
@@ -440,11 +440,18 @@ std::vector<double> OutsideValues(const SchemaRange& range) {
   return values;
 }
 
-// The bounds the range includes.
-std::vector<double> IncludedBounds(const SchemaRange& range) {
+// The values just inside the range: a bound itself when it is included, else one step within.
+std::vector<double> InsideValues(const SchemaRange& range) {
+  auto step = [&](double bound) {
+    return range.integer ? 1.0 : 1e-6 * std::max(1.0, std::abs(bound));
+  };
   std::vector<double> values;
-  if (std::isfinite(range.lower) && range.lower_inclusive) values.push_back(range.lower);
-  if (std::isfinite(range.upper) && range.upper_inclusive) values.push_back(range.upper);
+  if (std::isfinite(range.lower)) {
+    values.push_back(range.lower_inclusive ? range.lower : range.lower + step(range.lower));
+  }
+  if (std::isfinite(range.upper)) {
+    values.push_back(range.upper_inclusive ? range.upper : range.upper - step(range.upper));
+  }
   return values;
 }
 
@@ -463,12 +470,12 @@ std::optional<InputError> LoadWith(const SchemaRow& row, double value) {
 
 class EveryRange : public ::testing::TestWithParam<size_t> {};
 
-// A value just outside the row's range is refused, located at the key; the range's own bounds are
+// A value just outside the row's range is refused, located at the key; a value just inside is
 // not refused at the key (another key's check may still refuse the scene: mesh.max_nodes 2 under
 // a 3 × 3 grid is refused at `mesh`).
 TEST_P(EveryRange, IsTheLoadersCheck) {
   const SchemaRow& row = SceneSchema()[GetParam()];
-  const auto range = row.Bounds();
+  const auto& range = row.bounds;
   ASSERT_TRUE(range.has_value());
   const std::string target = RangeTarget(row);
   for (const double value : OutsideValues(*range)) {
@@ -478,7 +485,8 @@ TEST_P(EveryRange, IsTheLoadersCheck) {
                                    << "outside the schema's range " << row.range;
     EXPECT_EQ(error->where().key, target) << error->what();
   }
-  for (const double value : IncludedBounds(*range)) {
+  for (const double value : InsideValues(*range)) {
+    ASSERT_TRUE(range->Contains(value));
     const auto error = LoadWith(row, value);
     EXPECT_TRUE(!error.has_value() || error->where().key != target)
         << target << " = " << NumberText(value) << ", within " << row.range
@@ -490,7 +498,7 @@ TEST_P(EveryRange, IsTheLoadersCheck) {
 std::vector<size_t> RangedRows() {
   std::vector<size_t> rows;
   for (size_t k = 0; k < SceneSchema().size(); ++k) {
-    if (SceneSchema()[k].Bounds() && NumericType(SceneSchema()[k].type)) rows.push_back(k);
+    if (SceneSchema()[k].bounds && NumericType(SceneSchema()[k])) rows.push_back(k);
   }
   return rows;
 }
@@ -502,10 +510,9 @@ INSTANTIATE_TEST_SUITE_P(SceneSchema, EveryRange, ::testing::ValuesIn(RangedRows
 TEST(SceneSchema, NumericRowsWithoutARangeTakeAnyNumber) {
   size_t checked = 0;
   for (const SchemaRow& row : SceneSchema()) {
-    const bool any = row.range.empty() || row.range == "any sign";
-    if (!any || !NumericType(row.type) || row.example.empty()) continue;
+    if (row.bounds || !row.range.empty() || !NumericType(row) || row.example.empty()) continue;
     ++checked;
-    const double size = row.type == "integer" || row.type == "whole number" ? 1.0 : 1e-9;
+    const double size = row.value == ValueType::kInteger ? 1.0 : 1e-9;
     for (const double value : {-size, 0.0, size}) {
       const auto error = LoadWith(row, value);
       EXPECT_TRUE(!error.has_value() || error->where().key != RangeTarget(row))
@@ -516,37 +523,32 @@ TEST(SceneSchema, NumericRowsWithoutARangeTakeAnyNumber) {
   EXPECT_EQ(checked, 8u) << "numeric rows without a range: update the count";
 }
 
-TEST(SceneSchema, RangeTextsParse) {
-  const auto positive = ParseSchemaRange("> 0", false);
-  ASSERT_TRUE(positive.has_value());
-  EXPECT_FALSE(positive->Contains(0.0));
-  EXPECT_TRUE(positive->Contains(1e-300));
-  const auto levels = ParseSchemaRange("1–8", true);
-  ASSERT_TRUE(levels.has_value());
-  EXPECT_TRUE(levels->Contains(1) && levels->Contains(8));
-  EXPECT_FALSE(levels->Contains(0) || levels->Contains(9) || levels->Contains(1.5));
-  const auto max_nodes = ParseSchemaRange("in [2, 10⁸]", true);
-  ASSERT_TRUE(max_nodes.has_value());
-  EXPECT_EQ(max_nodes->upper, 1e8);
-  const auto drops = ParseSchemaRange("1–10000", true);  // a number starting 10, not a power
-  ASSERT_TRUE(drops.has_value());
-  EXPECT_EQ(drops->upper, 10000);
-  EXPECT_FALSE(ParseSchemaRange("strictly increasing", false).has_value());
-  EXPECT_FALSE(ParseSchemaRange("> min", false).has_value());
-  EXPECT_FALSE(ParseSchemaRange("each > 0 (≥ 0 along an axis of 1 node)", false).has_value());
+// A range's text (the reference's) and refusal (the loader's message) say its bounds.
+TEST(SceneSchema, RangesSayTheirBounds) {
+  EXPECT_EQ(Above(0).Text(), "> 0");
+  EXPECT_EQ(AtLeast(0).Text(), "≥ 0");
+  EXPECT_EQ(Whole(Between(1, 8)).Text(), "1–8");
+  EXPECT_EQ(Whole(Between(2, 1e8)).Text(), "in [2, 100000000]");
+  EXPECT_EQ(Above(0).Refusal(-1), "must be positive, got -1");
+  EXPECT_EQ(AtLeast(0).Refusal(-0.5), "must not be negative, got -0.5");
+  EXPECT_EQ(Above(1).Refusal(1), "must be greater than 1, got 1");
+  EXPECT_EQ(Whole(AtLeast(3)).Refusal(2), "must be at least 3, got 2");
+  EXPECT_EQ(Whole(Between(1, 8)).Refusal(9), "must be at most 8, got 9");
+  EXPECT_FALSE(Whole(Between(1, 8)).Contains(1.5));
 }
 
-// Every numeric row's range is a structured range (the test above checks it), but the prose ones
-// listed here.
-TEST(SceneSchema, NumericRangesAreChecked) {
-  size_t checked = 0;
+// Every plain row's type, range and default text come from its typed value, bounds and default.
+TEST(SceneSchema, PlainRowsSayTheirTypedValues) {
   for (const SchemaRow& row : SceneSchema()) {
-    if (row.range.empty() || !NumericType(row.type)) continue;
-    EXPECT_TRUE(row.Bounds().has_value() || row.range == "any sign")
-        << row.Path() << "'s range \"" << row.range << "\" is not a structured range";
-    if (row.Bounds()) ++checked;
+    if (row.bounds) EXPECT_EQ(row.range, row.bounds->Text()) << row.Path();
+    const std::string text = FieldValueText(row.default_value);
+    if (!text.empty()) {
+      EXPECT_EQ(row.default_text.rfind("`" + text + "`", 0), 0u) << row.Path();
+    }
+    if (row.field) {
+      EXPECT_NE(row.value, ValueType::kOther) << row.Path() << ": a bound row of a composite value";
+    }
   }
-  EXPECT_EQ(checked, 77u) << "numeric rows whose range is checked: update the count";
 }
 
 }  // namespace scene_schema_test

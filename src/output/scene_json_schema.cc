@@ -106,31 +106,52 @@ bool IsTable(const std::string& path) {
 
 Members TableSchema(const std::string& table, int depth);
 
-// A row's value by its type (the reference's type column): the rows say a value's type in the
-// words the reference prints; this is where those words become JSON Schema types.
+// A plain row's value by its type; none for a composite (kOther).
+std::optional<Members> PlainSchema(const SchemaRow& row, int depth) {
+  switch (row.value) {
+    case ValueType::kNumber:
+      return Number(row.bounds, false);
+    case ValueType::kInteger:
+      return Number(row.bounds, true);
+    case ValueType::kBool:
+      return Members{{"type", "\"boolean\""}};
+    case ValueType::kWord:
+      return Choice(row.words);
+    case ValueType::kText:
+      return Text();
+    case ValueType::kPoint:
+      return Point(depth);
+    case ValueType::kPair:
+      return ListOf(Number(std::nullopt, false), 2, depth);
+    case ValueType::kOther:
+      break;
+  }
+  return std::nullopt;
+}
+
+// A composite row's value by its type (the reference's type column): the rows say such a value's
+// type in the words the reference prints; this is where those words become JSON Schema types.
 Members ValueSchema(const SchemaRow& row, int depth) {
+  if (auto plain = PlainSchema(row, depth)) return *plain;
   const std::string& type = row.type;
-  const auto range = row.Bounds();
+  const auto& range = row.bounds;
   if (IsTable(row.Path())) {  // a map of its own table's keys, or a list of them
     return type == "list" ? ListOf(TableSchema(row.Path(), depth + 1), 0, depth)
                           : TableSchema(row.Path(), depth);
   }
-  if (type.empty() || type == "number") return Number(range, false);
-  if (type == "integer" || type == "whole number") return Number(range, true);
   if (type == "text" || type == "path") return Text();
   if (type == "a node selection") return {{"$ref", JsonString("#/$defs/nodes")}};
-  if (type == "[3]") return Point(depth);
-  if (type == "[2]" || type == "[x, y]") return ListOf(Number(std::nullopt, false), 2, depth);
+  if (type == "[2]") return ListOf(Number(std::nullopt, false), 2, depth);
   if (type == "[2] integers") return ListOf(Number(range, true), 2, depth);
   if (type == "list of [3]") return ListOf(Point(depth + 1), 0, depth);
   if (type == "list") return ListOf(Number(std::nullopt, false), 0, depth);  // mesh.u, mesh.v
   if (type == "list, no repeats") return UniqueListOf(Choice(OutputKindNames()), depth);
   if (type.rfind("list of `x`", 0) == 0) return UniqueListOf(Choice({"x", "y", "z"}), depth);
-  if (type == "list of integers ≥ 0")
-    return ListOf(Number(ParseSchemaRange("≥ 0", true), true), 0, depth);
-  if (type == "integer ≥ 0") return Number(ParseSchemaRange("≥ 0", true), true);
+  const SchemaRange index = Whole(AtLeast(0));
+  if (type == "list of integers ≥ 0") return ListOf(Number(index, true), 0, depth);
+  if (type == "integer ≥ 0") return Number(index, true);
   if (type == "list of [i, j]") {
-    return ListOf(ListOf(Number(ParseSchemaRange("≥ 0", true), true), 2, depth + 1), 0, depth);
+    return ListOf(ListOf(Number(index, true), 2, depth + 1), 0, depth);
   }
   if (type == "number or `{warp: …, weft: …}`") {
     const Members number = Number(range, false);
@@ -150,12 +171,10 @@ Members ValueSchema(const SchemaRow& row, int depth) {
     return ObjectOf({{"min", point}, {"max", point}}, {"min", "max"}, depth);
   }
   if (type == "`{center: [3], radius: > 0}`") {
-    return ObjectOf(
-        {{"center", JsonObject(Point(depth + 3), depth + 3)},
-         {"radius", JsonObject(Number(ParseSchemaRange("> 0", false), false), depth + 3)}},
-        {"center", "radius"}, depth);
+    return ObjectOf({{"center", JsonObject(Point(depth + 3), depth + 3)},
+                     {"radius", JsonObject(Number(Above(0), false), depth + 3)}},
+                    {"center", "radius"}, depth);
   }
-  if (type == "`true` \\| `false`") return {{"type", "\"boolean\""}};
   if (type == "`true`") return {{"const", "true"}};
   if (type == "map" || type == "map of numbers") return {{"type", "\"object\""}};
   return Choice(Backticked(type));  // `a` \| `b`, `3` or `2`
@@ -174,15 +193,9 @@ std::string Description(const SchemaRow& row) {
   return text;
 }
 
-// The default as JSON where the row gives one literal; "" otherwise.
+// The default as JSON; "" for none (a default in words).
 std::string DefaultJson(const SchemaRow& row) {
-  const std::string literal = row.DefaultLiteral();
-  if (literal.empty()) return "";
-  try {
-    return YamlAsJson(YAML::Load(literal));
-  } catch (const YAML::Exception&) {
-    return "";
-  }
+  return row.default_yaml.empty() ? "" : YamlAsJson(YAML::Load(row.default_yaml));
 }
 
 // The schema of a row: its value's, with a description and a default.
@@ -305,7 +318,7 @@ std::string SceneSchemaRowsJson() {
         {"path", JsonString(row.Path())}, {"kinds", JsonList(JsonStrings(row.kinds))},
         {"type", JsonString(row.type)},   {"unit", JsonString(row.unit)},
         {"range", JsonString(row.range)}};
-    if (const auto range = row.Bounds()) {
+    if (const auto& range = row.bounds) {
       for (auto& member : BoundMembers(range)) members.push_back(std::move(member));
       members.emplace_back("integer", JsonBool(range->integer));
     }

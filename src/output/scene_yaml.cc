@@ -2,17 +2,19 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "src/model/obstacle_kinds.h"
 #include "src/output/json.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
+#include "src/scene/scene_field.h"
 #include "src/scene/scene_loader.h"
+#include "src/scene/scene_schema.h"
 #include "src/scene/solver_methods.h"
 
 namespace drape {
@@ -31,6 +33,36 @@ void Numbers(YAML::Emitter& out, const double* values, int count) {
 }
 
 void Vector3(YAML::Emitter& out, const Eigen::Vector3d& v) { Numbers(out, v.data(), 3); }
+
+// A row's value (src/scene/scene_field.h) as YAML.
+void Value(YAML::Emitter& out, const FieldValue& value) {
+  struct Emit {
+    YAML::Emitter& out;
+    void operator()(std::monostate) const {}
+    void operator()(double number) const { Number(out, number); }
+    void operator()(int number) const { out << YAML::Value << number; }
+    void operator()(bool truth) const { out << YAML::Value << truth; }
+    void operator()(const std::string& word) const { out << YAML::Value << word; }
+    void operator()(const Eigen::Vector3d& v) const { Numbers(out, v.data(), 3); }
+    void operator()(const Eigen::Vector2d& v) const { Numbers(out, v.data(), 2); }
+  };
+  std::visit(Emit{out}, value);
+}
+
+// The keys of `table` (for `kind`) whose rows bind a member of `owner`, but those `except`: each
+// with the value the loader stored, an optional member not given left out.
+template <typename Owner>
+void WriteFields(YAML::Emitter& out, const std::string& table, const Owner& owner,
+                 const std::string& kind = "", const std::vector<std::string>& except = {}) {
+  for (const SchemaRow* row : SchemaRows(table)) {
+    if (!row->field || row->field.owner != typeid(Owner) || !row->Takes(kind)) continue;
+    if (std::find(except.begin(), except.end(), row->key) != except.end()) continue;
+    const FieldValue value = row->field.get(&owner);
+    if (std::holds_alternative<std::monostate>(value)) continue;
+    Key(out, row->key);
+    Value(out, value);
+  }
+}
 
 std::string Absolute(const std::string& path) {
   return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
@@ -51,73 +83,42 @@ void WriteGridMesh(const MeshSpec& mesh, YAML::Emitter& out) {
   Key(out, "nodes");
   out << YAML::Value << YAML::Flow << YAML::BeginSeq << mesh.nodes[0] << mesh.nodes[1]
       << YAML::EndSeq;
-  Key(out, "plane");
-  out << YAML::Value << mesh.plane;
-  Key(out, "origin");
-  Vector3(out, mesh.origin);
 }
 
-void WriteChainMesh(const MeshSpec& mesh, YAML::Emitter& out) {
-  Key(out, "closed");
-  out << YAML::Value << mesh.closed;
-  if (!mesh.points.empty()) {
-    Key(out, "points");
-    out << YAML::Value << YAML::BeginSeq;
-    for (const auto& point : mesh.points) {
-      out << YAML::Flow << YAML::BeginSeq << FormatNumber(point.x()) << FormatNumber(point.y())
-          << FormatNumber(point.z()) << YAML::EndSeq;
-    }
-    out << YAML::EndSeq;
-    return;
-  }
-  Key(out, "length");
-  Number(out, mesh.length);
-  Key(out, "nodes");
-  out << YAML::Value << mesh.chain_nodes;
-  Key(out, "direction");
-  Vector3(out, mesh.direction);
-  Key(out, "origin");
-  Vector3(out, mesh.origin);
+// The explicit points replace the length, the node count and the direction.
+void WriteChainPoints(const MeshSpec& mesh, YAML::Emitter& out) {
+  Key(out, "points");
+  out << YAML::Value << YAML::BeginSeq;
+  for (const auto& point : mesh.points) Vector3(out, point);
+  out << YAML::EndSeq;
 }
 
 void WriteMesh(const MeshSpec& mesh, YAML::Emitter& out) {
   static const char* const kinds[] = {"grid", "circle", "arc", "chain", "file"};
   Key(out, "mesh");
   out << YAML::Value << YAML::BeginMap;
+  const std::string kind = kinds[static_cast<int>(mesh.kind)];
   Key(out, "kind");
-  out << YAML::Value << kinds[static_cast<int>(mesh.kind)];
+  out << YAML::Value << kind;
+  const bool points = !mesh.points.empty();
+  WriteFields(out, "mesh", mesh, kind,
+              points ? std::vector<std::string>{"length", "nodes", "direction"}
+                     : std::vector<std::string>{});
   switch (mesh.kind) {
     case MeshSpec::Kind::kGrid:
       WriteGridMesh(mesh, out);
       break;
     case MeshSpec::Kind::kCircle:
-      Key(out, "radius");
-      Number(out, mesh.radius);
-      Key(out, "spacing");
-      Number(out, mesh.spacing);
-      Key(out, "origin");
-      Vector3(out, mesh.origin);
-      break;
     case MeshSpec::Kind::kArc:
-      Key(out, "radius");
-      Number(out, mesh.radius);
-      Key(out, "rings");
-      out << YAML::Value << mesh.rings;
-      Key(out, "spokes");
-      out << YAML::Value << mesh.spokes;
-      Key(out, "origin");
-      Vector3(out, mesh.origin);
       break;
     case MeshSpec::Kind::kChain:
-      WriteChainMesh(mesh, out);
+      if (points) WriteChainPoints(mesh, out);
       break;
     case MeshSpec::Kind::kFile:
       Key(out, "path");
       out << YAML::Value << Absolute(mesh.path);
       break;
   }
-  Key(out, "max_nodes");
-  out << YAML::Value << mesh.max_nodes;
   out << YAML::EndMap;
 }
 
@@ -198,12 +199,7 @@ void WriteSprings(const SpringsSpec& springs, YAML::Emitter& out) {
     out << YAML::Value
         << (springs.rest_length == SpringsSpec::RestLength::kZero ? "zero" : "initial");
   }
-  Key(out, "tension_only");
-  out << YAML::Value << springs.tension_only;
-  if (springs.stretch_limit) {
-    Key(out, "stretch_limit");
-    Number(out, *springs.stretch_limit);
-  }
+  WriteFields(out, "material.springs", springs);
   out << YAML::EndMap;
 }
 
@@ -250,10 +246,7 @@ void WriteMaterial(const MaterialSpec& material, YAML::Emitter& out) {
     for (const SpringLineSpec& line : material.lines) {
       out << YAML::BeginMap;
       WriteSelector(line.nodes, out);
-      Key(out, "structural");
-      Number(out, line.stiffness);
-      Key(out, "tension_only");
-      out << YAML::Value << line.tension_only;
+      WriteFields(out, "material.lines", line);
       out << YAML::EndMap;
     }
     out << YAML::EndSeq;
@@ -307,8 +300,7 @@ void WriteFixed(const std::vector<FixedSpec>& fixed, YAML::Emitter& out) {
       if (spec.dofs[c]) out << std::string(1, "xyz"[c]);
     }
     out << YAML::EndSeq;
-    Key(out, "move");
-    Vector3(out, spec.move);
+    WriteFields(out, "fixed", spec);
     out << YAML::EndMap;
   }
   out << YAML::EndSeq;
@@ -356,10 +348,7 @@ void WriteForce(const ForceSpec& force, YAML::Emitter& out) {
 void WriteLoads(const LoadsSpec& loads, YAML::Emitter& out) {
   Key(out, "loads");
   out << YAML::Value << YAML::BeginMap;
-  if (loads.gravity) {
-    Key(out, "gravity");
-    Vector3(out, *loads.gravity);
-  }
+  WriteFields(out, "loads", loads);
   Key(out, "forces");
   out << YAML::Value << YAML::BeginSeq;
   for (const ForceSpec& force : loads.forces) WriteForce(force, out);
@@ -371,22 +360,12 @@ void WriteLoads(const LoadsSpec& loads, YAML::Emitter& out) {
   out << YAML::EndMap;
 }
 
-// The kind's keys (src/model/obstacle_kinds.h) and friction, with the values the loader read.
+// The kind's keys and friction, with the values the loader read.
 void WriteObstacle(const ObstacleSpec& obstacle, YAML::Emitter& out) {
   out << YAML::BeginMap;
   Key(out, obstacle.kind);
   out << YAML::Value << YAML::BeginMap;
-  std::vector<std::string> keys = ObstacleKindOf(obstacle).keys;
-  keys.push_back("friction");
-  for (const std::string& key : keys) {
-    Key(out, key);
-    const std::vector<double> value = ObstacleKeyValue(obstacle, key);
-    if (value.size() == 3) {
-      Vector3(out, Eigen::Vector3d(value[0], value[1], value[2]));
-    } else {
-      Number(out, value.at(0));
-    }
-  }
+  WriteFields(out, "obstacles", obstacle, obstacle.kind);
   out << YAML::EndMap << YAML::EndMap;
 }
 
@@ -395,10 +374,7 @@ void WriteObstacle(const ObstacleSpec& obstacle, YAML::Emitter& out) {
 void WriteSolver(const SolverSpec& solver, YAML::Emitter& out) {
   Key(out, "solver");
   out << YAML::Value << YAML::BeginMap;
-  Key(out, "method");
-  out << YAML::Value << solver.method;
-  Key(out, "tolerance");
-  Number(out, solver.tolerance);
+  WriteFields(out, "solver", solver, "", {"max_iterations", "time_limit", "levels"});
   Key(out, "max_iterations");
   out << YAML::Value << EffectiveMaxIterations(solver, solver.method);
   Key(out, "time_limit");
@@ -435,8 +411,7 @@ void WriteSceneYaml(const Scene& scene, std::ostream& stream) {
   out << YAML::BeginMap;
   Key(out, "name");
   out << YAML::Value << scene.name;
-  Key(out, "dimension");
-  out << YAML::Value << scene.dimension;
+  WriteFields(out, "", scene);
   WriteMesh(scene.mesh, out);
   WriteMaterial(scene.material, out);
   WriteRegions(scene.regions, out);
@@ -448,8 +423,7 @@ void WriteSceneYaml(const Scene& scene, std::ostream& stream) {
   out << YAML::EndSeq;
   Key(out, "contact");
   out << YAML::Value << YAML::BeginMap;
-  Key(out, "thickness");
-  Number(out, scene.contact.thickness);
+  WriteFields(out, "contact", scene.contact);
   out << YAML::EndMap;
   WriteSolver(scene.solver, out);
   Key(out, "output");
@@ -458,8 +432,7 @@ void WriteSceneYaml(const Scene& scene, std::ostream& stream) {
   out << YAML::Value << Absolute(scene.output.directory);
   Key(out, "write");
   out << YAML::Value << YAML::Flow << scene.output.write;
-  Key(out, "obj_up");
-  out << YAML::Value << scene.output.obj_up;
+  WriteFields(out, "output", scene.output);
   out << YAML::EndMap;
   out << YAML::EndMap;
   stream << "# drape: the scene as solved (--set overrides applied, defaults filled in, SI units)\n"

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "src/scene/scene_schema.h"
+#include "src/scene/schema_reader.h"
 
 namespace drape {
 namespace {
@@ -12,26 +13,6 @@ constexpr double kTesterGravity = 9.81;
 // The clamp is this much narrower than the disc unless given: a 5 mm ring of the specimen rests
 // on the disc by contact inside its rim (m).
 constexpr double kClampNarrowerThanDisc = 0.01;
-
-void ReadDrapeTestKey(const std::string& key, const YamlValue& value, DrapeTestSpec* test) {
-  if (key == "specimen_diameter") test->specimen_diameter = ReadPositive(value);
-  if (key == "disc_diameter") test->disc_diameter = ReadPositive(value);
-  if (key == "clamp_diameter") test->clamp_diameter = ReadPositive(value);
-  if (key == "offset") {
-    const std::vector<double> xy = ReadNumbers(value, 2);
-    test->offset = Eigen::Vector2d(xy[0], xy[1]);
-  }
-  if (key == "drops") {
-    test->drops = ReadIntAtLeast(value, 1);
-    if (test->drops > kMostDrops) {
-      Fail(value, "must be at most " + std::to_string(kMostDrops) + ", got " +
-                      std::to_string(test->drops));
-    }
-  }
-  if (key == "placement") test->placement = ReadNonNegative(value);
-  if (key == "waviness") test->waviness = ReadNonNegative(value);
-  if (key == "seed") test->seed = ReadIntAtLeast(value, 0);
-}
 
 std::string Centimetres(double metres) {
   char text[32];
@@ -65,7 +46,7 @@ DrapeTestSpec ReadDrapeTest(const YamlValue& value) {
   const YamlMap map(value, DrapeTestKeys());
   DrapeTestSpec test;
   test.where = value.where;
-  for (const std::string& key : map.Keys()) ReadDrapeTestKey(key, map.Get(key), &test);
+  ReadFields(map, "drape_test", &test);
   const YamlValue& at = map.value();
   if (!(test.disc_diameter < test.specimen_diameter)) {
     Fail(map.Has("disc_diameter") ? map.Get("disc_diameter") : at,

@@ -43,6 +43,9 @@ class InputError : public std::runtime_error {
   std::string problem_;
 };
 
+// The largest mesh.max_nodes accepted: node ids and coordinate indices stay within int.
+constexpr int kLargestMaxNodes = 100000000;
+
 struct MeshSpec {
   enum class Kind { kGrid, kCircle, kArc, kChain, kFile };
   Kind kind = Kind::kGrid;
@@ -240,6 +243,9 @@ struct ContactSpec {
   double thickness = 0.001;  // m
   Location where;
 };
+
+// The most nested lattices a solve takes (solver.levels): each halves the spacing.
+constexpr int kMostLevels = 8;
 
 struct SolverSpec {
   std::string method = "newton";

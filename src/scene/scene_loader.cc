@@ -25,6 +25,7 @@
 #include "src/scene/output_kinds.h"
 #include "src/scene/scene_schema.h"
 #include "src/scene/scene_size.h"
+#include "src/scene/schema_reader.h"
 #include "src/scene/solver_methods.h"
 #include "src/scene/yaml_overrides.h"
 #include "src/scene/yaml_reader.h"
@@ -45,11 +46,6 @@ std::string JoinNames(const std::vector<std::string>& names) {
 }
 
 // ------------------------------------------------------------------------------------ mesh
-
-const std::vector<std::string>& MeshKinds() {
-  static const std::vector<std::string> kinds = {"arc", "chain", "circle", "file", "grid"};
-  return kinds;
-}
 
 MeshSpec::Kind MeshKindOf(const std::string& name) {
   if (name == "circle") return MeshSpec::Kind::kCircle;
@@ -129,7 +125,6 @@ void ReadGrid(const YamlMap& map, MeshSpec* spec) {
          "a grid needs at least 2 nodes, got " +
              std::to_string(spec->nodes[0] * static_cast<long>(spec->nodes[1])));
   }
-  if (const auto plane = map.Find("plane")) spec->plane = ReadChoice(*plane, {"xy", "xz"});
 }
 
 // Explicit chain nodes: a list of [x, y, z], which replaces length, nodes and direction.
@@ -154,42 +149,28 @@ void ReadChainPoints(const YamlMap& map, const YamlValue& points, MeshSpec* spec
   spec->chain_nodes = static_cast<int>(spec->points.size());
 }
 
+// A direction given (read by its row): not zero, and normalised.
+void Normalise(const YamlMap& map, const std::string& key, Eigen::Vector3d* direction) {
+  const auto given = map.Find(key);
+  if (!given) return;
+  if (!(direction->norm() > 0.0)) Fail(*given, "must not be the zero vector");
+  direction->normalize();
+}
+
 void ReadChain(const YamlMap& map, MeshSpec* spec) {
-  if (const auto closed = map.Find("closed")) spec->closed = ReadBool(*closed);
   if (const auto points = map.Find("points")) {
     ReadChainPoints(map, *points, spec);
     return;
   }
-  if (const auto length = map.Find("length")) spec->length = ReadPositive(*length);
-  if (const auto nodes = map.Find("nodes")) {
-    if (!nodes->get().IsScalar()) {
-      Fail(*nodes, "expected the number of nodes of the chain, got " + Describe(nodes->get()));
-    }
-    spec->chain_nodes = ReadIntAtLeast(*nodes, 1);
-    if (spec->chain_nodes < 2) Fail(*nodes, "a chain needs at least 2 nodes, got 1");
-    if (spec->closed && spec->chain_nodes < 3) {
-      Fail(*nodes, "a closed chain needs at least 3 nodes, got 2");
-    }
+  const auto nodes = map.Find("nodes");
+  if (nodes && spec->closed && spec->chain_nodes < 3) {
+    Fail(*nodes, "a closed chain needs at least 3 nodes, got 2");
   }
-  if (const auto direction = map.Find("direction")) {
-    const Eigen::Vector3d given = ReadVector3(*direction);
-    if (!(given.norm() > 0.0)) Fail(*direction, "must not be the zero vector");
-    spec->direction = given.normalized();
-  }
+  Normalise(map, "direction", &spec->direction);
 }
 
-// The largest mesh.max_nodes accepted: node ids and coordinate indices stay within int.
-constexpr int kLargestMaxNodes = 100000000;
-
-// mesh.max_nodes, and the mesh's node count against it, before anything is built.
+// The mesh's node count against mesh.max_nodes, before anything is built.
 void CheckMeshSize(const YamlMap& map, MeshSpec* spec) {
-  if (const auto given = map.Find("max_nodes")) {
-    spec->max_nodes = ReadIntAtLeast(*given, 2);
-    if (spec->max_nodes > kLargestMaxNodes) {
-      Fail(*given, "must be at most " + std::to_string(kLargestMaxNodes) + ", got " +
-                       std::to_string(spec->max_nodes));
-    }
-  }
   const double nodes = EstimatedNodes(*spec);
   if (nodes <= spec->max_nodes) return;
   std::ostringstream text;
@@ -215,7 +196,9 @@ MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory,
   spec.where = value.where;
   spec.radius = default_radius;
   std::string kind = default_kind;
-  if (const auto given = map.Find("kind")) kind = ReadChoice(*given, MeshKinds());
+  if (const auto given = map.Find("kind")) {
+    kind = std::get<std::string>(ReadRowValue(SchemaRowOf("mesh", "kind"), *given));
+  }
   spec.kind = MeshKindOf(kind);
   const auto allowed = SchemaKeys("mesh", kind);
   for (const auto& key : map.Keys()) {
@@ -224,18 +207,13 @@ MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory,
                                                  " mesh (its keys: " + JoinNames(allowed) + ")");
     }
   }
+  ReadFields(map, "mesh", &spec, kind);
   switch (spec.kind) {
     case MeshSpec::Kind::kGrid:
       ReadGrid(map, &spec);
       break;
     case MeshSpec::Kind::kCircle:
-      if (const auto radius = map.Find("radius")) spec.radius = ReadPositive(*radius);
-      if (const auto spacing = map.Find("spacing")) spec.spacing = ReadPositive(*spacing);
-      break;
     case MeshSpec::Kind::kArc:
-      if (const auto radius = map.Find("radius")) spec.radius = ReadPositive(*radius);
-      if (const auto rings = map.Find("rings")) spec.rings = ReadIntAtLeast(*rings, 1);
-      if (const auto spokes = map.Find("spokes")) spec.spokes = ReadIntAtLeast(*spokes, 3);
       break;
     case MeshSpec::Kind::kChain:
       ReadChain(map, &spec);
@@ -248,7 +226,6 @@ MeshSpec ReadMesh(const YamlValue& value, const std::string& scene_directory,
       break;
     }
   }
-  if (const auto origin = map.Find("origin")) spec.origin = ReadVector3(*origin);
   CheckMeshSize(map, &spec);
   return spec;
 }
@@ -309,16 +286,7 @@ SpringsSpec ReadSprings(const YamlValue& value) {
     Fail(value, "no spring family is given: add structural, shear or flexion (N/m)");
   }
   if (const auto v = map.Find("rest_length")) ReadRestLength(*v, &springs);
-  if (const auto v = map.Find("tension_only")) springs.tension_only = ReadBool(*v);
-  if (const auto v = map.Find("stretch_limit")) {
-    const double limit = ReadNumber(*v);
-    if (!(limit > 1.0)) {
-      std::ostringstream text;
-      text << "must be greater than 1 (a maximum stretch ratio), got " << limit;
-      Fail(*v, text.str());
-    }
-    springs.stretch_limit = limit;
-  }
+  ReadFields(map, "material.springs", &springs);
   return springs;
 }
 
@@ -347,7 +315,9 @@ const ParameterWay* GivenWay(const std::string& key, const std::vector<Parameter
 
 double ReadParameter(const YamlMap& map, const std::string& key, const std::string& unit,
                      const std::vector<ParameterWay>& measured) {
-  std::vector<ParameterWay> ways = {{key, map.Find(key), ReadPositive}};
+  std::vector<ParameterWay> ways = {{key, map.Find(key), [key](const YamlValue& v) {
+                                       return ReadRowNumber(v, "material.finite_volume", key);
+                                     }}};
   ways.insert(ways.end(), measured.begin(), measured.end());
   const ParameterWay* given = GivenWay(key, ways);
   if (!given) {
@@ -403,22 +373,13 @@ double ReadFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
 }
 
 // The frictions: bending_friction_<direction> (N) or kes.2HB_<direction> (gf·cm/cm), and
-// shear_friction (N/m) or kes.2HG (gf/cm), with their smoothings and load steps.
+// shear_friction (N/m) or kes.2HG (gf/cm).
 void ReadFrictions(const YamlMap& map, const std::optional<YamlMap>& kes, FiniteVolumeSpec* fv) {
   fv->bending_friction_warp =
       ReadFriction(map, kes, "bending_friction_warp", "2HB_warp", KesBendingFriction);
   fv->bending_friction_weft =
       ReadFriction(map, kes, "bending_friction_weft", "2HB_weft", KesBendingFriction);
   fv->shear_friction = ReadFriction(map, kes, "shear_friction", "2HG", KesShearFriction);
-  if (const auto v = map.Find("bending_friction_smoothing")) {
-    fv->bending_friction_smoothing = ReadPositive(*v);
-  }
-  if (const auto v = map.Find("shear_friction_smoothing")) {
-    fv->shear_friction_smoothing = ReadPositive(*v);
-  }
-  if (const auto v = map.Find("friction_load_steps")) {
-    fv->friction_load_steps = ReadIntAtLeast(*v, 0);
-  }
 }
 
 // A rigidity in a message: four significant digits.
@@ -431,7 +392,9 @@ std::string ShortNumber(double value) {
 // The torsional rigidity: D_66 (N·m, ≥ 0) or one of the bias measurements `bias` converts, at most
 // one of them; else the default rule (src/scene/fabric_parameters.h).
 void ReadTwist(const YamlMap& map, const std::vector<ParameterWay>& bias, FiniteVolumeSpec* fv) {
-  std::vector<ParameterWay> ways = {{"D_66", map.Find("D_66"), ReadNonNegative}};
+  std::vector<ParameterWay> ways = {{"D_66", map.Find("D_66"), [](const YamlValue& v) {
+                                       return ReadRowNumber(v, "material.finite_volume", "D_66");
+                                     }}};
   ways.insert(ways.end(), bias.begin(), bias.end());
   const ParameterWay* given = GivenWay("D_66", ways);
   if (!given) {
@@ -517,18 +480,14 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
   if (const auto fm = find(kes, "Fm"); fm && !kes->Has("EMT_warp") && !kes->Has("EMT_weft")) {
     Fail(*fm, "Fm (gf/cm) applies only with EMT_warp or EMT_weft");
   }
-  if (const auto v = map.Find("nu_warp")) fv.nu_warp = ReadNumber(*v);
-  if (const auto v = map.Find("nu_weft")) fv.nu_weft = ReadNumber(*v);
+  ReadFields(map, "material.finite_volume", &fv);
   if (!(fv.nu_warp * fv.nu_weft < 1.0)) {
     Fail(map.Has("nu_weft") ? *map.Find("nu_weft") : *map.Find("nu_warp"),
          "nu_warp * nu_weft must be less than 1 (else the membrane energy is not positive)");
   }
   ReadFrictions(map, kes, &fv);
-  if (const auto v = map.Find("D_12")) {
-    fv.D_12 = ReadNumber(*v);
-    if (!(fv.D_12 * fv.D_12 < fv.D_warp * fv.D_weft)) {
-      Fail(*v, "D_12² must be less than D_warp * D_weft (else the bending energy is not positive)");
-    }
+  if (const auto v = map.Find("D_12"); v && !(fv.D_12 * fv.D_12 < fv.D_warp * fv.D_weft)) {
+    Fail(*v, "D_12² must be less than D_warp * D_weft (else the bending energy is not positive)");
   }
   const auto bias_rigidity = [&fv](double b45, const YamlValue& v) {
     const double d66 = BiasTorsionalRigidity(b45, fv.D_warp, fv.D_weft, fv.D_12);
@@ -632,8 +591,8 @@ std::vector<SpringLineSpec> ReadLines(const YamlValue& value) {
     SpringLineSpec line;
     line.where = item.where;
     line.nodes = ReadSelector(map.Get("nodes"));
-    line.stiffness = ReadPositive(map.Get("structural"));
-    if (const auto v = map.Find("tension_only")) line.tension_only = ReadBool(*v);
+    map.Get("structural");  // required
+    ReadFields(map, "material.lines", &line);
     lines.push_back(line);
   }
   return lines;
@@ -870,7 +829,7 @@ std::vector<FixedSpec> ReadFixed(const YamlValue& value) {
     spec.where = item.where;
     spec.nodes = ReadSelector(map.Get("nodes"));
     if (const auto dofs = map.Find("dofs")) spec.dofs = ReadDofs(*dofs);
-    if (const auto move = map.Find("move")) spec.move = ReadVector3(*move);
+    ReadFields(map, "fixed", &spec);
     fixed.push_back(spec);
   }
   return fixed;
@@ -943,7 +902,7 @@ LoadsSpec ReadLoads(const YamlValue& value) {
   const YamlMap map(value, SchemaKeys("loads"));
   LoadsSpec loads;
   loads.where = value.where;
-  if (const auto gravity = map.Find("gravity")) loads.gravity = ReadVector3(*gravity);
+  ReadFields(map, "loads", &loads);
   if (const auto forces = map.Find("forces")) {
     if (!forces->get().IsSequence() && !forces->get().IsNull()) {
       Fail(*forces, "expected a list of forces (- nodes: ...), got " + Describe(forces->get()));
@@ -968,22 +927,6 @@ const std::vector<std::string>& ObstacleKeys() {
   return keys;
 }
 
-// Reads one key into the obstacle, with its range.
-void ReadObstacleKey(const std::string& key, const YamlValue& value, ObstacleSpec* obstacle) {
-  obstacle->given[key] = value.where;
-  if (key == "center" || key == "position" || key == "point") obstacle->center = ReadVector3(value);
-  if (key == "radius") obstacle->radius = ReadPositive(value);
-  if (key == "height") obstacle->height = ReadPositive(value);
-  if (key == "min") obstacle->min = ReadVector3(value);
-  if (key == "max") obstacle->max = ReadVector3(value);
-  if (key == "friction") obstacle->friction = ReadNonNegative(value);
-  if (key == "normal") {
-    obstacle->normal = ReadVector3(value);
-    if (!(obstacle->normal.norm() > 0.0)) Fail(value, "must not be the zero vector");
-    obstacle->normal.normalize();
-  }
-}
-
 ObstacleSpec ReadObstacle(const YamlValue& item) {
   const YamlMap outer(item);
   const auto kinds = outer.Keys();
@@ -997,7 +940,9 @@ ObstacleSpec ReadObstacle(const YamlValue& item) {
   obstacle.kind = kinds[0];
   obstacle.where = value.where;
   const YamlMap map(value, ObstacleKeys());
-  for (const std::string& key : map.Keys()) ReadObstacleKey(key, map.Get(key), &obstacle);
+  for (const std::string& key : map.Keys()) obstacle.given[key] = map.Get(key).where;
+  ReadFields(map, "obstacles", &obstacle);
+  Normalise(map, "normal", &obstacle.normal);
   return obstacle;
 }
 
@@ -1014,9 +959,7 @@ ContactSpec ReadContact(const YamlValue& value) {
   const YamlMap map(value, SchemaKeys("contact"));
   ContactSpec contact;
   contact.where = value.where;
-  if (const auto thickness = map.Find("thickness")) {
-    contact.thickness = ReadNonNegative(*thickness);
-  }
+  ReadFields(map, "contact", &contact);
   return contact;
 }
 
@@ -1052,8 +995,8 @@ SolverSpec ReadSolver(const YamlValue& value) {
   const YamlMap map(value, keys);
   SolverSpec solver;
   solver.where = value.where;
+  ReadFields(map, "solver", &solver);
   if (const auto method = map.Find("method")) {
-    solver.method = ReadString(*method);
     if (!FindSolverMethod(solver.method)) {
       const auto nearest = NearestName(solver.method, methods);
       Fail(*method, "unknown method '" + solver.method + "'" +
@@ -1061,14 +1004,7 @@ SolverSpec ReadSolver(const YamlValue& value) {
                         " (methods: " + JoinNames(methods) + ")");
     }
   }
-  if (const auto v = map.Find("tolerance")) solver.tolerance = ReadPositive(*v);
-  if (const auto v = map.Find("max_iterations")) solver.max_iterations = ReadIntAtLeast(*v, 1);
-  if (const auto v = map.Find("time_limit")) solver.time_limit = ReadPositive(*v);
-  if (const auto v = map.Find("levels")) {
-    solver.levels = ReadIntAtLeast(*v, 1);
-    solver.levels_where = v->where;
-    if (solver.levels > 8) Fail(*v, "at most 8 levels (each halves the spacing)");
-  }
+  if (const auto v = map.Find("levels")) solver.levels_where = v->where;
   for (const auto& method : SolverMethods()) {
     if (const auto v = map.Find(method.name)) {
       solver.method_options[method.name] = ReadMethodOptions(method, *v);
@@ -1100,7 +1036,7 @@ OutputSpec ReadOutput(const YamlValue& value, const Scene& scene) {
       output.write.push_back(kind);
     }
   }
-  if (const auto up = map.Find("obj_up")) output.obj_up = ReadChoice(*up, {"z", "y"});
+  ReadFields(map, "output", &output);
   return output;
 }
 
@@ -1214,12 +1150,7 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   RefuseFitAndSweepFiles(root);
   const YamlMap top(root, SchemaKeys(""));
   if (const auto name = top.Find("name")) scene->name = ReadName(*name);
-  if (const auto dimension = top.Find("dimension")) {
-    scene->dimension = ReadInt(*dimension);
-    if (scene->dimension != 2 && scene->dimension != 3) {
-      Fail(*dimension, "must be 2 or 3, got " + std::to_string(scene->dimension));
-    }
-  }
+  ReadFields(top, "", scene);
   if (const auto test = top.Find("drape_test")) {
     scene->drape_test = ReadDrapeTest(*test);
     RefuseWhatTheDrapeTestSets(top);
@@ -1286,18 +1217,6 @@ Scene LoadScene(const std::string& path, const std::vector<std::string>& overrid
 Scene LoadSceneText(const std::string& text, const std::string& label, const std::string& directory,
                     const std::vector<std::string>& overrides) {
   return SceneDocument::Parse(text, label, directory).Load(overrides);
-}
-
-std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::string& key) {
-  auto three = [](const Eigen::Vector3d& v) { return std::vector<double>{v.x(), v.y(), v.z()}; };
-  if (key == "center" || key == "position" || key == "point") return three(obstacle.center);
-  if (key == "min") return three(obstacle.min);
-  if (key == "max") return three(obstacle.max);
-  if (key == "normal") return three(obstacle.normal);
-  if (key == "radius") return {obstacle.radius};
-  if (key == "height") return {obstacle.height};
-  assert(key == "friction" && "an obstacle key ReadObstacleKey does not read");
-  return {obstacle.friction};
 }
 
 }  // namespace drape

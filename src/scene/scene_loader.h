@@ -16,10 +16,6 @@ namespace drape {
 // Loads and validates `path`. `overrides` are "key.path=value" strings (`--set`), applied to the
 // document before validation; a value is parsed as YAML (`--set mesh.nodes=[30,30]`).
 // Throws InputError on any bad input.
-// The value an obstacle key holds (3 numbers for a point or vector, 1 for a length or friction), as
-// the loader read it: what src/output/scene_yaml.cc writes back.
-std::vector<double> ObstacleKeyValue(const ObstacleSpec& obstacle, const std::string& key);
-
 Scene LoadScene(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // A scene file read once. Each Load builds a Scene from its text, with `--set` overrides and then

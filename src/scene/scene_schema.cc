@@ -1,6 +1,7 @@
 #include "src/scene/scene_schema.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdlib>
 
@@ -16,21 +17,78 @@ namespace {
 
 using Base = SchemaRow::Base;
 
-// Builds a row: Row("mesh", "size").Is("[2]", "m", "each > 0").Default("`[1.0, 1.0]`")...
+// Builds a row: Row("mesh", "spacing").Number("m", Above(0)).Field(&MeshSpec::spacing)...
 class Row {
  public:
   Row(std::string table, std::string key) {
     row_.table = std::move(table);
     row_.key = std::move(key);
   }
+  // A composite value (or one given in words), read by hand: its type and range in words.
   Row& Is(std::string type, std::string unit = "", std::string range = "") {
     row_.type = std::move(type);
     row_.unit = std::move(unit);
     row_.range = std::move(range);
     return *this;
   }
+  Row& Is(std::string type, std::string unit, SchemaRange bounds) {
+    Is(std::move(type), std::move(unit));
+    row_.bounds = bounds;
+    return *this;
+  }
+  // A rule in words beside the type ("not zero", "> min"), checked by the loader's code.
+  Row& Rule(std::string words) {
+    row_.range = std::move(words);
+    return *this;
+  }
+  Row& Number(std::string unit, std::optional<SchemaRange> bounds = std::nullopt) {
+    const bool plain = unit.empty() || unit == "1";  // "number, > 1" rather than "> 1"
+    return Typed(ValueType::kNumber, plain ? "number" : "", std::move(unit), bounds);
+  }
+  Row& Integer(SchemaRange bounds) {
+    bounds.integer = true;
+    return Typed(ValueType::kInteger, "integer", "", bounds);
+  }
+  Row& Bool() { return Typed(ValueType::kBool, "`true` \\| `false`", "", std::nullopt); }
+  Row& Words(std::vector<std::string> words) {
+    row_.words = std::move(words);
+    return Typed(ValueType::kWord, ChoiceText(row_.words), "", std::nullopt);
+  }
+  Row& Text() { return Typed(ValueType::kText, "text", "", std::nullopt); }
+  Row& Point(std::string unit = "") { return Typed(ValueType::kPoint, "[3]", unit, std::nullopt); }
+  Row& Pair(std::string type, std::string unit) {
+    return Typed(ValueType::kPair, std::move(type), std::move(unit), std::nullopt);
+  }
+  // The member the value goes to; its value in a default-constructed owner is the default.
+  template <typename Owner, typename T>
+  Row& Field(T Owner::*member) {
+    row_.field = FieldOf(member);
+    const Owner blank{};
+    row_.default_value = row_.field.get(&blank);
+    return *this;
+  }
+  Row& Required() {
+    required_ = true;
+    return *this;
+  }
+  // A composite value's default, as YAML.
+  Row& DefaultYaml(std::string yaml) {
+    row_.default_yaml = std::move(yaml);
+    return *this;
+  }
+  Row& DefaultValue(FieldValue value) {
+    row_.default_value = std::move(value);
+    return *this;
+  }
+  // The default in words (replaces the typed default's text, not the typed default).
   Row& Default(std::string text) {
     row_.default_text = std::move(text);
+    prose_default_ = true;
+    return *this;
+  }
+  // A remark after the typed default's text: "`0` (elastic)".
+  Row& Remark(std::string text) {
+    remark_ = " (" + std::move(text) + ")";
     return *this;
   }
   Row& Doc(std::string text) {
@@ -52,14 +110,37 @@ class Row {
     row_.written_value = std::move(value);
     return *this;
   }
-  operator SchemaRow() const { return row_; }  // NOLINT(google-explicit-constructor): a builder
+  operator SchemaRow() const {  // NOLINT(google-explicit-constructor): a builder
+    SchemaRow row = row_;
+    if (required_) row.default_text = "**required**";
+    if (required_ || prose_default_) row.default_value = {};
+    if (row.bounds) row.range = row.bounds->Text();
+    const std::string text = FieldValueText(row.default_value);
+    if (!text.empty()) row.default_yaml = text;
+    if (row.default_text.empty() && !row.default_yaml.empty()) {
+      row.default_text = "`" + row.default_yaml + "`" + remark_;
+    }
+    return row;
+  }
 
  private:
+  static std::string ChoiceText(const std::vector<std::string>& names);
+  Row& Typed(ValueType value, std::string type, std::string unit,
+             std::optional<SchemaRange> bounds) {
+    row_.value = value;
+    row_.type = std::move(type);
+    row_.unit = std::move(unit);
+    row_.bounds = bounds;
+    return *this;
+  }
   SchemaRow row_;
+  std::string remark_;
+  bool required_ = false;
+  bool prose_default_ = false;
 };
 
 // "`a` \\| `b`": a choice among names, as the reference's type column writes it.
-std::string ChoiceText(const std::vector<std::string>& names) {
+std::string Row::ChoiceText(const std::vector<std::string>& names) {
   std::string text;
   for (const auto& name : names) text += (text.empty() ? "`" : " \\| `") + name + "`";
   return text;
@@ -90,13 +171,13 @@ std::vector<SchemaRow> TopLevel() {
   const std::string t;
   return {
       Row(t, "name")
-          .Is("text")
+          .Text()
           .Default("the file's stem")
           .Doc("used in reports and in the default output folder; no `/`")
           .Example({"name=other"}),
       Row(t, "dimension")
-          .Is("`3` or `2`")
-          .Default("`3`")
+          .Integer(Between(2, 3))
+          .Field(&Scene::dimension)
           .Doc("`2`: nodes move in the x–z plane only (the mesh must lie in one plane y = const)")
           .Example({"mesh.plane=xz", "dimension=2"}),
       Row(t, "mesh")
@@ -154,52 +235,53 @@ std::vector<SchemaRow> DrapeTest() {
   auto row = [&](const char* key) { return Row(t, key).On(Base::kDrapeTest); };
   return {
       row("specimen_diameter")
-          .Is("", "m", "> 0")
-          .Default("`0.30`")
+          .Number("m", Above(0))
+          .Field(&DrapeTestSpec::specimen_diameter)
           .Doc("the circular specimen: a `circle` mesh of this diameter, lying on the disc's "
                "clearance layer (z = `contact.thickness`)")
           .Example({"drape_test.specimen_diameter=0.24"}, "mesh.radius", "0.12"),
       row("disc_diameter")
-          .Is("", "m", "> 0")
-          .Default("`0.18`")
+          .Number("m", Above(0))
+          .Field(&DrapeTestSpec::disc_diameter)
           .Doc("the support disc (a `disk` obstacle at z = 0); smaller than the specimen")
           .Example({"drape_test.disc_diameter=0.2"}, "obstacles[0].disk.radius", "0.1"),
       row("clamp_diameter")
-          .Is("", "m", "> 0")
+          .Number("m", Above(0))
+          .Field(&DrapeTestSpec::clamp_diameter)
           .Default("disc − 1 cm")
           .Doc("the nodes within it (around the disc's centre) are held in x, y and z: the "
                "specimen clamped between the support and cover discs; the ring out to the rim "
                "rests on the disc by contact")
           .Example({"drape_test.clamp_diameter=0.1"}, "fixed[0].nodes.within.radius", "0.05"),
       row("offset")
-          .Is("[x, y]", "m")
-          .Default("`[0.0013, 0.0007]`")
+          .Pair("[x, y]", "m")
+          .Field(&DrapeTestSpec::offset)
           .Doc("the disc's centre seen from the specimen's: a real specimen is never centred "
                "exactly, and the offset keeps the lattice from imposing the fold pattern")
           .Example({"drape_test.offset=[0.002, 0.001]"}, "obstacles[0].disk.center",
                    "[0.002, 0.001, 0]"),
       row("drops")
-          .Is("whole number", "", "1–" + std::to_string(kMostDrops))
-          .Default("`1`")
+          .Integer(Between(1, kMostDrops))
+          .Field(&DrapeTestSpec::drops)
           .Doc("repeated drops (`drape solve --drops N` overrides it), below; scene.yaml, the "
                "expanded scene of one drop, does not write it")
           .Example({"drape_test.drops=3"}, kNotWritten),
       row("placement")
-          .Is("", "m", "≥ 0")
-          .Default("`0.002`")
+          .Number("m", AtLeast(0))
+          .Field(&DrapeTestSpec::placement)
           .Doc("each drop moves the disc's centre from `offset` by a point drawn uniformly from a "
                "disc of this radius (not in scene.yaml, as `drops`)")
           .Example({"drape_test.placement=0.001"}, kNotWritten),
       row("waviness")
-          .Is("", "m", "≥ 0")
-          .Default("`0.002`")
+          .Number("m", AtLeast(0))
+          .Field(&DrapeTestSpec::waviness)
           .Doc("each drop starts the overhang this far out of plane at most: w g(θ) s², s from 0 "
                "at the rim to 1 at the edge, g a random sum of the angular modes 1–12 scaled to "
                "max \\|g\\| = 1 (not in scene.yaml, as `drops`)")
           .Example({"drape_test.waviness=0.001"}, kNotWritten),
       row("seed")
-          .Is("whole number", "", "≥ 0")
-          .Default("`1`")
+          .Integer(AtLeast(0))
+          .Field(&DrapeTestSpec::seed)
           .Doc("the drops' random draws come from (seed, drop number) alone (not in scene.yaml, "
                "as `drops`)")
           .Example({"drape_test.seed=7"}, kNotWritten),
@@ -210,19 +292,19 @@ std::vector<SchemaRow> Mesh() {
   const std::string t = "mesh";
   return {
       Row(t, "kind")
-          .Is("`grid` \\| `circle` \\| `arc` \\| `chain` \\| `file`")
-          .Default("`grid`")
+          .Words({"grid", "circle", "arc", "chain", "file"})
+          .DefaultValue(std::string("grid"))
           .Example({"mesh={kind: arc}"}),
       Row(t, "size")
           .For({"grid"})
           .Is("[2]", "m", "each > 0 (≥ 0 along an axis of 1 node)")
-          .Default("`[1.0, 1.0]`")
+          .DefaultYaml("[1, 1]")
           .Doc("extent along u (x, warp) and v (weft)")
           .Example({"mesh.size=[2, 3]"}),
       Row(t, "nodes")
           .For({"grid"})
-          .Is("[2] integers", "", "≥ 1")
-          .Default("`[15, 15]`")
+          .Is("[2] integers", "", Whole(AtLeast(1)))
+          .DefaultYaml("[15, 15]")
           .Doc("node counts along u and v; at least 2 nodes in all")
           .Example({"mesh.nodes=[4, 5]"}),
       Row(t, "u")
@@ -238,26 +320,26 @@ std::vector<SchemaRow> Mesh() {
           .Example({"mesh={v: [0, 1, 3]}"}, "mesh.v", "[0, 1, 3]"),
       Row(t, "plane")
           .For({"grid"})
-          .Is("`xy` \\| `xz`")
-          .Default("`xy`")
+          .Words({"xy", "xz"})
+          .Field(&MeshSpec::plane)
           .Doc("`xy` lies flat; `xz` stands vertical with v along +z")
           .Example({"mesh.plane=xz"}),
       Row(t, "origin")
           .For({"grid", "circle", "arc", "chain"})
-          .Is("[3]", "m")
-          .Default("`[0, 0, 0]`")
+          .Point("m")
+          .Field(&MeshSpec::origin)
           .Doc("position of node (0, 0), the centre, or the first node")
           .Example({"mesh.origin=[1, 2, 3]"}),
       Row(t, "radius")
           .For({"circle", "arc"})
-          .Is("", "m", "> 0")
-          .Default("`0.15`")
+          .Number("m", Above(0))
+          .Field(&MeshSpec::radius)
           .Doc("disc radius")
           .Example({"mesh={kind: circle, radius: 0.2, spacing: 0.05}"}, "mesh.radius", "0.2"),
       Row(t, "spacing")
           .For({"circle"})
-          .Is("", "m", "> 0")
-          .Default("`0.01`")
+          .Number("m", Above(0))
+          .Field(&MeshSpec::spacing)
           .Doc("lattice spacing of the square grid clipped to the disc; the nodes' lumped areas "
                "(and masses) are the disc cut into the lattice cells, adding up to πR² at every "
                "spacing. The surface triangles cover the lattice's staircase polygon (90–98 % of "
@@ -268,37 +350,38 @@ std::vector<SchemaRow> Mesh() {
           .Example({"mesh={kind: circle, spacing: 0.05}"}, "mesh.spacing", "0.05"),
       Row(t, "rings")
           .For({"arc"})
-          .Is("integer", "", "≥ 1")
-          .Default("`15`")
+          .Integer(AtLeast(1))
+          .Field(&MeshSpec::rings)
           .Doc("concentric rings")
           .Example({"mesh={kind: arc, rings: 3}"}, "mesh.rings", "3"),
       Row(t, "spokes")
           .For({"arc"})
-          .Is("integer", "", "≥ 3")
-          .Default("`64`")
+          .Integer(AtLeast(3))
+          .Field(&MeshSpec::spokes)
           .Doc("radial spokes")
           .Example({"mesh={kind: arc, spokes: 5}"}, "mesh.spokes", "5"),
       Row(t, "length")
           .For({"chain"})
-          .Is("", "m", "> 0")
-          .Default("`1.0`")
+          .Number("m", Above(0))
+          .Field(&MeshSpec::length)
           .Doc("length of the line")
           .Example({"mesh={kind: chain, length: 2}"}, "mesh.length", "2"),
       Row(t, "nodes")
           .For({"chain"})
-          .Is("integer", "", "≥ 2")
-          .Default("`11`")
+          .Integer(AtLeast(2))
+          .Field(&MeshSpec::chain_nodes)
           .Doc("nodes along the line")
           .Example({"mesh={kind: chain, nodes: 4}"}, "mesh.nodes", "4"),
       Row(t, "direction")
           .For({"chain"})
-          .Is("[3]", "", "not zero")
-          .Default("`[1, 0, 0]`")
+          .Point()
+          .Rule("not zero")
+          .Field(&MeshSpec::direction)
           .Doc("direction of the line (normalised)")
           .Example({"mesh={kind: chain, direction: [0, 1, 0]}"}, "mesh.direction", "[0, 1, 0]"),
       Row(t, "path")
           .For({"file"})
-          .Is("text")
+          .Text()
           .Default(kRequired)
           .Doc("an OBJ, PLY or STL surface (by its extension, any case), relative to the scene "
                "file's folder unless absolute; springs follow its edges; every face must have a "
@@ -319,14 +402,14 @@ std::vector<SchemaRow> Mesh() {
                    "[[0, 0, 0], [1, 0, 0]]"),
       Row(t, "closed")
           .For({"chain"})
-          .Is("`true` \\| `false`")
-          .Default("`false`")
+          .Bool()
+          .Field(&MeshSpec::closed)
           .Doc("`true`: a link from the last node back to the first (a closed profile, e.g. an "
                "airfoil); flexion links wrap around too (from 5 nodes on)")
           .Example({"mesh={kind: chain, closed: true}"}, "mesh.closed", "true"),
       Row(t, "max_nodes")
-          .Is("integer", "", "in [2, 10⁸]")
-          .Default("`1000000`")
+          .Integer(Between(2, kLargestMaxNodes))
+          .Field(&MeshSpec::max_nodes)
           .Doc("the largest mesh the scene may build: a mesh with more nodes (counted before "
                "anything is built: nu × nv, 1 + rings × spokes, the circle's lattice; a file's "
                "vertices once read) is a located error that gives the node count and the memory "
@@ -339,22 +422,22 @@ std::vector<SchemaRow> Material() {
   const std::string t = "material";
   return {
       Row(t, "model")
-          .Is(ChoiceText(MaterialModelNames()))
-          .Default("`" + MaterialModelName(MaterialSpec().model) + "`")
+          .Words(MaterialModelNames())
+          .DefaultValue(MaterialModelName(MaterialSpec().model))
           .Doc("one of the material models below")
           .On(Base::kFiniteVolume)
           .Example({"material.model=finite_volume"}),
       Row(t, "density")
-          .Is("", "kg/m²", "> 0")
+          .Number("kg/m²", Above(0))
           .Doc("areal density (per metre for a chain), lumped to the nodes")
           .Example({"material.density=0.3"}),
       Row(t, "node_mass")
-          .Is("", "kg", "> 0")
+          .Number("kg", Above(0))
           .Doc("mass of every node")
           .Example({"material={node_mass: 0.01, springs: {structural: 100}}"}, "material.node_mass",
                    "0.01"),
       Row(t, "total_mass")
-          .Is("", "kg", "> 0")
+          .Number("kg", Above(0))
           .Doc("mass of the whole fabric")
           .Example({"material={total_mass: 2, springs: {structural: 100}}"}, "material.total_mass",
                    "2"),
@@ -387,13 +470,14 @@ std::vector<SchemaRow> Lines() {
           .Doc("the nodes the line runs through")
           .Example({line}, "material.lines[0].nodes", "{row: 1}"),
       Row(t, "structural")
-          .Is("", "N/m", "> 0")
-          .Default(kRequired)
+          .Number("N/m", Above(0))
+          .Field(&SpringLineSpec::stiffness)
+          .Required()
           .Doc("stiffness of each of the line's springs")
           .Example({line}, "material.lines[0].structural", "30"),
       Row(t, "tension_only")
-          .Is("`true` \\| `false`")
-          .Default("`false`")
+          .Bool()
+          .Field(&SpringLineSpec::tension_only)
           .Doc("a stitched thread: no force under compression")
           .Example({line}, "material.lines[0].tension_only", "true"),
   };
@@ -404,32 +488,33 @@ std::vector<SchemaRow> Springs() {
   const std::string family = "number or `{warp: …, weft: …}`";
   return {
       Row(t, "structural")
-          .Is(family, "N/m", "> 0")
+          .Is(family, "N/m", Above(0))
           .Default("not built")
           .Doc("springs between neighbours along u (warp) and v (weft)")
           .Example({"material.springs.structural={warp: 10, weft: 20}"}),
       Row(t, "shear")
-          .Is(family, "N/m", "> 0")
+          .Is(family, "N/m", Above(0))
           .Default("not built")
           .Doc("diagonal springs of each quad")
           .Example({"material.springs.shear={warp: 3, weft: 4}"}),
       Row(t, "flexion")
-          .Is(family, "N/m", "> 0")
+          .Is(family, "N/m", Above(0))
           .Default("not built")
           .Doc("skip-one springs (bending resistance)")
           .Example({"material.springs.flexion={warp: 1, weft: 2}"}),
       Row(t, "rest_length")
-          .Is("`initial` \\| `zero` \\| a length", "m", "> 0")
-          .Default("`initial`")
+          .Is("`initial` \\| `zero` \\| a length", "m", Above(0))
+          .DefaultYaml("initial")
           .Doc("rest length of every spring: as meshed, zero, or the given length")
           .Example({"material.springs.rest_length=zero"}),
       Row(t, "tension_only")
-          .Is("`true` \\| `false`")
-          .Default("`false`")
+          .Bool()
+          .Field(&SpringsSpec::tension_only)
           .Doc("no resistance under compression")
           .Example({"material.springs.tension_only=true"}),
       Row(t, "stretch_limit")
-          .Is("number", "", "> 1")
+          .Number("", Above(1))
+          .Field(&SpringsSpec::stretch_limit)
           .Default("none")
           .Doc("maximum stretch ratio allowed: a penalty ½κ max(\\|d\\| − λL₀, 0)² with κ = 1000 k "
                "on every spring for the energy solvers (a spring ends at most (λ_free − λ)/1001 "
@@ -449,47 +534,47 @@ std::vector<SchemaRow> FiniteVolume() {
   };
   return {
       row("E_warp")
-          .Is("", "N/m", "> 0")
+          .Number("N/m", Above(0))
           .Default("**required** unless given by `kes` or `fast`")
           .Doc("membrane (tensile) rigidity per unit width along the warp")
           .Example(set("E_warp", "2000")),
       row("E_weft")
-          .Is("", "N/m", "> 0")
+          .Number("N/m", Above(0))
           .Default("**required** unless given by `kes` or `fast`")
           .Doc("membrane (tensile) rigidity per unit width along the weft")
           .Example(set("E_weft", "3000")),
       row("nu_warp")
-          .Is("", "1")
-          .Default("`0`")
+          .Number("1")
+          .Field(&FiniteVolumeSpec::nu_warp)
           .Doc("Poisson's ratio; `nu_warp * nu_weft < 1`")
           .Example(set("nu_warp", "0.2")),
       row("nu_weft")
-          .Is("", "1")
-          .Default("`0`")
+          .Number("1")
+          .Field(&FiniteVolumeSpec::nu_weft)
           .Doc("Poisson's ratio; `nu_warp * nu_weft < 1`")
           .Example(set("nu_weft", "0.3")),
       row("G")
-          .Is("", "N/m", "> 0")
+          .Number("N/m", Above(0))
           .Default("**required** unless given by `kes` or `fast`")
           .Doc("in-plane shear rigidity")
           .Example(set("G", "20")),
       row("D_warp")
-          .Is("", "N*m", "> 0")
+          .Number("N*m", Above(0))
           .Default("**required** unless given by `kes`, `fast` or `bending_length`")
           .Doc("bending rigidity along the warp")
           .Example(set("D_warp", "2e-05")),
       row("D_weft")
-          .Is("", "N*m", "> 0")
+          .Number("N*m", Above(0))
           .Default("**required** unless given by `kes`, `fast` or `bending_length`")
           .Doc("bending rigidity along the weft")
           .Example(set("D_weft", "3e-05")),
       row("D_12")
-          .Is("", "N*m")
-          .Default("`0`")
+          .Number("N*m")
+          .Field(&FiniteVolumeSpec::D_12)
           .Doc("coupling rigidity; `D_12² < D_warp * D_weft`")
           .Example(set("D_12", "1e-06")),
       row("D_66")
-          .Is("", "N*m", "≥ 0")
+          .Number("N*m", AtLeast(0))
           .Default("`√(D_warp · D_weft) / 3` unless given by `kes.B_bias` or `bending_length.bias`")
           .Doc("torsional (twisting) rigidity, M₁₂ = D_66 · 2κ₁₂; an isotropic plate's is "
                "D (1 − ν)/2; the default and its source: [Twist](#twist)")
@@ -514,37 +599,41 @@ std::vector<SchemaRow> FiniteVolume() {
                     "1.5}}"},
                    "material.finite_volume.D_weft", "6.61948875e-06"),
       row("bending_friction_warp")
-          .Is("", "N", "≥ 0")
-          .Default("`0` (elastic)")
+          .Number("N", AtLeast(0))
+          .Field(&FiniteVolumeSpec::bending_friction_warp)
+          .Remark("elastic")
           .Doc("the friction moment per unit width (N·m/m) between fibres and yarns in bending "
                "along the warp, H = 2HB/2 (or `kes.2HB_warp`); below")
           .Example(set("bending_friction_warp", "0.001")),
       row("bending_friction_weft")
-          .Is("", "N", "≥ 0")
-          .Default("`0` (elastic)")
+          .Number("N", AtLeast(0))
+          .Field(&FiniteVolumeSpec::bending_friction_weft)
+          .Remark("elastic")
           .Doc("the same along the weft (or `kes.2HB_weft`)")
           .Example(set("bending_friction_weft", "0.002")),
       row("bending_friction_smoothing")
-          .Is("", "1/m", "> 0")
-          .Default("`0.1`")
+          .Number("1/m", Above(0))
+          .Field(&FiniteVolumeSpec::bending_friction_smoothing)
           .Doc("δ: the curvature below which the friction's kink at the flat state is smoothed "
                "(written where the fabric has a bending friction)")
           .Example({at + "bending_friction_warp=0.001", at + "bending_friction_smoothing=0.05"}),
       row("shear_friction")
-          .Is("", "N/m", "≥ 0")
-          .Default("`0` (elastic)")
+          .Number("N/m", AtLeast(0))
+          .Field(&FiniteVolumeSpec::shear_friction)
+          .Remark("elastic")
           .Doc("the friction force per unit width between yarns in shear, HG = 2HG/2 (or "
                "`kes.2HG`); below")
           .Example(set("shear_friction", "0.01")),
       row("shear_friction_smoothing")
-          .Is("", "rad", "> 0")
-          .Default("`0.001`")
+          .Number("rad", Above(0))
+          .Field(&FiniteVolumeSpec::shear_friction_smoothing)
           .Doc("δ: the shear angle below which the shear friction's kink at the rest state is "
                "smoothed (written where the fabric has a shear friction)")
           .Example({at + "shear_friction=0.01", at + "shear_friction_smoothing=0.002"}),
       row("friction_load_steps")
-          .Is("integer", "", "≥ 0")
-          .Default("`0` (monotone)")
+          .Integer(AtLeast(0))
+          .Field(&FiniteVolumeSpec::friction_load_steps)
+          .Remark("monotone")
           .Doc("N ≥ 1: the frictions' incremental form, the loads ramped in N steps (below); 0: "
                "the loads at once")
           .Example(set("friction_load_steps", "3")),
@@ -559,17 +648,17 @@ std::vector<SchemaRow> Kes() {
   auto row = [&](const char* key) { return Row(t, key).On(Base::kFiniteVolume); };
   return {
       row("B_warp")
-          .Is("", "gf·cm²/cm", "> 0")
+          .Number("gf·cm²/cm", Above(0))
           .Doc("→ `D_warp` (N·m): D = B × 9.80665e-5")
           .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_weft: 1e-5, kes: {B_warp: 0.1}}"},
                    si + "D_warp", "9.80665e-06"),
       row("B_weft")
-          .Is("", "gf·cm²/cm", "> 0")
+          .Number("gf·cm²/cm", Above(0))
           .Doc("→ `D_weft` (N·m), as `B_warp`")
           .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, kes: {B_weft: 0.1}}"},
                    si + "D_weft", "9.80665e-06"),
       row("B_bias")
-          .Is("", "gf·cm²/cm", "> 0")
+          .Number("gf·cm²/cm", Above(0))
           .Doc("the bending rigidity of a strip cut at 45° to the warp → `D_66` (N·m) by the "
                "orthotropic plate's compliance: D_66 = 1 / (4/B₄₅ − 1/D_warp − 1/D_weft) "
                "(with `D_12` = 0; [Twist](#twist))")
@@ -577,61 +666,61 @@ std::vector<SchemaRow> Kes() {
                          "{B_bias: 0.08}}"},
                    si + "D_66", "3.227283647121932e-06"),
       row("G")
-          .Is("", "gf/(cm·deg)", "> 0")
+          .Number("gf/(cm·deg)", Above(0))
           .Doc("→ `G` (N/m, per radian): G = G_kes × 0.980665 × 180/π = G_kes × 56.188")
           .Example({fv + "{E_warp: 1000, E_weft: 1000, D_warp: 1e-5, D_weft: 1e-5, kes: {G: 1}}"},
                    si + "G", "56.18796561619688"),
       row("W")
-          .Is("", "mg/cm²", "> 0")
+          .Number("mg/cm²", Above(0))
           .Doc("→ the areal density (kg/m²), replacing `material.density`: ρ = W / 100")
           .Example({"material={model: finite_volume, finite_volume: {E_warp: 1000, E_weft: 1000, "
                     "G: 10, D_warp: 1e-5, D_weft: 1e-5, kes: {W: 12}}}"},
                    "material.density", "0.12"),
       row("EMT_warp")
-          .Is("", "%", "> 0")
+          .Number("%", Above(0))
           .Doc("→ `E_warp` (N/m): E = LT · Fm / (EMT/100)")
           .Example({fv + "{E_weft: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, kes: {EMT_warp: 5}}"},
                    si + "E_warp", "9806.65"),
       row("EMT_weft")
-          .Is("", "%", "> 0")
+          .Number("%", Above(0))
           .Doc("→ `E_weft` (N/m), as `EMT_warp`")
           .Example({fv + "{E_warp: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, kes: {EMT_weft: 5}}"},
                    si + "E_weft", "9806.65"),
       row("LT_warp")
-          .Is("", "1", "> 0")
-          .Default("`1`")
+          .Number("1", Above(0))
+          .DefaultValue(1.0)
           .Doc("the linearity of the tensile curve, with `EMT_warp`")
           .Example({fv + "{E_weft: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, kes: {EMT_warp: 5, "
                          "LT_warp: 0.5}}"},
                    si + "E_warp", "4903.325"),
       row("LT_weft")
-          .Is("", "1", "> 0")
-          .Default("`1`")
+          .Number("1", Above(0))
+          .DefaultValue(1.0)
           .Doc("the linearity of the tensile curve, with `EMT_weft`")
           .Example({fv + "{E_warp: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, kes: {EMT_weft: 5, "
                          "LT_weft: 0.5}}"},
                    si + "E_weft", "4903.325"),
       row("Fm")
-          .Is("", "gf/cm", "> 0")
-          .Default("`500`")
+          .Number("gf/cm", Above(0))
+          .DefaultValue(500.0)
           .Doc("the load at which EMT was measured (500 gf/cm, the standard condition, is "
                "490.33 N/m); only with `EMT_warp` or `EMT_weft`")
           .Example({fv + "{E_weft: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, kes: {EMT_warp: 5, "
                          "Fm: 250}}"},
                    si + "E_warp", "4903.325"),
       row("2HB_warp")
-          .Is("", "gf·cm/cm", "≥ 0")
-          .Default("`0`")
+          .Number("gf·cm/cm", AtLeast(0))
+          .DefaultValue(0.0)
           .Doc("→ `bending_friction_warp` (N): H = 2HB/2 × 9.80665e-3")
           .Example({si + "kes={2HB_warp: 0.2}"}, si + "bending_friction_warp", "9.80665e-04"),
       row("2HB_weft")
-          .Is("", "gf·cm/cm", "≥ 0")
-          .Default("`0`")
+          .Number("gf·cm/cm", AtLeast(0))
+          .DefaultValue(0.0)
           .Doc("→ `bending_friction_weft` (N), as `2HB_warp`")
           .Example({si + "kes={2HB_weft: 0.2}"}, si + "bending_friction_weft", "9.80665e-04"),
       row("2HG")
-          .Is("", "gf/cm", "≥ 0")
-          .Default("`0`")
+          .Number("gf/cm", AtLeast(0))
+          .DefaultValue(0.0)
           .Doc("→ `shear_friction` (N/m): HG = 2HG/2 × 0.980665")
           .Example({si + "kes={2HG: 2}"}, si + "shear_friction", "0.980665"),
   };
@@ -645,34 +734,34 @@ std::vector<SchemaRow> Fast() {
   auto row = [&](const char* key) { return Row(t, key).On(Base::kFiniteVolume); };
   return {
       row("W")
-          .Is("", "g/m²", "> 0")
+          .Number("g/m²", Above(0))
           .Doc("→ the areal density (kg/m²), replacing `material.density`: ρ = W / 1000")
           .Example({"material={model: finite_volume, finite_volume: {E_warp: 1000, E_weft: 1000, "
                     "G: 10, D_warp: 1e-5, D_weft: 1e-5, fast: {W: 150}}}"},
                    "material.density", "0.15"),
       row("B_warp")
-          .Is("", "µN·m", "> 0")
+          .Number("µN·m", Above(0))
           .Doc("→ `D_warp` (N·m): D = B × 1e-6")
           .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_weft: 1e-5, fast: {B_warp: 7.5}}"},
                    si + "D_warp", "7.5e-06"),
       row("B_weft")
-          .Is("", "µN·m", "> 0")
+          .Number("µN·m", Above(0))
           .Doc("→ `D_weft` (N·m), as `B_warp`")
           .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, fast: {B_weft: 7.5}}"},
                    si + "D_weft", "7.5e-06"),
       row("EB5")
-          .Is("", "%", "> 0")
+          .Number("%", Above(0))
           .Doc("the bias extensibility at 5 gf/cm → `G` (N/m): FAST's G = 123 / EB5")
           .Example(
               {fv + "{E_warp: 1000, E_weft: 1000, D_warp: 1e-5, D_weft: 1e-5, fast: {EB5: 2}}"},
               si + "G", "61.5"),
       row("E100_warp")
-          .Is("", "%", "> 0")
+          .Number("%", Above(0))
           .Doc("the extensibility at 100 gf/cm → `E_warp` (N/m): E = 98.0665 / (E100/100)")
           .Example({fv + "{E_weft: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, fast: {E100_warp: 2}}"},
                    si + "E_warp", "4903.325"),
       row("E100_weft")
-          .Is("", "%", "> 0")
+          .Number("%", Above(0))
           .Doc("→ `E_weft` (N/m), as `E100_warp`")
           .Example({fv + "{E_warp: 1000, G: 10, D_warp: 1e-5, D_weft: 1e-5, fast: {E100_weft: 2}}"},
                    si + "E_weft", "4903.325"),
@@ -684,21 +773,21 @@ std::vector<SchemaRow> BendingLength() {
   const std::string fv = "material.finite_volume=";
   return {
       Row(t, "warp")
-          .Is("", "cm", "> 0")
+          .Number("cm", Above(0))
           .Doc("→ `D_warp` (N·m): D = ρ g_n c³")
           .On(Base::kFiniteVolume)
           .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_weft: 1e-5, bending_length: "
                          "{warp: 1.5}}"},
                    "material.finite_volume.D_warp", "6.61948875e-06"),
       Row(t, "weft")
-          .Is("", "cm", "> 0")
+          .Number("cm", Above(0))
           .Doc("→ `D_weft` (N·m), as `warp`")
           .On(Base::kFiniteVolume)
           .Example({fv + "{E_warp: 1000, E_weft: 1000, G: 10, D_warp: 1e-5, bending_length: "
                          "{weft: 1.5}}"},
                    "material.finite_volume.D_weft", "6.61948875e-06"),
       Row(t, "bias")
-          .Is("", "cm", "> 0")
+          .Number("cm", Above(0))
           .Doc("the bending length of a strip cut at 45° to the warp → B₄₅ = ρ g_n c³ → `D_66` "
                "(N·m), as `kes.B_bias`")
           .On(Base::kFiniteVolume)
@@ -708,16 +797,16 @@ std::vector<SchemaRow> BendingLength() {
   };
 }
 
-std::string RangeText(FiniteVolumeKey::Range range) {
+std::optional<SchemaRange> KeyBounds(FiniteVolumeKey::Range range) {
   switch (range) {
     case FiniteVolumeKey::Range::kPositive:
-      return "> 0";
+      return Above(0);
     case FiniteVolumeKey::Range::kNonNegative:
-      return "≥ 0";
+      return AtLeast(0);
     case FiniteVolumeKey::Range::kAny:
       break;
   }
-  return "";
+  return std::nullopt;
 }
 
 // regions: the selection, the name, and the overrides (the finite-volume ones are
@@ -734,40 +823,40 @@ std::vector<SchemaRow> Regions() {
           .Doc("which nodes")
           .Example(region("density: 0.4"), "regions[0].nodes", "{row: 0}"),
       Row(t, "name")
-          .Is("text")
+          .Text()
           .Default("none")
           .Doc("a name, unique among the regions, by which supports, loads, spring lines and "
                "later regions select the region's nodes: `nodes: {region: hem}`")
           .Example(region("density: 0.4, name: hem"), "regions[0].name", "hem"),
       Row(t, "density")
           .For({"the material gives `density` (or `kes.W`)"})
-          .Is("", "kg/m²", "> 0")
+          .Number("kg/m²", Above(0))
           .Default("the material's")
           .Doc("the areal density")
           .Example(region("density: 0.4"), "regions[0].density", "0.4"),
       Row(t, "structural")
           .For({"`material.springs` is given"})
-          .Is("number or `{warp: …, weft: …}`", "N/m", "> 0")
+          .Is("number or `{warp: …, weft: …}`", "N/m", Above(0))
           .Default("the material's")
           .Doc("that spring family")
           .Example(region("structural: {warp: 5, weft: 6}"), "regions[0].structural",
                    "{warp: 5, weft: 6}"),
       Row(t, "shear")
           .For({"`material.springs` is given"})
-          .Is("number or `{warp: …, weft: …}`", "N/m", "> 0")
+          .Is("number or `{warp: …, weft: …}`", "N/m", Above(0))
           .Default("the material's")
           .Doc("that spring family")
           .Example(region("shear: {warp: 5, weft: 6}"), "regions[0].shear", "{warp: 5, weft: 6}"),
       Row(t, "flexion")
           .For({"`material.springs` is given"})
-          .Is("number or `{warp: …, weft: …}`", "N/m", "> 0")
+          .Is("number or `{warp: …, weft: …}`", "N/m", Above(0))
           .Default("the material's")
           .Doc("that spring family")
           .Example(region("flexion: {warp: 5, weft: 6}"), "regions[0].flexion",
                    "{warp: 5, weft: 6}"),
       Row(t, "tension_only")
           .For({"`material.springs` is given"})
-          .Is("`true` \\| `false`")
+          .Bool()
           .Default("the material's")
           .Doc("the springs' `tension_only`")
           .Example(region("tension_only: true"), "regions[0].tension_only", "true"),
@@ -775,7 +864,7 @@ std::vector<SchemaRow> Regions() {
   for (const FiniteVolumeKey& key : FiniteVolumeKeys()) {
     rows.push_back(Row(t, key.key)
                        .For({"`finite_volume`"})
-                       .Is("", key.unit, RangeText(key.range))
+                       .Number(key.unit, KeyBounds(key.range))
                        .Default("the material's")
                        .Doc("`finite_volume." + key.key + "`")
                        .On(Base::kFiniteVolume)
@@ -819,7 +908,7 @@ std::vector<SchemaRow> NodeSelections() {
           "{outside: {center: [0, 0, 0], radius: 0.5}}"),
       row("all", "`true`", "every node: `{all: true}`", "{all: true}"),
       Row(t, "region")
-          .Is("text")
+          .Text()
           .Doc("the nodes of the region of that name (`regions`): `{region: hem}`; scene.yaml "
                "writes the region's own selection")
           .Example({"regions=[{name: hem, nodes: {row: 2}, density: 0.4}]",
@@ -839,12 +928,12 @@ std::vector<SchemaRow> Fixed() {
           .Example({fixed}, "fixed[0].nodes", "{edge: left}"),
       Row(t, "dofs")
           .Is("list of `x`, `y`, `z` (no repeats)")
-          .Default("`[x, y, z]`")
+          .DefaultYaml("[x, y, z]")
           .Doc("the directions held; a subset fixes only those")
           .Example({fixed}, "fixed[0].dofs", "[z]"),
       Row(t, "move")
-          .Is("[3]", "m")
-          .Default("`[0, 0, 0]`")
+          .Point("m")
+          .Field(&FixedSpec::move)
           .Doc("prescribed displacement of the selection")
           .Example({fixed}, "fixed[0].move", "[0, 0, 0.1]"),
   };
@@ -854,7 +943,8 @@ std::vector<SchemaRow> Loads() {
   const std::string t = "loads";
   return {
       Row(t, "gravity")
-          .Is("[3]", "m/s²")
+          .Point("m/s²")
+          .Field(&LoadsSpec::gravity)
           .Default("none (no weight)")
           .Doc("e.g. `[0, 0, -9.81]`")
           .Example({"loads.gravity=[0, 0, -9.81]"}),
@@ -865,7 +955,7 @@ std::vector<SchemaRow> Loads() {
                "`ramp`, `traction`, `pressure` (below)")
           .Example({"loads.forces=[{nodes: {row: 0}, total: [0, 0, 1]}]"}),
       Row(t, "pressure")
-          .Is("", "N/m", "any sign")
+          .Number("N/m")
           .Default("none")
           .Doc("pressure inside a closed chain (`mesh.closed: true`) in a 2-D scene: the "
                "potential −p × (area enclosed in the x–z plane), below")
@@ -885,11 +975,11 @@ std::vector<SchemaRow> Forces() {
           .Doc("the loaded nodes")
           .Example(force("each: [0, 0, 1]"), "loads.forces[0].nodes", "{row: 0}"),
       Row(t, "total")
-          .Is("[3]", "N")
+          .Point("N")
           .Doc("shared equally among the selected nodes")
           .Example(force("total: [0, 0, 2]"), "loads.forces[0].total", "[0, 0, 2]"),
       Row(t, "each")
-          .Is("[3]", "N")
+          .Point("N")
           .Doc("on every selected node")
           .Example(force("each: [0, 0, 3]"), "loads.forces[0].each", "[0, 0, 3]"),
       Row(t, "values")
@@ -908,13 +998,13 @@ std::vector<SchemaRow> Forces() {
           .Example(force("ramp: {from: [0, 0, 1], to: [0, 0, 2]}"), "loads.forces[0].ramp",
                    "{from: [0, 0, 1], to: [0, 0, 2]}"),
       Row(t, "traction")
-          .Is("[3]", "Pa")
+          .Point("Pa")
           .Doc("a force per unit area: each selected node gets the traction times its lumped "
                "area (the area its mass is lumped from: a quarter of each grid cell, a third of "
                "each triangle; on a chain its lumped length, and the traction is then in N/m)")
           .Example(force("traction: [0, 0, 4]"), "loads.forces[0].traction", "[0, 0, 4]"),
       Row(t, "pressure")
-          .Is("", "Pa", "any sign")
+          .Number("Pa")
           .Doc("a force per unit area normal to the surface: each selected node gets p × its "
                "lumped area along its initial unit normal (the area-weighted normal of its "
                "triangles, by the right-hand rule over the mesh's node order: +z for a grid or "
@@ -927,14 +1017,12 @@ std::vector<SchemaRow> Forces() {
 // The keys of the obstacle kinds (src/model/obstacle_kinds.h; the test holds them to it).
 std::vector<SchemaRow> Obstacles() {
   const std::string t = "obstacles";
-  auto row = [&](const char* key, std::vector<std::string> kinds, const std::string& type,
-                 const std::string& range, const std::string& doc, const std::string& body,
-                 const std::string& value) {
+  auto row = [&](const char* key, std::vector<std::string> kinds, const std::string& doc,
+                 const std::string& body, const std::string& value) {
     const std::string kind = kinds.front();
     return Row(t, key)
         .For(std::move(kinds))
-        .Is(type, "m", range)
-        .Default(kRequired)
+        .Required()
         .Doc(doc)
         .Example({"obstacles=[{" + kind + ": " + body + "}]"}, "obstacles[0]." + kind + "." + key,
                  value);
@@ -943,21 +1031,39 @@ std::vector<SchemaRow> Obstacles() {
   const std::string cylinder = "{center: [0, 0, -1], radius: 0.5, height: 0.25}";
   const std::string box = "{min: [0, 0, -2], max: [1, 1, -1]}";
   const std::string plane = "{point: [0, 0, -1], normal: [0, 0, 2]}";
+  const std::vector<std::string> round = {"sphere", "disk", "cylinder"};
   return {
-      row("center", {"sphere", "disk", "cylinder"}, "[3]", "",
-          "the centre (of a cylinder's top face)", sphere, "[0, 0, -1]"),
-      row("radius", {"sphere", "disk", "cylinder"}, "", "> 0", "the radius", sphere, "0.5"),
-      row("height", {"cylinder"}, "", "> 0", "the height (it extends downward, like a pedestal)",
-          cylinder, "0.25"),
-      row("min", {"box"}, "[3]", "", "the lowest corner", box, "[0, 0, -2]"),
-      row("max", {"box"}, "[3]", "> min", "the highest corner", box, "[1, 1, -1]"),
-      row("point", {"plane"}, "[3]", "", "a point of the plane", plane, "[0, 0, -1]"),
-      row("normal", {"plane"}, "[3]", "not zero",
-          "the normal, towards the fabric's side (normalised)", plane, "[0, 0, 1]"),
-      row("position", {"pin"}, "[3]", "", "the tip", "{position: [0, 0, -1]}", "[0, 0, -1]"),
+      row("center", round, "the centre (of a cylinder's top face)", sphere, "[0, 0, -1]")
+          .Point("m")
+          .Field(&ObstacleSpec::center),
+      row("radius", round, "the radius", sphere, "0.5")
+          .Number("m", Above(0))
+          .Field(&ObstacleSpec::radius),
+      row("height", {"cylinder"}, "the height (it extends downward, like a pedestal)", cylinder,
+          "0.25")
+          .Number("m", Above(0))
+          .Field(&ObstacleSpec::height),
+      row("min", {"box"}, "the lowest corner", box, "[0, 0, -2]")
+          .Point("m")
+          .Field(&ObstacleSpec::min),
+      row("max", {"box"}, "the highest corner", box, "[1, 1, -1]")
+          .Point("m")
+          .Rule("> min")
+          .Field(&ObstacleSpec::max),
+      row("point", {"plane"}, "a point of the plane", plane, "[0, 0, -1]")
+          .Point("m")
+          .Field(&ObstacleSpec::center),
+      row("normal", {"plane"}, "the normal, towards the fabric's side (normalised)", plane,
+          "[0, 0, 1]")
+          .Point()
+          .Rule("not zero")
+          .Field(&ObstacleSpec::normal),
+      row("position", {"pin"}, "the tip", "{position: [0, 0, -1]}", "[0, 0, -1]")
+          .Point("m")
+          .Field(&ObstacleSpec::center),
       Row(t, "friction")
-          .Is("", "1", "≥ 0")
-          .Default("`0`")
+          .Number("1", AtLeast(0))
+          .Field(&ObstacleSpec::friction)
           .Doc("accepted by the format, but only 0 is supported (obstacles are frictionless)")
           .Example({"obstacles=[{pin: {position: [0, 0, -1], friction: 0}}]"},
                    "obstacles[0].pin.friction", "0"),
@@ -967,26 +1073,28 @@ std::vector<SchemaRow> Obstacles() {
 std::vector<SchemaRow> ContactSolverOutput() {
   return {
       Row("contact", "thickness")
-          .Is("", "m", "≥ 0")
-          .Default("`0.001`")
+          .Number("m", AtLeast(0))
+          .Field(&ContactSpec::thickness)
           .Doc("fabric half-thickness kept off every obstacle")
           .Example({"contact.thickness=0.002"}),
       Row("solver", "method")
-          .Is("text")
-          .Default("`newton`")
+          .Text()
+          .Field(&SolverSpec::method)
           .Doc("one of the methods `drape solvers` lists; `--solver` overrides it")
           .Example({"solver.method=ceres-lm"}),
       Row("solver", "tolerance")
-          .Is("", "1", "> 0")
-          .Default("`1e-8`")
+          .Number("1", Above(0))
+          .Field(&SolverSpec::tolerance)
           .Doc("relative equilibrium residual to reach (free residual forces / weight and loads)")
           .Example({"solver.tolerance=1e-06"}),
       Row("solver", "max_iterations")
-          .Is("integer", "", "≥ 1")
+          .Integer(AtLeast(1))
+          .Field(&SolverSpec::max_iterations)
           .Default("the method's (see [Solvers](#solvers))")
           .Example({"solver.max_iterations=50"}),
       Row("solver", "time_limit")
-          .Is("", "s", "> 0")
+          .Number("s", Above(0))
+          .Field(&SolverSpec::time_limit)
           .Default("the method's (see [Solvers](#solvers))")
           .Doc("per solve (per level with `levels`), and the build of the model too: a build that "
                "takes longer (a huge mesh under a short limit) stops at the end of the stage it is "
@@ -1000,7 +1108,8 @@ std::vector<SchemaRow> ContactSolverOutput() {
                "compare --time-limit` and a sweep's tasks are bounded the same way")
           .Example({"solver.time_limit=30"}),
       Row("solver", "levels")
-          .Is("integer", "", "1–8")
+          .Integer(Between(1, kMostLevels))
+          .Field(&SolverSpec::levels)
           .Default("not given: `2` for a drape test (a `circle` or `grid` mesh with a support "
                    "`disk`) whose level of twice the spacing has 4 spacings across the disc's "
                    "radius (2 cm under the standard 18 cm disc), else `1`")
@@ -1046,8 +1155,8 @@ std::vector<SchemaRow> ContactSolverOutput() {
           .Doc("any of the output kinds below")
           .Example({"output.write=[nodes, png]"}),
       Row("output", "obj_up")
-          .Is("`z` or `y`")
-          .Default("`z`")
+          .Words({"z", "y"})
+          .Field(&OutputSpec::obj_up)
           .Doc("the up axis of `mesh.obj`: `z` as solved; `y` turns the mesh a quarter turn "
                "about x, (x, y, z) → (x, z, −y), positions and normals alike (a rotation, so "
                "still right-handed), so that Blender's and three.js's default import stand the "
@@ -1066,11 +1175,6 @@ std::vector<SchemaRow> AllRows() {
   return rows;
 }
 
-bool Takes(const SchemaRow& row, const std::string& kind) {
-  return kind.empty() || row.kinds.empty() ||
-         std::find(row.kinds.begin(), row.kinds.end(), kind) != row.kinds.end();
-}
-
 std::string Cell(const std::string& text) { return text.empty() ? "" : " " + text; }
 
 // "[3] m, > 0": the type, the unit and the range in one cell.
@@ -1087,72 +1191,6 @@ std::string Joined(const std::vector<std::string>& names) {
   return text;
 }
 
-// A number of a range's text: "0", "1e-8", "-2.5", "10000", or a power of ten "10⁸"; none
-// otherwise.
-std::optional<double> RangeNumber(const std::string& text) {
-  static const std::vector<std::string> superscripts = {"⁰", "¹", "²", "³", "⁴",
-                                                        "⁵", "⁶", "⁷", "⁸", "⁹"};
-  if (text.rfind("10", 0) == 0 && text.size() > 2) {
-    std::string exponent;
-    for (size_t at = 2; at < text.size();) {
-      const auto digit =
-          std::find_if(superscripts.begin(), superscripts.end(),
-                       [&](const std::string& s) { return text.compare(at, s.size(), s) == 0; });
-      if (digit == superscripts.end()) return WholeNumber(text);  // "10000", no power
-      exponent += static_cast<char>('0' + (digit - superscripts.begin()));
-      at += digit->size();
-    }
-    return std::pow(10.0, std::stoi(exponent));
-  }
-  return WholeNumber(text);
-}
-
-// "a–b" or "in [a, b]": both bounds, inclusive.
-std::optional<SchemaRange> Interval(const std::string& text) {
-  std::string low, high;
-  const std::string dash = "–";
-  if (text.rfind("in [", 0) == 0 && text.back() == ']' && text.find(", ") != std::string::npos) {
-    const size_t comma = text.find(", ");
-    low = text.substr(4, comma - 4);
-    high = text.substr(comma + 2, text.size() - comma - 3);
-  } else if (text.find(dash) != std::string::npos) {
-    low = text.substr(0, text.find(dash));
-    high = text.substr(text.find(dash) + dash.size());
-  }
-  const auto lower = RangeNumber(low);
-  const auto upper = RangeNumber(high);
-  if (!lower || !upper) return std::nullopt;
-  SchemaRange range;
-  range.lower = *lower;
-  range.upper = *upper;
-  range.lower_inclusive = range.upper_inclusive = true;
-  return range;
-}
-
-// "> a", "≥ a", "< a", "≤ a", or "a" alone.
-std::optional<SchemaRange> OneSided(const std::string& text) {
-  struct Relation {
-    std::string sign;
-    bool lower, inclusive;
-  };
-  static const std::vector<Relation> relations = {
-      {"> ", true, false}, {"≥ ", true, true}, {"< ", false, false}, {"≤ ", false, true}};
-  SchemaRange range;
-  for (const Relation& relation : relations) {
-    if (text.rfind(relation.sign, 0) != 0) continue;
-    const auto bound = RangeNumber(text.substr(relation.sign.size()));
-    if (!bound) return std::nullopt;
-    (relation.lower ? range.lower : range.upper) = *bound;
-    (relation.lower ? range.lower_inclusive : range.upper_inclusive) = relation.inclusive;
-    return range;
-  }
-  const auto only = RangeNumber(text);
-  if (!only) return std::nullopt;
-  range.lower = range.upper = *only;
-  range.lower_inclusive = range.upper_inclusive = true;
-  return range;
-}
-
 }  // namespace
 
 bool SchemaRange::Contains(double value) const {
@@ -1162,30 +1200,58 @@ bool SchemaRange::Contains(double value) const {
   return above && below;
 }
 
-std::optional<SchemaRange> ParseSchemaRange(const std::string& range, bool integer) {
-  if (range.empty()) return std::nullopt;
-  auto parsed = Interval(range);
-  if (!parsed) parsed = OneSided(range);
-  if (parsed) parsed->integer = integer;
-  return parsed;
+std::string SchemaRange::Text() const {
+  const bool below = std::isfinite(upper), above = std::isfinite(lower);
+  if (above && below) {
+    if (integer && upper < 1e6) return NumberText(lower) + "–" + NumberText(upper);
+    return "in [" + NumberText(lower) + ", " + NumberText(upper) + "]";
+  }
+  if (above) return (lower_inclusive ? "≥ " : "> ") + NumberText(lower);
+  if (below) return (upper_inclusive ? "≤ " : "< ") + NumberText(upper);
+  return "";
 }
 
-std::optional<SchemaRange> SchemaRow::Bounds() const {
-  const bool integer =
-      type.find("integer") != std::string::npos || type.find("whole number") != std::string::npos;
-  return ParseSchemaRange(range, integer);
+std::string SchemaRange::Refusal(double value) const {
+  const std::string got = ", got " + NumberText(value);
+  if (integer && value != std::floor(value)) return "expected a whole number" + got;
+  if (integer && lower_inclusive && upper_inclusive && upper == lower + 1) {
+    return "must be " + NumberText(lower) + " or " + NumberText(upper) + got;
+  }
+  const bool low = lower_inclusive ? value < lower : value <= lower;
+  if (low && lower == 0)
+    return (lower_inclusive ? "must not be negative" : "must be positive") + got;
+  if (low && lower_inclusive) return "must be at least " + NumberText(lower) + got;
+  if (low) return "must be greater than " + NumberText(lower) + got;
+  return (upper_inclusive ? "must be at most " : "must be less than ") + NumberText(upper) + got;
 }
 
-std::string SchemaRow::DefaultLiteral() const {
-  if (default_text.size() < 2 || default_text.front() != '`') return "";
-  const size_t close = default_text.find('`', 1);
-  if (close == std::string::npos) return "";
-  const std::string literal = default_text.substr(1, close - 1);
-  const std::string rest = default_text.substr(close + 1);
-  const bool remark = rest.empty() || (rest.rfind(" (", 0) == 0 && rest.back() == ')' &&
-                                       rest.find('`') == std::string::npos);
-  if (!remark || literal.find('<') != std::string::npos) return "";
-  return literal;
+SchemaRange Above(double bound) {
+  SchemaRange range;
+  range.lower = bound;
+  return range;
+}
+
+SchemaRange AtLeast(double bound) {
+  SchemaRange range = Above(bound);
+  range.lower_inclusive = true;
+  return range;
+}
+
+SchemaRange Between(double lower, double upper) {
+  SchemaRange range = AtLeast(lower);
+  range.upper = upper;
+  range.upper_inclusive = true;
+  return range;
+}
+
+SchemaRange Whole(SchemaRange range) {
+  range.integer = true;
+  return range;
+}
+
+bool SchemaRow::Takes(const std::string& kind) const {
+  return kind.empty() || kinds.empty() ||
+         std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
 }
 
 const std::vector<SchemaRow>& SceneSchema() {
@@ -1206,7 +1272,7 @@ std::vector<std::string> SchemaTables() {
 std::vector<std::string> SchemaKeys(const std::string& table, const std::string& kind) {
   std::vector<std::string> keys;
   for (const SchemaRow& row : SceneSchema()) {
-    if (row.table != table || row.key.front() == '<' || !Takes(row, kind)) continue;
+    if (row.table != table || row.key.front() == '<' || !row.Takes(kind)) continue;
     if (std::find(keys.begin(), keys.end(), row.key) == keys.end()) keys.push_back(row.key);
   }
   return keys;
@@ -1218,6 +1284,15 @@ std::vector<const SchemaRow*> SchemaRows(const std::string& table) {
     if (row.table == table) rows.push_back(&row);
   }
   return rows;
+}
+
+const SchemaRow& SchemaRowOf(const std::string& table, const std::string& key,
+                             const std::string& kind) {
+  for (const SchemaRow& row : SceneSchema()) {
+    if (row.table == table && row.key == key && row.Takes(kind)) return row;
+  }
+  assert(false && "a key without its schema row");
+  return SceneSchema().front();
 }
 
 std::string SchemaUnit(const std::string& path) {

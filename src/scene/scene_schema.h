@@ -1,17 +1,16 @@
 // The scene schema: one row per scene key, the one table of what a scene may say. The loader
-// (src/scene/scene_loader.cc) takes each map's allowed keys from it, docs/reference.md's scene
-// tables are generated from it (between `<!-- schema: TABLE -->` and `<!-- /schema -->`), and
-// tests/scene_schema_test.cc holds the reference to the rows and loads, writes (scene.yaml) and
-// re-reads every row's example. It also holds the loader to the rows' literal defaults
-// (SchemaRow::DefaultLiteral) and numeric ranges (SchemaRow::Bounds): a value just outside a
-// range must be refused at its key.
+// (src/scene/scene_loader.cc) takes each map's allowed keys from it and reads, checks and stores
+// every plain value through its row (src/scene/schema_reader.h), scene.yaml writes those from the
+// rows (src/output/scene_yaml.cc), `drape schema --json-schema` and docs/reference.md's scene
+// tables (between `<!-- schema: TABLE -->` and `<!-- /schema -->`) are generated from them, and
+// tests/scene_schema_test.cc loads, writes and re-reads every row's example, a value just inside
+// and just outside each range, and each default.
 //
-// Adding a scene key: its row in SceneSchema() (src/scene/scene_schema.cc), its reading in the
-// loader and its writing in src/output/scene_yaml.cc, and the regenerated reference table
-// (DRAPE_WRITE_SCHEMA_DOCS=1 drape_tests --gtest_filter='SceneSchema*'). Each piece left out
-// fails a test: a key without a row is an unknown key to the loader; a row without its line in
-// the reference, a key scene.yaml does not write back, a range the loader does not check or a
-// default the loader does not give fails tests/scene_schema_test.cc.
+// Adding a plain key (a number, whole number, truth value, word, text, point or pair): its member
+// in src/scene/scene.h with its default, its row here bound to the member (`.Field(&Spec::key)`),
+// and the regenerated reference table (DRAPE_WRITE_SCHEMA_DOCS=1 drape_tests
+// --gtest_filter='SceneSchema*'). A composite key (kOther) is read and written by hand; a key left
+// out of either fails the round trip of tests/scene_schema_test.cc.
 //
 // The finite-volume keys come from src/scene/material_keys.h, the solver methods' options from
 // src/scene/solver_methods.h; the obstacle kinds' keys are checked against src/model/
@@ -24,12 +23,11 @@
 #include <string>
 #include <vector>
 
+#include "src/scene/scene_field.h"
+
 namespace drape {
 
-// A row's range as numbers, parsed from its text: "> 0", "≥ 1", "< 5", "≤ 5", "1–8",
-// "in [2, 10⁸]", "0" (that value only). Whole numbers when the row's type says "integer" or
-// "whole number". tests/scene_schema_test.cc loads a value just outside it and expects the
-// loader's error at the key.
+// A row's numeric range: open or closed at each end; whole numbers only for an integer row.
 struct SchemaRange {
   double lower = -std::numeric_limits<double>::infinity();
   bool lower_inclusive = false;
@@ -38,11 +36,24 @@ struct SchemaRange {
   bool integer = false;
 
   bool Contains(double value) const;
+  // "> 0", "≥ 1", "1–8", "in [2, 1e+08]": the reference's text.
+  std::string Text() const;
+  // "must be positive, got -1", "must be at least 3, got 2", "must be 2 or 3, got 4": the loader's
+  // refusal of `value`.
+  std::string Refusal(double value) const;
 };
 
-// `range` as numbers; none for prose ("strictly increasing", "> min", "not zero", "any sign",
-// "each > 0 (…)") and for no range.
-std::optional<SchemaRange> ParseSchemaRange(const std::string& range, bool integer);
+// The ranges the rows use.
+SchemaRange Above(double bound);                  // > bound
+SchemaRange AtLeast(double bound);                // ≥ bound
+SchemaRange Between(double lower, double upper);  // [lower, upper]
+SchemaRange Whole(SchemaRange range);             // whole numbers in `range`
+
+// A row's value type. The plain types are read, checked and written from the row alone
+// (src/scene/schema_reader.h, src/output/scene_yaml.cc); kOther is a composite value (a map, a
+// list, a node selection, a family `number or {warp, weft}`) that the loader reads by hand, its
+// type in `type`'s words.
+enum class ValueType { kNumber, kInteger, kBool, kWord, kText, kPoint, kPair, kOther };
 
 struct SchemaRow {
   // The reference table the row is listed in: "" (the top level), "mesh", "material.springs",
@@ -50,11 +61,22 @@ struct SchemaRow {
   std::string table;
   std::string key;                 // within the table's map: "E_warp"
   std::vector<std::string> kinds;  // the kinds (or cases) that take it; empty: all
-  std::string type;                // "[3]", "integer", "`xy` \| `xz`" (markdown); "" a number
-  std::string unit;                // SI: "N/m", "m"; "" none
-  std::string range;               // "> 0", "≥ 1"; "" any
-  std::string default_text;        // markdown: "`0.001`", "**required**", "none"
-  std::string doc;                 // markdown, one line
+  ValueType value = ValueType::kOther;
+  std::optional<SchemaRange> bounds;  // a number's or a whole number's
+  std::vector<std::string> words;     // a word's choices
+  // Where the value goes (src/scene/scene_field.h); none for a value the loader converts (a KES
+  // measurement) or reads by hand (kOther).
+  SceneField field;
+  // The default: the bound member's value in a default-constructed owner; else one given in the
+  // row (a converted measurement's); none for a default in words (`default_text`).
+  FieldValue default_value;
+  // The default as YAML: the typed default's text, or a composite value's ("[15, 15]"); "" none.
+  std::string default_yaml;
+  std::string type;          // "[3]", "integer", "`xy` \| `xz`" (markdown), from `value`
+  std::string unit;          // SI: "N/m", "m"; "" none
+  std::string range;         // "> 0", "≥ 1" (from `bounds`), or in words; "" any
+  std::string default_text;  // markdown: "`0.001`", "**required**", "none"
+  std::string doc;           // markdown, one line
 
   // The round trip (tests/scene_schema_test.cc): the `--set` overrides that give the key on the
   // base scene, where scene.yaml writes it (default: the last override's path) and the value it
@@ -67,14 +89,7 @@ struct SchemaRow {
   std::string written_value;
 
   std::string Path() const { return table.empty() ? key : table + "." + key; }
-
-  // ParseSchemaRange(range), for a row whose type is "integer" or "whole number" a whole number.
-  std::optional<SchemaRange> Bounds() const;
-
-  // The default as a YAML value when `default_text` is one literal in backticks, optionally
-  // followed by a remark in parentheses ("`1e-8`", "`0` (elastic)", "`[x, y, z]`"); "" when it is
-  // prose ("**required**", "none", "the method's", "disc − 1 cm", "`out/<name>`" a pattern).
-  std::string DefaultLiteral() const;
+  bool Takes(const std::string& kind) const;  // the row applies to `kind` ("" any)
 };
 
 // Every row, table by table in the reference's order.
@@ -89,6 +104,10 @@ std::vector<std::string> SchemaKeys(const std::string& table, const std::string&
 
 // The rows of `table`.
 std::vector<const SchemaRow*> SchemaRows(const std::string& table);
+
+// The row of `key` in `table` that applies to `kind` (a programmer error if there is none).
+const SchemaRow& SchemaRowOf(const std::string& table, const std::string& key,
+                             const std::string& kind = "");
 
 // The unit of the value at `path` in a written scene ("fixed[0].move",
 // "obstacles[1].sphere.radius", "regions[0].nodes.within.radius"): its row's, else its nearest
