@@ -239,10 +239,10 @@ SpringFamilySpec ReadFamily(const YamlValue& value) {
   family.where = value.where;
   if (value.get().IsMap()) {
     const YamlMap map(value, {"warp", "weft"});
-    family.warp = ReadPositive(map.Get("warp"));
-    family.weft = ReadPositive(map.Get("weft"));
+    family.warp = ReadRowNumber(map.Get("warp"));
+    family.weft = ReadRowNumber(map.Get("weft"));
   } else if (value.get().IsScalar()) {
-    family.warp = family.weft = ReadPositive(value);
+    family.warp = family.weft = ReadRowNumber(value);
   } else {
     Fail(value,
          "expected a stiffness in N/m or {warp: ..., weft: ...}, got " + Describe(value.get()));
@@ -315,9 +315,7 @@ const ParameterWay* GivenWay(const std::string& key, const std::vector<Parameter
 
 double ReadParameter(const YamlMap& map, const std::string& key, const std::string& unit,
                      const std::vector<ParameterWay>& measured) {
-  std::vector<ParameterWay> ways = {{key, map.Find(key), [key](const YamlValue& v) {
-                                       return ReadRowNumber(v, "material.finite_volume", key);
-                                     }}};
+  std::vector<ParameterWay> ways = {{key, map.Find(key), ReadRowNumber}};
   ways.insert(ways.end(), measured.begin(), measured.end());
   const ParameterWay* given = GivenWay(key, ways);
   if (!given) {
@@ -348,8 +346,8 @@ std::optional<YamlValue> CheckedEmt(const YamlMap& kes, const std::string& direc
 double KesTensile(const YamlMap& kes, const std::string& direction, const YamlValue& emt) {
   const auto lt = kes.Find("LT_" + direction);
   const auto fm = kes.Find("Fm");
-  return KesTensileRigidity(ReadPositive(emt), lt ? ReadPositive(*lt) : 1.0,
-                            fm ? ReadPositive(*fm) : kKesStandardMaximumLoad);
+  return KesTensileRigidity(ReadRowNumber(emt), lt ? ReadRowNumber(*lt) : 1.0,
+                            fm ? ReadRowNumber(*fm) : kKesStandardMaximumLoad);
 }
 
 // The areal density that Peirce's bending length needs: material.density or kes.W.
@@ -368,8 +366,8 @@ double ReadFriction(const YamlMap& map, const std::optional<YamlMap>& kes,
   if (si && measured) {
     Fail(*measured, "give " + si_key + " in one way only: '" + si_key + "' is given too");
   }
-  if (si) return ReadNonNegative(*si);
-  return measured ? convert(ReadNonNegative(*measured)) : 0.0;
+  if (si) return ReadRowNumber(*si);
+  return measured ? convert(ReadRowNumber(*measured)) : 0.0;
 }
 
 // The frictions: bending_friction_<direction> (N) or kes.2HB_<direction> (gf·cm/cm), and
@@ -392,9 +390,7 @@ std::string ShortNumber(double value) {
 // The torsional rigidity: D_66 (N·m, ≥ 0) or one of the bias measurements `bias` converts, at most
 // one of them; else the default rule (src/scene/fabric_parameters.h).
 void ReadTwist(const YamlMap& map, const std::vector<ParameterWay>& bias, FiniteVolumeSpec* fv) {
-  std::vector<ParameterWay> ways = {{"D_66", map.Find("D_66"), [](const YamlValue& v) {
-                                       return ReadRowNumber(v, "material.finite_volume", "D_66");
-                                     }}};
+  std::vector<ParameterWay> ways = {{"D_66", map.Find("D_66"), ReadRowNumber}};
   ways.insert(ways.end(), bias.begin(), bias.end());
   const ParameterWay* given = GivenWay("D_66", ways);
   if (!given) {
@@ -443,9 +439,9 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
   auto find = [](const std::optional<YamlMap>& block, const std::string& key) {
     return block ? block->Find(key) : std::nullopt;
   };
-  const auto kes_rigidity = [](const YamlValue& v) { return KesBendingRigidity(ReadPositive(v)); };
+  const auto kes_rigidity = [](const YamlValue& v) { return KesBendingRigidity(ReadRowNumber(v)); };
   const auto peirce_rigidity = [&density](const YamlValue& v) {
-    const double length = ReadPositive(v);
+    const double length = ReadRowNumber(v);
     if (!density.value) Fail(v, "a bending length needs the areal density: " + density.missing);
     return PeirceBendingRigidity(length, *density.value);
   };
@@ -455,9 +451,11 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
         [&kes, direction](const YamlValue& v) { return KesTensile(*kes, direction, v); }};
   };
   const auto fast_rigidity = [](const YamlValue& v) {
-    return FastBendingRigidity(ReadPositive(v));
+    return FastBendingRigidity(ReadRowNumber(v));
   };
-  const auto fast_tensile = [](const YamlValue& v) { return FastTensileRigidity(ReadPositive(v)); };
+  const auto fast_tensile = [](const YamlValue& v) {
+    return FastTensileRigidity(ReadRowNumber(v));
+  };
   fv.E_warp =
       ReadParameter(map, "E_warp", "N/m",
                     {kes_way("warp"), {"fast.E100_warp", find(fast, "E100_warp"), fast_tensile}});
@@ -466,9 +464,9 @@ FiniteVolumeSpec ReadFiniteVolume(const YamlValue& value, const ArealDensity& de
                     {kes_way("weft"), {"fast.E100_weft", find(fast, "E100_weft"), fast_tensile}});
   fv.G = ReadParameter(map, "G", "N/m",
                        {{"kes.G", find(kes, "G"),
-                         [](const YamlValue& v) { return KesShearRigidity(ReadPositive(v)); }},
+                         [](const YamlValue& v) { return KesShearRigidity(ReadRowNumber(v)); }},
                         {"fast.EB5", find(fast, "EB5"),
-                         [](const YamlValue& v) { return FastShearRigidity(ReadPositive(v)); }}});
+                         [](const YamlValue& v) { return FastShearRigidity(ReadRowNumber(v)); }}});
   fv.D_warp = ReadParameter(map, "D_warp", "N·m",
                             {{"kes.B_warp", find(kes, "B_warp"), kes_rigidity},
                              {"fast.B_warp", find(fast, "B_warp"), fast_rigidity},
@@ -527,7 +525,7 @@ void ReadMass(const YamlMap& map, MaterialSpec* material) {
     }
     first = key;
     material->mass_kind = kind;
-    material->mass_value = ReadPositive(*given);
+    material->mass_value = ReadRowNumber(*given);
   }
   if (first.empty()) {
     Fail(map.value(),
@@ -571,7 +569,7 @@ ArealDensity ReadFiniteVolumeMass(const YamlMap& map, MaterialSpec* material) {
     }
   }
   material->mass_kind = MaterialSpec::MassKind::kDensity;
-  const double w = ReadPositive(*weight);
+  const double w = ReadRowNumber(*weight);
   material->mass_value =
       weight_key == "finite_volume.kes.W" ? KesArealDensity(w) : FastArealDensity(w);
   return {material->mass_value, ""};
@@ -735,24 +733,13 @@ void CheckRegionKeyApplies(const YamlMap& map, const std::string& key,
 
 void ReadRegionKey(const std::string& key, const YamlValue& value, RegionSpec* region) {
   region->given[key] = value.where;
-  if (key == "density") region->density = ReadPositive(value);
+  if (key == "density") region->density = ReadRowNumber(value);
   if (key == "structural") region->structural = ReadFamily(value);
   if (key == "shear") region->shear = ReadFamily(value);
   if (key == "flexion") region->flexion = ReadFamily(value);
   if (key == "tension_only") region->tension_only = ReadBool(value);
   for (const FiniteVolumeKey& fv : FiniteVolumeKeys()) {
-    if (fv.key != key) continue;
-    switch (fv.range) {
-      case FiniteVolumeKey::Range::kPositive:
-        region->finite_volume[key] = ReadPositive(value);
-        break;
-      case FiniteVolumeKey::Range::kNonNegative:
-        region->finite_volume[key] = ReadNonNegative(value);
-        break;
-      case FiniteVolumeKey::Range::kAny:
-        region->finite_volume[key] = ReadNumber(value);
-        break;
-    }
+    if (fv.key == key) region->finite_volume[key] = ReadRowNumber(value);
   }
 }
 

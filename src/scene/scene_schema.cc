@@ -1295,7 +1295,7 @@ const SchemaRow& SchemaRowOf(const std::string& table, const std::string& key,
   return SceneSchema().front();
 }
 
-std::string SchemaUnit(const std::string& path) {
+const SchemaRow* SchemaRowAt(const std::string& path) {
   std::vector<std::string> parts;  // without list indices
   size_t start = 0;
   while (start <= path.size()) {
@@ -1313,10 +1313,15 @@ std::string SchemaUnit(const std::string& path) {
     std::string ancestor;
     for (size_t k = 0; k < count; ++k) ancestor += (k == 0 ? "" : ".") + parts[k];
     for (const SchemaRow& row : SceneSchema()) {
-      if (row.Path() == ancestor) return row.unit;
+      if (row.Path() == ancestor) return &row;
     }
   }
-  return "";
+  return nullptr;
+}
+
+std::string SchemaUnit(const std::string& path) {
+  const SchemaRow* row = SchemaRowAt(path);
+  return row ? row->unit : "";
 }
 
 std::string SchemaMarkdown(const std::string& table) {

@@ -109,6 +109,10 @@ std::vector<const SchemaRow*> SchemaRows(const std::string& table);
 const SchemaRow& SchemaRowOf(const std::string& table, const std::string& key,
                              const std::string& kind = "");
 
+// The row of the value at `path` in a scene ("obstacles[1].sphere.radius",
+// "regions[0].structural.warp"): its own, else its nearest ancestor's; null for none.
+const SchemaRow* SchemaRowAt(const std::string& path);
+
 // The unit of the value at `path` in a written scene ("fixed[0].move",
 // "obstacles[1].sphere.radius", "regions[0].nodes.within.radius"): its row's, else its nearest
 // ancestor row's; "" for none.

@@ -38,10 +38,10 @@ FieldValue ReadRowValue(const SchemaRow& row, const YamlValue& value) {
   return {};
 }
 
-double ReadRowNumber(const YamlValue& value, const std::string& table, const std::string& key) {
-  const SchemaRow& row = SchemaRowOf(table, key);
-  assert(row.value == ValueType::kNumber && "ReadRowNumber of a row that is not a number");
-  return Checked(row, value, ReadNumber(value));
+double ReadRowNumber(const YamlValue& value) {
+  const SchemaRow* row = SchemaRowAt(value.where.key);
+  assert(row && "ReadRowNumber of a value without its schema row");
+  return Checked(*row, value, ReadNumber(value));
 }
 
 void ReadFieldsOf(const YamlMap& map, const std::string& table, const std::string& kind,

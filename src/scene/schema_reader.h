@@ -15,9 +15,10 @@ namespace drape {
 // The value at `value` as `row` types and bounds it; a located InputError otherwise.
 FieldValue ReadRowValue(const SchemaRow& row, const YamlValue& value);
 
-// A number checked against its row's range: `key` of `table`, for a value the loader converts
-// (kes.B_warp) or combines with others before it is stored.
-double ReadRowNumber(const YamlValue& value, const std::string& table, const std::string& key);
+// A number checked against the range of its row, found by the value's path
+// (src/scene/scene_schema.h SchemaRowAt): for a value the loader's code reads, converts or
+// combines (kes.B_warp, a region's D_warp, a spring family's warp).
+double ReadRowNumber(const YamlValue& value);
 
 // Every key of `map` whose row in `table` (for `kind`, "" any) binds a member of `owner`'s type:
 // read, checked and stored there. Other keys are left to the caller.

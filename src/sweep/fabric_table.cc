@@ -25,7 +25,7 @@ using Kind = FabricColumn::Kind;
 void AddMaterialColumns(std::vector<FabricColumn>* columns) {
   const std::string prefix = std::string(kMaterial) + ".";
   for (const SchemaRow& row : SceneSchema()) {
-    const bool numeric = row.type.empty() || row.type == "integer";
+    const bool numeric = row.value == ValueType::kNumber || row.value == ValueType::kInteger;
     if (!numeric) continue;
     if (row.table == "material" && row.key == "density") {
       columns->push_back({"density", Kind::kMaterial, "material.density", row.unit, row.doc});
