@@ -340,13 +340,8 @@ std::vector<SchemaRow> Mesh() {
           .For({"circle"})
           .Number("m", Above(0))
           .Field(&MeshSpec::spacing)
-          .Doc("lattice spacing of the square grid clipped to the disc; the nodes' lumped areas "
-               "(and masses) are the disc cut into the lattice cells, adding up to πR² at every "
-               "spacing. The surface triangles cover the lattice's staircase polygon (90–98 % of "
-               "πR²); for the shadow, the flat area and the radial profile a fringe extends them "
-               "to the circle, carried by the boundary's deformation (`src/model/mesh.h`), so the "
-               "drape coefficient refers to the whole specimen. mesh.vtk, mesh.obj and drape.png "
-               "show the triangles")
+          .Doc("lattice spacing of the square grid clipped to the disc: [The circle's "
+               "lattice](#the-circles-lattice)")
           .Example({"mesh={kind: circle, spacing: 0.05}"}, "mesh.spacing", "0.05"),
       Row(t, "rings")
           .For({"arc"})
@@ -383,15 +378,7 @@ std::vector<SchemaRow> Mesh() {
           .For({"file"})
           .Text()
           .Default(kRequired)
-          .Doc("an OBJ, PLY or STL surface (by its extension, any case), relative to the scene "
-               "file's folder unless absolute; springs follow its edges; every face must have a "
-               "non-zero area. PLY: ASCII, `binary_little_endian` (what scanners and meshio "
-               "write) or `binary_big_endian`, the `vertex` element's `x y z` (any of the types "
-               "char … double, or int8 … float64) and the `face` element's first list; other "
-               "elements and properties are skipped. STL: ASCII or binary; vertices exactly equal "
-               "once read are merged into one node (numbered in order of first appearance), so "
-               "the triangles are connected. A malformed file is an error naming the file and the "
-               "line (text) or byte offset (binary)")
+          .Doc("an OBJ, PLY or STL surface: [Mesh files](#mesh-files)")
           .Example({"mesh={kind: file, path: tests/data/meshes/square.obj}"}, "mesh.path"),
       Row(t, "points")
           .For({"chain"})
@@ -1096,16 +1083,7 @@ std::vector<SchemaRow> ContactSolverOutput() {
           .Number("s", Above(0))
           .Field(&SolverSpec::time_limit)
           .Default("the method's (see [Solvers](#solvers))")
-          .Doc("per solve (per level with `levels`), and the build of the model too: a build that "
-               "takes longer (a huge mesh under a short limit) stops at the end of the stage it is "
-               "in (the mesh, the elastic terms, the loads and contacts, the checks) with a "
-               "located error, exit 2, nothing written: `solver: building the model took 6.1 s "
-               "(…), more than the time limit 5 s …`. The limit bounds each of these separately, "
-               "not the run: the build; each solve's iterations, which with friction means each "
-               "stage of the smoothing's continuation and each load step (`friction_load_steps`), "
-               "and with levels each level; not the certificate, the stability analysis and the "
-               "writing after a solve. A run may therefore take several times the limit; `drape "
-               "compare --time-limit` and a sweep's tasks are bounded the same way")
+          .Doc("per solve and per build of the model; what it bounds: [Time limit](#time-limit)")
           .Example({"solver.time_limit=30"}),
       Row("solver", "levels")
           .Integer(Between(1, kMostLevels))
@@ -1113,28 +1091,7 @@ std::vector<SchemaRow> ContactSolverOutput() {
           .Default("not given: `2` for a drape test (a `circle` or `grid` mesh with a support "
                    "`disk`) whose level of twice the spacing has 4 spacings across the disc's "
                    "radius (2 cm under the standard 18 cm disc), else `1`")
-          .Doc("solve on this many nested lattices, coarse to fine: spacings 2^(N−1) h, …, 2h, h, "
-               "the last the scene's own mesh (a `grid` of `size`/`nodes`, or a `circle`); each "
-               "level starts from the previous level's answer interpolated onto its lattice (grid "
-               "sequencing; nodes that land in a support `disk`'s contact layer are put back on "
-               "its top, nodes within its clearance beside the rim out of it, and lattice edges "
-               "stretched by more than 1 % are shortened to that). It shortens the finest solve "
-               "of a smooth shape (the hanging sheet at 100×100: 165 → 83 iterations), not of a "
-               "drape: a coarser level's folds are not the finer level's, and the finest level "
-               "settles from them as long as from the flat start (docs/benchmarks.md, \"Starts "
-               "near the answer\"). Not given, a drape test solves a second level of twice the "
-               "spacing first, "
-               "from the flat start like the scene's own (whose answer is then the same, bit for "
-               "bit, as with `levels: 1`), for the drape coefficient's error bar "
-               "(`drape_coefficient_error` in summary.json and on the stdout line); about a "
-               "quarter more time, and the drape coefficient (else the energy) is extrapolated to "
-               "h → 0 from the three finest levels. Coarser levels keep the fabric per unit area "
-               "(by each material model's rule, in the table of material models); `ids`/`ij` "
-               "selections take "
-               "the coarse nodes on either side. Refused (located here) for other meshes, forces "
-               "not given as `total`, a mass per node, or too few nodes for the coarsest lattice "
-               "(≥ 3 across). Results: `levels` and `extrapolation` in `summary.json`; the other "
-               "outputs are the finest level's")
+          .Doc("solve on this many nested lattices, coarse to fine: [Levels](#levels)")
           .Example({"solver.levels=2"}),
       Row("solver", "<method>")
           .Is("map of numbers")
