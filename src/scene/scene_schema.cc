@@ -55,7 +55,9 @@ class Row {
     return Typed(ValueType::kWord, ChoiceText(row_.words), "", std::nullopt);
   }
   Row& Text() { return Typed(ValueType::kText, "text", "", std::nullopt); }
-  Row& Point(std::string unit = "") { return Typed(ValueType::kPoint, "[3]", unit, std::nullopt); }
+  Row& Point(std::string unit = "") {
+    return Typed(ValueType::kPoint, "[3]", std::move(unit), std::nullopt);
+  }
   Row& Pair(std::string type, std::string unit) {
     return Typed(ValueType::kPair, std::move(type), std::move(unit), std::nullopt);
   }
