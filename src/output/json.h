@@ -9,13 +9,9 @@
 #include <utility>
 #include <vector>
 
-namespace drape {
+#include "src/scene/number_text.h"  // FormatNumber, the number format of every data file
 
-// The shortest text that reads back as exactly `value` (std::to_chars), in the notation of %.17g
-// (fixed for decimal exponents -4 to 16, else scientific): 0.1 (not 0.10000000000000001), 100000,
-// 1e-05, 0.3333333333333333. The number format of every data file. Non-finite values are written
-// as nan, inf and -inf.
-std::string FormatNumber(double value);
+namespace drape {
 
 // `value` rounded to `digits` significant digits (%.*g): for text people read (captions, HTML and
 // Markdown tables, log lines), never for a data file.

@@ -1,11 +1,9 @@
-// A whole text read as a number, in strtod's syntax: the one reader of a number that stands alone
-// in a table cell or a token of a mesh file ("1e-8", "0.5"; not "1 m", not ""); and the text of a
-// number in the schema's rows and the loader's messages.
+// Numbers as text: WholeNumber, the one reader of a number that stands alone in a table cell or a
+// token of a mesh file, and FormatNumber, the one writer of a number (data files, the schema's
+// rows, the loader's messages).
 #ifndef DRAPE_SRC_SCENE_NUMBER_TEXT_H_
 #define DRAPE_SRC_SCENE_NUMBER_TEXT_H_
 
-#include <charconv>
-#include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -21,16 +19,12 @@ inline std::optional<double> WholeNumber(const std::string& text) {
   return value;
 }
 
-// The shortest text that reads back as `value`, in %g's notation ("0.0007", "1e-08"); a whole
-// number below 1e15 in full ("100000000", not "1e+08").
-inline std::string NumberText(double value) {
-  if (value == std::floor(value) && std::abs(value) < 1e15) {
-    return std::to_string(static_cast<long long>(value));
-  }
-  char text[32];
-  const auto written = std::to_chars(text, text + sizeof text, value, std::chars_format::general);
-  return std::string(text, written.ptr);
-}
+// The shortest text that reads back as exactly `value` (std::to_chars), in the notation of %.17g
+// (fixed for decimal exponents -4 to 16, else scientific): 0.1 (not 0.10000000000000001), 100000,
+// 1e-05, 0.3333333333333333. The number format of every data file (src/output/json.h), of the
+// schema's ranges and defaults, and of the loader's messages. Non-finite values are written as
+// nan, inf and -inf.
+std::string FormatNumber(double value);
 
 }  // namespace drape
 

@@ -1162,26 +1162,26 @@ bool SchemaRange::Contains(double value) const {
 std::string SchemaRange::Text() const {
   const bool below = std::isfinite(upper), above = std::isfinite(lower);
   if (above && below) {
-    if (integer && upper < 1e6) return NumberText(lower) + "–" + NumberText(upper);
-    return "in [" + NumberText(lower) + ", " + NumberText(upper) + "]";
+    if (integer && upper < 1e6) return FormatNumber(lower) + "–" + FormatNumber(upper);
+    return "in [" + FormatNumber(lower) + ", " + FormatNumber(upper) + "]";
   }
-  if (above) return (lower_inclusive ? "≥ " : "> ") + NumberText(lower);
-  if (below) return (upper_inclusive ? "≤ " : "< ") + NumberText(upper);
+  if (above) return (lower_inclusive ? "≥ " : "> ") + FormatNumber(lower);
+  if (below) return (upper_inclusive ? "≤ " : "< ") + FormatNumber(upper);
   return "";
 }
 
 std::string SchemaRange::Refusal(double value) const {
-  const std::string got = ", got " + NumberText(value);
+  const std::string got = ", got " + FormatNumber(value);
   if (integer && value != std::floor(value)) return "expected a whole number" + got;
   if (integer && lower_inclusive && upper_inclusive && upper == lower + 1) {
-    return "must be " + NumberText(lower) + " or " + NumberText(upper) + got;
+    return "must be " + FormatNumber(lower) + " or " + FormatNumber(upper) + got;
   }
   const bool low = lower_inclusive ? value < lower : value <= lower;
   if (low && lower == 0)
     return (lower_inclusive ? "must not be negative" : "must be positive") + got;
-  if (low && lower_inclusive) return "must be at least " + NumberText(lower) + got;
-  if (low) return "must be greater than " + NumberText(lower) + got;
-  return (upper_inclusive ? "must be at most " : "must be less than ") + NumberText(upper) + got;
+  if (low && lower_inclusive) return "must be at least " + FormatNumber(lower) + got;
+  if (low) return "must be greater than " + FormatNumber(lower) + got;
+  return (upper_inclusive ? "must be at most " : "must be less than ") + FormatNumber(upper) + got;
 }
 
 SchemaRange Above(double bound) {

@@ -12,6 +12,8 @@
 #include <set>
 #include <sstream>
 
+#include "src/scene/number_text.h"
+
 namespace drape {
 
 // ---------------------------------------------------------------------------------- origins
@@ -389,21 +391,15 @@ double ReadNumber(const YamlValue& value) {
   return *number;
 }
 
-static std::string Format(double number) {
-  std::ostringstream text;
-  text << number;
-  return text.str();
-}
-
 double ReadPositive(const YamlValue& value) {
   const double number = ReadNumber(value);
-  if (!(number > 0.0)) Fail(value, "must be positive, got " + Format(number));
+  if (!(number > 0.0)) Fail(value, "must be positive, got " + FormatNumber(number));
   return number;
 }
 
 double ReadNonNegative(const YamlValue& value) {
   const double number = ReadNumber(value);
-  if (number < 0.0) Fail(value, "must not be negative, got " + Format(number));
+  if (number < 0.0) Fail(value, "must not be negative, got " + FormatNumber(number));
   return number;
 }
 
