@@ -11,7 +11,6 @@
 
 #include "src/output/json.h"
 #include "src/output/scene_json.h"
-#include "src/scene/number_text.h"
 #include "src/scene/output_kinds.h"
 #include "src/scene/scene_schema.h"
 #include "src/scene/solver_methods.h"
@@ -21,7 +20,7 @@ namespace {
 
 using Members = std::vector<std::pair<std::string, std::string>>;
 
-// The names in backticks of a type's text: "`xy` \| `xz`" → xy, xz; "`3` or `2`" → 3, 2.
+// The names in backticks of a type's text: "`top` \| `bottom`" → top, bottom.
 std::vector<std::string> Backticked(const std::string& text) {
   std::vector<std::string> names;
   for (size_t open = text.find('`'); open != std::string::npos;) {
@@ -33,14 +32,9 @@ std::vector<std::string> Backticked(const std::string& text) {
   return names;
 }
 
-// A choice among words or numbers.
+// A choice among words.
 Members Choice(const std::vector<std::string>& names) {
-  std::vector<std::string> values;
-  values.reserve(names.size());
-  for (const std::string& name : names) {
-    values.push_back(WholeNumber(name) ? name : JsonString(name));
-  }
-  return {{"enum", JsonList(values)}};
+  return {{"enum", JsonList(JsonStrings(names))}};
 }
 
 // The JSON Schema keywords of a range: minimum/exclusiveMinimum, maximum/exclusiveMaximum.
@@ -139,7 +133,7 @@ Members ValueSchema(const SchemaRow& row, int depth) {
     return type == "list" ? ListOf(TableSchema(row.Path(), depth + 1), 0, depth)
                           : TableSchema(row.Path(), depth);
   }
-  if (type == "text" || type == "path") return Text();
+  if (type == "path") return Text();
   if (type == "a node selection") return {{"$ref", JsonString("#/$defs/nodes")}};
   if (type == "[2]") return ListOf(Number(std::nullopt, false), 2, depth);
   if (type == "[2] integers") return ListOf(Number(range, true), 2, depth);
@@ -177,7 +171,7 @@ Members ValueSchema(const SchemaRow& row, int depth) {
   }
   if (type == "`true`") return {{"const", "true"}};
   if (type == "map" || type == "map of numbers") return {{"type", "\"object\""}};
-  return Choice(Backticked(type));  // `a` \| `b`, `3` or `2`
+  return Choice(Backticked(type));  // `a` \| `b`
 }
 
 // The description of a row: its doc, with its unit.

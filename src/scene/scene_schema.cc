@@ -69,10 +69,6 @@ class Row {
     row_.default_value = row_.field.get(&blank);
     return *this;
   }
-  Row& Required() {
-    required_ = true;
-    return *this;
-  }
   // A composite value's default, as YAML.
   Row& DefaultYaml(std::string yaml) {
     row_.default_yaml = std::move(yaml);
@@ -82,7 +78,7 @@ class Row {
     row_.default_value = std::move(value);
     return *this;
   }
-  // The default in words (replaces the typed default's text, not the typed default).
+  // The default in words ("**required**", "the method's"): it replaces the typed default.
   Row& Default(std::string text) {
     row_.default_text = std::move(text);
     prose_default_ = true;
@@ -114,8 +110,7 @@ class Row {
   }
   operator SchemaRow() const {  // NOLINT(google-explicit-constructor): a builder
     SchemaRow row = row_;
-    if (required_) row.default_text = "**required**";
-    if (required_ || prose_default_) row.default_value = {};
+    if (prose_default_) row.default_value = {};
     if (row.bounds) row.range = row.bounds->Text();
     const std::string text = FieldValueText(row.default_value);
     if (!text.empty()) row.default_yaml = text;
@@ -137,7 +132,6 @@ class Row {
   }
   SchemaRow row_;
   std::string remark_;
-  bool required_ = false;
   bool prose_default_ = false;
 };
 
@@ -461,7 +455,7 @@ std::vector<SchemaRow> Lines() {
       Row(t, "structural")
           .Number("N/m", Above(0))
           .Field(&SpringLineSpec::stiffness)
-          .Required()
+          .Default(kRequired)
           .Doc("stiffness of each of the line's springs")
           .Example({line}, "material.lines[0].structural", "30"),
       Row(t, "tension_only")
@@ -1011,7 +1005,7 @@ std::vector<SchemaRow> Obstacles() {
     const std::string kind = kinds.front();
     return Row(t, key)
         .For(std::move(kinds))
-        .Required()
+        .Default(kRequired)
         .Doc(doc)
         .Example({"obstacles=[{" + kind + ": " + body + "}]"}, "obstacles[0]." + kind + "." + key,
                  value);
