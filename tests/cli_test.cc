@@ -26,6 +26,7 @@
 #include "src/output/scene_json_schema.h"
 #include "src/output/version.h"
 #include "src/output/writers.h"
+#include "src/scene/drape_mesh_rule.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/solvers/solver.h"
 #include "tests/run_program.h"
@@ -622,6 +623,40 @@ TEST_F(CliTest, ADrapeTestReportsItsDrapeCoefficientWithAnErrorBar) {
                 rule);
   EXPECT_NE(one.out.find(rule_bar), std::string::npos) << one.out;
   fs::remove_all(plain);
+}
+
+// drape_test.accuracy binds: a bar wider than asked fails the run (exit 1, the reason on
+// stderr, the results written), one within it passes; both say on the result line what was asked
+// and reached. The scene of the test above at 2.5 cm: its mesh rule expects 0.6 (capped at 0.5).
+TEST_F(CliTest, ADrapeTestThatAsksForAnAccuracyIsHeldToIt) {
+  const std::string scene =
+      std::string(drape_tests::kSourceDir) + "/configs/fv/drape_tester_polyester_24.yaml";
+  auto solve = [&](const std::string& accuracy, const fs::path& out) {
+    return Drape({"solve", scene, "--out", out.string(), "--set", "drape_test.disc_diameter=0.2",
+                  "--set", "mesh.spacing=0.025", "--set", "solver.levels=1", "--set",
+                  "drape_test.accuracy=" + accuracy});
+  };
+  const ProgramOutcome narrow = solve("0.05", out_);
+  EXPECT_EQ(narrow.exit_status, 1) << narrow.err;
+  const double reached =
+      Summary(out_)["mesh_rule"]["expected_drape_coefficient_error"].as<double>();
+  EXPECT_DOUBLE_EQ(reached, kMostDrapeError);
+  EXPECT_NE(narrow.err.find("drape: the drape coefficient's error bar ±0.5 is wider than the ±0.05 "
+                            "asked (drape_test.accuracy): mesh.spacing "
+                            "2.5 cm is too coarse for it"),
+            std::string::npos)
+      << narrow.err;
+  EXPECT_NE(narrow.out.find("; accuracy ±0.05 asked, ±"), std::string::npos) << narrow.out;
+  EXPECT_NE(narrow.out.find("(mesh.spacing 2.5 cm given)"), std::string::npos) << narrow.out;
+  EXPECT_TRUE(fs::exists(out_ / "summary.json"));
+  EXPECT_DOUBLE_EQ(Summary(out_)["mesh_rule"]["accuracy"].as<double>(), 0.05);
+
+  const fs::path wide = out_.string() + "_wide";
+  const ProgramOutcome met = solve("0.5", wide);
+  EXPECT_EQ(met.exit_status, 0) << met.err;
+  EXPECT_NE(met.out.find("; accuracy ±0.5 asked, ±"), std::string::npos) << met.out;
+  EXPECT_EQ(met.err.find("asked (drape_test.accuracy)"), std::string::npos) << met.err;
+  fs::remove_all(wide);
 }
 
 // A mesh that cannot be coarsened: exit 2, the error located at the key, nothing written.

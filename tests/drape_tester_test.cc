@@ -6,14 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <regex>
 #include <string>
 #include <vector>
 
 #include "src/model/model.h"
+#include "src/scene/drape_mesh_rule.h"
 #include "src/scene/scene_loader.h"
+#include "src/scene/scene_size.h"
 #include "tests/scratch_folder.h"
 
 namespace drape {
@@ -93,7 +97,10 @@ TEST_F(DrapeTestBlock, DefaultsAreTheStandardTest) {
   ASSERT_TRUE(scene.drape_test);
   EXPECT_EQ(scene.mesh.kind, MeshSpec::Kind::kCircle);
   EXPECT_DOUBLE_EQ(scene.mesh.radius, 0.15);
-  EXPECT_DOUBLE_EQ(scene.mesh.spacing, 0.01);
+  // No mesh.spacing: the spacing the default accuracy needs (the next test).
+  EXPECT_TRUE(scene.drape_test->spacing_chosen);
+  EXPECT_DOUBLE_EQ(scene.mesh.spacing,
+                   SpacingForDrapeError(kDefaultDrapeAccuracy, *LimperBendingLength(scene)));
   EXPECT_DOUBLE_EQ(scene.mesh.origin.z(), scene.contact.thickness);
   ASSERT_EQ(scene.obstacles.size(), 1u);
   EXPECT_EQ(scene.obstacles[0].kind, "disk");
@@ -148,6 +155,72 @@ TEST_F(DrapeTestBlock, RefusesAnImpossibleGeometryAtItsKey) {
             std::string::npos);
   EXPECT_NE(Error(std::string("drape_test: {specimen_diamter: 0.3}\n") + kFabric)
                 .find("did you mean 'specimen_diameter'?"),
+            std::string::npos);
+}
+
+// The fabric's bending length in its limper (weft) direction, c = (D_weft / (ρ g))^(1/3).
+double FabricBendingLength() { return std::cbrt(1.7e-6 / (0.08 * 9.81)); }
+
+// Without mesh.spacing, the lattice is the largest spacing of two digits whose expected error K h
+// / c is within the accuracy asked (src/scene/drape_mesh_rule.h), no coarser than 1 cm: a coarse
+// request a coarse lattice, a fine one a finer lattice; a given spacing is kept.
+TEST_F(DrapeTestBlock, TheAccuracyChoosesTheLattice) {
+  const double c = FabricBendingLength();  // 12.9 mm
+  ASSERT_NEAR(*LimperBendingLength(Load(std::string("drape_test: {}\n") + kFabric)), c, 1e-15);
+  double coarser = 1.0;
+  for (const double accuracy : {0.5, 0.2, 0.1, 0.05, 0.03, 0.02}) {
+    const Scene scene =
+        Load(std::string("drape_test: {accuracy: ") + std::to_string(accuracy) + "}\n" + kFabric);
+    const double h = scene.mesh.spacing;
+    EXPECT_TRUE(scene.drape_test->spacing_chosen);
+    EXPECT_LE(h, kCoarsestChosenSpacing);
+    EXPECT_LE(kDrapeErrorPerSpacing * h / c, accuracy * (1 + 1e-12)) << accuracy;
+    // The largest such spacing of two digits, unless the 1 cm cap holds it.
+    const double unit = std::pow(10.0, std::floor(std::log10(h)) - 1.0);
+    if (h < kCoarsestChosenSpacing) {
+      EXPECT_GT(kDrapeErrorPerSpacing * (h + unit) / c, accuracy) << accuracy;
+    }
+    EXPECT_LE(h, coarser) << accuracy;
+    coarser = h;
+  }
+  EXPECT_DOUBLE_EQ(Load(std::string("drape_test: {accuracy: 0.5}\n") + kFabric).mesh.spacing,
+                   kCoarsestChosenSpacing);
+  EXPECT_LT(coarser, 0.001);  // 0.02: 0.83 mm
+  const Scene given =
+      Load(std::string("drape_test: {accuracy: 0.02}\nmesh: {spacing: 0.02}\n") + kFabric);
+  EXPECT_FALSE(given.drape_test->spacing_chosen);
+  EXPECT_DOUBLE_EQ(given.mesh.spacing, 0.02);
+  // A fabric the rule does not cover (springs) keeps the mesh's own default.
+  const Scene springs =
+      Load("drape_test: {accuracy: 0.02}\nmaterial: {density: 0.1, springs: {structural: 100}}\n");
+  EXPECT_FALSE(springs.drape_test->spacing_chosen);
+  EXPECT_DOUBLE_EQ(springs.mesh.spacing, MeshSpec().spacing);
+}
+
+// An accuracy whose lattice would exceed mesh.max_nodes is refused at the accuracy, saying what
+// it needs and the finest accuracy within the limit; that accuracy loads.
+TEST_F(DrapeTestBlock, AnUnreachableAccuracyIsRefusedAtItsKey) {
+  const std::string text =
+      std::string("drape_test: {accuracy: 0.01}\nmesh: {max_nodes: 20000}\n") + kFabric;
+  const std::string error = Error(text);
+  EXPECT_NE(error.find("scene.yaml:1:24: drape_test.accuracy: an accuracy of 0.01 needs a "),
+            std::string::npos)
+      << error;
+  std::smatch suggested;
+  ASSERT_TRUE(std::regex_search(
+      error, suggested, std::regex("above mesh.max_nodes 20000: ask for ([0-9.]+) or more")))
+      << error;
+  const std::string reachable_text = suggested[1];
+  const Scene reachable =
+      Load("drape_test: {accuracy: " + reachable_text + "}\nmesh: {max_nodes: 20000}\n" + kFabric);
+  EXPECT_LE(EstimatedNodes(reachable.mesh), 20000);
+  EXPECT_NE(DrapeTestText(reachable).find("chosen for an accuracy of " + reachable_text),
+            std::string::npos)
+      << DrapeTestText(reachable);
+  // One hundredth finer is refused: the suggestion is the finest within the limit.
+  const std::string finer = std::to_string(std::stod(reachable_text) - 0.01);
+  EXPECT_NE(Error("drape_test: {accuracy: " + finer + "}\nmesh: {max_nodes: 20000}\n" + kFabric)
+                .find("above mesh.max_nodes 20000"),
             std::string::npos);
 }
 

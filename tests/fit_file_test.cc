@@ -132,6 +132,30 @@ TEST(FitFileTest, WarnsOfAMeshWhoseErrorExceedsTheMeasurementsSigma) {
   EXPECT_TRUE(LoadFitFile(WriteFitFolder("mesh_no_disc", kFullFit)).warnings.empty());
 }
 
+// A drape test that leaves its lattice to its accuracy gets it chosen once, at the initial
+// parameters: a parameter that changes the bending length (here the density, an eighth of it
+// doubles c) would otherwise move the lattice between evaluations, and the objective with it.
+TEST(FitFileTest, KeepsTheLatticeTheAccuracyChoseAtTheInitialParameters) {
+  const std::string folder = FitTempDir("chosen_lattice");
+  WriteTextFile(folder + "/tester.yaml",
+                "drape_test: {accuracy: 0.1}\nmaterial: {model: finite_volume, density: 0.12, "
+                "finite_volume: {E_warp: 8000, E_weft: 5000, G: 50, D_warp: 1.2e-5, D_weft: "
+                "8e-6}}\n");
+  WriteTextFile(folder + "/fit.yaml",
+                "scene: tester.yaml\nparameters:\n  - {key: material.density, initial: 0.12, "
+                "bounds: [0.01, 1]}\nmeasurements:\n  - drape_coefficient: {value: 0.7}\n");
+  const FitSpec spec = LoadFitFile(folder + "/fit.yaml");
+  const FitSpecimen& specimen = spec.specimens[0];
+  ASSERT_TRUE(specimen.chosen_spacing);
+  const Scene initial = SpecimenSceneAt(spec, specimen, {0.12});
+  EXPECT_DOUBLE_EQ(initial.mesh.spacing, *specimen.chosen_spacing);
+  const Scene lighter = SpecimenSceneAt(spec, specimen, {0.015});
+  EXPECT_DOUBLE_EQ(lighter.mesh.spacing, *specimen.chosen_spacing);
+  // Loaded afresh at that density, the accuracy would choose a coarser lattice.
+  const Scene afresh = specimen.scene->Load({}, {{"material.density", YAML::Node(0.015)}});
+  EXPECT_GT(afresh.mesh.spacing, 1.5 * *specimen.chosen_spacing);
+}
+
 // Runs LoadFitFile and returns the error message ("" if none).
 std::string ErrorOf(const std::string& name, const std::string& text) {
   const std::string path = WriteFitFolder(name, text);

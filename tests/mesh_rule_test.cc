@@ -29,7 +29,7 @@ TEST(MeshRule, AdviceForTheCottonFollowsFromItsBendingLength) {
   EXPECT_NEAR(advice->bending_length, c, 1e-12);
   EXPECT_NEAR(advice->spacing, 0.01, 1e-15);
   EXPECT_NEAR(advice->expected_error, kDrapeErrorPerSpacing * 0.01 / c, 1e-12);
-  const double needed = kCoarseDrapeError * c / kDrapeErrorPerSpacing;  // 3.04 mm
+  const double needed = kDefaultDrapeAccuracy * c / kDrapeErrorPerSpacing;  // 3.04 mm
   EXPECT_LE(advice->spacing_needed, needed);
   EXPECT_GE(advice->spacing_needed, 0.9 * needed);
   EXPECT_NEAR(advice->spacing_needed, 0.0030, 1e-15);

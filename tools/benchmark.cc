@@ -1,4 +1,4 @@
-// benchmark: drape's speed, in three modes (docs/benchmarks.md, "How to run", says what each
+// benchmark: drape's speed, in four modes (docs/benchmarks.md, "How to run", says what each
 // prints):
 //   benchmark [--scenes a,b] [--cap s] [--baseline BINARY] [--baseline-cap s] [--drape build/drape]
 //             [--repeats n] [--probe-only]
@@ -11,6 +11,11 @@
 //   benchmark starts [--scenes limp2.6,drape2.6] [--noise m]
 //     newton from the flat start and from starts made of the answer (seen through the lattice of
 //     twice the spacing; with noise), in this process.
+//   benchmark pareto [--fabrics cotton,polyester,limp] [--cap s] [--baseline BINARY]
+//             [--chart docs/pareto.svg]
+//     each shipped tester fabric by each strategy (uniform lattices, levels with Richardson's
+//     extrapolation, the accuracy key), the drape coefficient's error against the fabric's
+//     reference over the command's wall time, one `drape solve` per run; a table and a chart.
 // Paths are relative to the current folder (the repository's root).
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -346,6 +351,10 @@ struct SolveRun {
   // in the summary, as before edge contact) and how far inside its rim the farthest one is (m).
   int nodes_under_disk = -1, edges_through_disk = -1;
   double under_disk_inside = 0;
+  double command_wall = 0;   // s, the whole command: start-up, build, every level, writing
+  double error_bar = -1;     // summary.json's drape_coefficient_error.estimate, else the rule's
+  double extrapolated = -1;  // the levels' Richardson drape coefficient, where available
+  double spacing = 0;        // m, the finest lattice's (mesh_rule.spacing_m)
 };
 
 // Runs `binary solve` on the scene file with its overrides in a child process with the time limit
@@ -365,6 +374,7 @@ SolveRun RunDrape(const std::string& binary, const std::string& file,
   SolveRun run;
   std::system(("rm -rf '" + out + "'").c_str());
   std::fflush(stdout);  // or the child's copy of the buffer is printed twice
+  const auto started = std::chrono::steady_clock::now();
   const pid_t child = fork();
   if (child == 0) {
     std::vector<char*> argv;
@@ -378,6 +388,8 @@ SolveRun RunDrape(const std::string& binary, const std::string& file,
   int status = 0;
   struct rusage usage {};
   wait4(child, &status, 0, &usage);
+  run.command_wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   run.peak_mb = usage.ru_maxrss / 1024.0;
   run.refused = WIFEXITED(status) && WEXITSTATUS(status) == 2;
   if (!WIFEXITED(status) || WEXITSTATUS(status) > 1) return run;
@@ -411,6 +423,17 @@ SolveRun RunDrape(const std::string& binary, const std::string& file,
       run.edges_through_disk = contact["edges_through_disk"].as<int>();
     if (contact["under_disk_inside_m"])
       run.under_disk_inside = contact["under_disk_inside_m"].as<double>();
+  }
+  if (const YAML::Node bar = summary["drape_coefficient_error"]) {
+    run.error_bar = bar["estimate"].as<double>();
+  } else if (const YAML::Node rule = summary["mesh_rule"]) {
+    run.error_bar = rule["expected_drape_coefficient_error"].as<double>();
+  }
+  if (summary["mesh_rule"]) run.spacing = summary["mesh_rule"]["spacing_m"].as<double>();
+  const YAML::Node extrapolation = summary["extrapolation"];
+  if (extrapolation && extrapolation["drape_coefficient"] &&
+      extrapolation["drape_coefficient"]["available"].as<bool>()) {
+    run.extrapolated = extrapolation["drape_coefficient"]["value"].as<double>();
   }
   const YAML::Node statistics = summary["statistics"];
   auto statistic = [&statistics](const char* key) {
@@ -686,6 +709,173 @@ int ScenesMain(int argc, char** argv) {
   return 0;
 }
 
+// ---- Speed against error (`benchmark pareto`) ----
+
+// A shipped tester fabric and its reference drape coefficients: each build's own converged value
+// (the 1.3 mm lattice, 41,825 nodes; docs/drape-tester.md, "How fine a mesh", has the runs and
+// their commands), for this build's model (the twist, session 29) and for the baseline's
+// (4be9ccd, before the twist: the same table's "DC before" column).
+struct ParetoFabric {
+  std::string name, file;
+  double reference = 0, baseline_reference = 0;
+};
+
+const std::vector<ParetoFabric>& ParetoFabrics() {
+  static const std::vector<ParetoFabric> fabrics = {
+      {"cotton", "configs/fv/drape_tester_cotton_30.yaml", 0.708, 0.630},
+      {"polyester", "configs/fv/drape_tester_polyester_30.yaml", 0.434, 0.367},
+      {"limp", "configs/fv/drape_tester_limp_30.yaml", 0.201, 0.183},
+  };
+  return fabrics;
+}
+
+// One way to get a drape coefficient: its label and the overrides that ask for it. `extrapolate`:
+// the figure is the levels' Richardson extrapolation, not the finest level's.
+struct ParetoStrategy {
+  std::string label;
+  std::vector<std::string> overrides;
+  bool extrapolate = false;
+  bool this_build_only = false;  // keys the baseline does not have
+};
+
+std::vector<ParetoStrategy> ParetoStrategies() {
+  std::vector<ParetoStrategy> strategies;
+  for (const char* spacing : {"0.01", "0.005", "0.0035", "0.0026"}) {
+    strategies.push_back({std::string("uniform ") + spacing + " m",
+                          {std::string("mesh.spacing=") + spacing, "solver.levels=1"}});
+  }
+  strategies.push_back({"3 levels to 0.005 m, Richardson",
+                        {"mesh.spacing=0.005", "solver.levels=3"},
+                        /*extrapolate=*/true});
+  for (const char* accuracy : {"0.1", "0.05"}) {
+    strategies.push_back({std::string("accuracy ") + accuracy,
+                          {"mesh={}", std::string("drape_test.accuracy=") + accuracy},
+                          /*extrapolate=*/false,
+                          /*this_build_only=*/true});
+  }
+  return strategies;
+}
+
+struct ParetoPoint {
+  std::string fabric, build, strategy;
+  SolveRun run;
+  double drape_coefficient = -1, error = 0;
+};
+
+void PrintParetoRow(const ParetoPoint& point) {
+  const SolveRun& run = point.run;
+  if (!run.ran) {
+    std::printf("| %s | %s | %s | failed to run | | | | | | | |\n", point.fabric.c_str(),
+                point.build.c_str(), point.strategy.c_str());
+    return;
+  }
+  const bool covers = run.error_bar >= 0 && std::abs(point.error) <= run.error_bar;
+  std::printf("| %s | %s | %s | %d | %.1f | %d | %s | %.4f | %+.4f | %s | %s |\n",
+              point.fabric.c_str(), point.build.c_str(), point.strategy.c_str(), run.nodes,
+              run.command_wall, run.all_iterations,
+              run.converged ? "yes" : (run.capped ? "no (cap)" : "no"), point.drape_coefficient,
+              point.error, OrBlank(run.error_bar, "%.3f").c_str(),
+              run.error_bar < 0 ? "" : (covers ? "yes" : "no"));
+  std::fflush(stdout);
+}
+
+// The chart: |error| against the command's wall time, a series per fabric and build (converged
+// runs only), drawn by gnuplot into `chart` (SVG).
+void DrawParetoChart(const std::vector<ParetoPoint>& points, const std::string& chart) {
+  const std::string data = chart + ".dat";
+  std::FILE* file = std::fopen(data.c_str(), "w");
+  if (!file) return;
+  std::vector<std::string> series;
+  for (const ParetoPoint& point : points) {
+    const std::string name = point.fabric + ", " + point.build;
+    if (std::find(series.begin(), series.end(), name) == series.end()) series.push_back(name);
+  }
+  for (const std::string& name : series) {
+    std::fprintf(file, "\"%s\"\n", name.c_str());
+    for (const ParetoPoint& point : points) {
+      if (point.fabric + ", " + point.build != name || !point.run.ran || !point.run.converged) {
+        continue;
+      }
+      std::fprintf(file, "%.3f %.5f \"%s\"\n", point.run.command_wall,
+                   std::max(1e-4, std::abs(point.error)), point.strategy.c_str());
+    }
+    std::fprintf(file, "\n\n");
+  }
+  std::fclose(file);
+  const std::string script = chart + ".gp";
+  file = std::fopen(script.c_str(), "w");
+  if (!file) return;
+  std::fprintf(file,
+               "set terminal svg size 900,560 font 'sans,12'\nset output '%s'\n"
+               "set logscale xy\nset xlabel 'wall time of the command, s (2-core machine)'\n"
+               "set ylabel '|drape coefficient - reference|'\nset grid\n"
+               "set key outside right\nset arrow from graph 0, first 0.03 to graph 1, first 0.03 "
+               "nohead dashtype 2\nset label 'target 0.03' at graph 0.02, first 0.034\n"
+               "set arrow from 10, graph 0 to 10, graph 1 nohead dashtype 2\n"
+               "plot for [k=0:%zu] '%s' index k using 1:2 with linespoints title columnheader(1)\n",
+               chart.c_str(), series.size() - 1, data.c_str());
+  std::fclose(file);
+  if (std::system(("gnuplot '" + script + "'").c_str()) != 0) {
+    std::fprintf(stderr, "benchmark: gnuplot could not draw %s\n", chart.c_str());
+  }
+}
+
+int ParetoMain(int argc, char** argv) {
+  std::string drape = "build/drape", baseline, chart;
+  std::vector<std::string> names;
+  double cap = 300.0;
+  for (int a = 1; a + 1 < argc; a += 2) {
+    const std::string key = argv[a], value = argv[a + 1];
+    if (key == "--drape") {
+      drape = value;
+    } else if (key == "--baseline") {
+      baseline = value;
+    } else if (key == "--chart") {
+      chart = value;
+    } else if (key == "--cap") {
+      cap = std::atof(value.c_str());
+    } else if (key == "--fabrics") {
+      names = Split(value);
+    } else {
+      std::fprintf(stderr,
+                   "usage: benchmark pareto [--fabrics cotton,polyester,limp] [--cap s] "
+                   "[--baseline BINARY] [--chart docs/pareto.svg] [--drape build/drape]\n");
+      return 2;
+    }
+  }
+  std::printf(
+      "Speed against error (`benchmark pareto`, cap %.0f s per level; error against each build's "
+      "own 1.3 mm drape coefficient):\n\n| fabric | build | strategy | nodes | wall s | "
+      "iterations | converged | DC | error | error bar | covers |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n",
+      cap);
+  const std::string out = "/tmp/drape_pareto_" + std::to_string(getpid());
+  std::vector<ParetoPoint> points;
+  for (const ParetoFabric& fabric : ParetoFabrics()) {
+    if (!names.empty() && std::find(names.begin(), names.end(), fabric.name) == names.end()) {
+      continue;
+    }
+    for (const ParetoStrategy& strategy : ParetoStrategies()) {
+      for (const bool is_baseline : {false, true}) {
+        if (is_baseline && (baseline.empty() || strategy.this_build_only)) continue;
+        ParetoPoint point{fabric.name, is_baseline ? "baseline" : "this", strategy.label, {}};
+        point.run =
+            RunDrape(is_baseline ? baseline : drape, fabric.file, strategy.overrides, cap, out);
+        point.drape_coefficient = strategy.extrapolate && point.run.extrapolated >= 0
+                                      ? point.run.extrapolated
+                                      : point.run.drape_coefficient;
+        point.error =
+            point.drape_coefficient - (is_baseline ? fabric.baseline_reference : fabric.reference);
+        PrintParetoRow(point);
+        points.push_back(point);
+      }
+    }
+  }
+  std::system(("rm -rf '" + out + "'").c_str());
+  if (!chart.empty()) DrawParetoChart(points, chart);
+  return 0;
+}
+
 // ---- Starts near the answer (`benchmark starts`) ----
 
 // The nodes of `fine` at the places of the nodes of `coarse` (the lattices are nested), -1 where
@@ -825,6 +1015,7 @@ int main(int argc, char** argv) {
       return drape::SolverComparisonMain(argc - 1, argv + 1);
     }
     if (argc > 1 && std::string(argv[1]) == "starts") return drape::StartsMain(argc - 1, argv + 1);
+    if (argc > 1 && std::string(argv[1]) == "pareto") return drape::ParetoMain(argc - 1, argv + 1);
     return drape::ScenesMain(argc, argv);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "benchmark: %s\n", error.what());

@@ -6,20 +6,8 @@
 
 #include "src/analysis/drape_analysis.h"
 #include "src/analysis/levels.h"
-#include "src/scene/material_models.h"
 
 namespace drape {
-
-namespace {
-
-// x rounded down to two significant digits (0.0031331 → 0.0031): a spacing a person can type,
-// which keeps the rule's error at or under its limit, as the unrounded one does.
-double RoundedDownToTwoDigits(double x) {
-  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
-  return std::floor(x / unit) * unit;
-}
-
-}  // namespace
 
 std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
   if (!HasDrapeCoefficient(scene, model)) return std::nullopt;
@@ -27,30 +15,19 @@ std::optional<MeshAdvice> AdviseMesh(const Scene& scene, const Model& model) {
 }
 
 std::optional<MeshAdvice> AdviseMeshOfScene(const Scene& scene) {
-  const MaterialSpec& material = scene.material;
-  switch (material.model) {
-    case MaterialModel::kSprings:
-      return std::nullopt;  // the rule is the finite-volume fabric's refinement study's
-    case MaterialModel::kFiniteVolume:
-      break;
-  }
-  if (material.mass_kind != MaterialSpec::MassKind::kDensity || !scene.loads.gravity) {
-    return std::nullopt;
-  }
   if (!(DiscRadius(scene) > 0.0)) return std::nullopt;
+  const std::optional<double> bending_length = LimperBendingLength(scene);
   const double spacing = LatticeSpacing(scene.mesh);
-  const double rigidity = std::min(material.finite_volume.D_warp, material.finite_volume.D_weft);
-  const double weight = material.mass_value * scene.loads.gravity->norm();  // N/m²
-  if (!(spacing > 0.0) || !(rigidity > 0.0) || !(weight > 0.0)) return std::nullopt;
+  if (!bending_length || !(spacing > 0.0)) return std::nullopt;
   MeshAdvice advice;
   advice.spacing = spacing;
-  advice.bending_length = std::cbrt(rigidity / weight);
-  const double linear = kDrapeErrorPerSpacing * spacing / advice.bending_length;
-  advice.unresolved = linear >= kMostDrapeError;
-  advice.expected_error = std::min(linear, kMostDrapeError);
-  advice.spacing_needed =
-      RoundedDownToTwoDigits(kCoarseDrapeError * advice.bending_length / kDrapeErrorPerSpacing);
-  advice.coarse = advice.expected_error > kCoarseDrapeError;
+  advice.bending_length = *bending_length;
+  advice.unresolved = kDrapeErrorPerSpacing * spacing / *bending_length >= kMostDrapeError;
+  advice.expected_error = ExpectedDrapeError(spacing, *bending_length);
+  advice.accuracy = AskedDrapeAccuracy(scene);
+  advice.spacing_needed = SpacingForDrapeError(advice.accuracy, *bending_length);
+  advice.spacing_chosen = scene.drape_test && scene.drape_test->spacing_chosen;
+  advice.coarse = advice.expected_error > advice.accuracy;
   return advice;
 }
 
@@ -62,7 +39,7 @@ std::string CoarseMeshWarning(const MeshAdvice& advice) {
   char error[96];
   std::snprintf(error, sizeof error, "%.2g", advice.expected_error);
   char limit[16];
-  std::snprintf(limit, sizeof limit, "%.2g", kCoarseDrapeError);
+  std::snprintf(limit, sizeof limit, "%.2g", advice.accuracy);
   const std::string head = "mesh.spacing " + LengthText(advice.spacing, 2) +
                            " is coarse for this fabric (bending length " +
                            LengthText(advice.bending_length, 2) + " in its limper direction): ";

@@ -1,24 +1,6 @@
-// The spacing a drape test's mesh needs for its drape coefficient (docs/drape-tester.md, "How fine
-// a mesh"). The refinement study of the limp fabric and the cotton of configs/fv/ (1 cm to 1.3 mm,
-// edge contact at the rim) finds the drape coefficient converging at first order in the lattice
-// spacing h, with an error of about
-//   e ≈ kDrapeErrorPerSpacing × h / c,   c = (D_min / (ρ g))^(1/3),
-// c the fabric's bending length in its limper direction (D_min the smaller of D_warp and D_weft,
-// ρ its areal density, g gravity): the fold troughs and the hinge where the fabric leaves the rim
-// are placed to within a spacing, on the scale of c. Measured K = e c / h with the bending's twist
-// (costs/fv_twist.h, its default D66; session 29): limp (c = 9.6 mm) 0.30, 0.24, 0.21 at 1 cm,
-// 5 mm, 2.6 mm against Richardson's limit from 5, 2.6 and 1.3 mm (0.176); cotton (c = 18.8 mm)
-// 0.08, 0.05, 0.04 against its 1.3 mm DC (0.708); the light polyester (c = 13 mm) 0.19, 0.17,
-// 0.06 against its 1.3 mm DC (0.434). Without the twist (D66 = 0) the same study gave 0.30, 0.23,
-// 0.18; 0.23, 0.13, 0.06; 0.31, 0.24, 0.12: the twist cut the cotton's and the polyester's errors,
-// not the limp fabric's. kDrapeErrorPerSpacing is the largest measured, the polyester's at 1 cm
-// without the twist, above every error measured with it (the limp fabric's 0.30 at 1 cm).
-// The rule is linear over the study's spacings, up to about one bending length. Coarser, the
-// lattice does not resolve the folds at all, and the error stops growing: the same scenes at 1.5,
-// 2, 3 and 5 cm (without the twist) were off by 0.06–0.48 (limp 0.34, 0.30, 0.48, 0.42 at
-// h/c 1.6–5.2; cotton 0.20, 0.16, 0.06 at 1.1–2.7), where K h / c says up to 1.6, beyond the drape
-// coefficient's whole range. The expected error is therefore capped at kMostDrapeError: half that
-// range, above every error measured.
+// The mesh rule (src/scene/drape_mesh_rule.h: the refinement study's expected error of a drape
+// coefficient, K h / c) applied to a solve: the advice on its lattice, the warning on a coarse one,
+// and the error bar it widens.
 #ifndef DRAPE_SRC_ANALYSIS_MESH_RULE_H_
 #define DRAPE_SRC_ANALYSIS_MESH_RULE_H_
 
@@ -27,20 +9,19 @@
 
 #include "src/analysis/levels.h"
 #include "src/model/model.h"
+#include "src/scene/drape_mesh_rule.h"
 #include "src/scene/scene.h"
 
 namespace drape {
-
-constexpr double kDrapeErrorPerSpacing = 0.31;  // K
-constexpr double kCoarseDrapeError = 0.05;      // e above which a mesh is coarse for its fabric
-constexpr double kMostDrapeError = 0.5;         // the cap of e: a lattice that resolves no fold
 
 struct MeshAdvice {
   double spacing = 0.0;         // h, m
   double bending_length = 0.0;  // c, m
   double expected_error = 0.0;  // K h / c, at most kMostDrapeError
-  double spacing_needed = 0.0;  // the largest h of two digits with e ≤ kCoarseDrapeError, m
-  bool coarse = false;          // expected_error > kCoarseDrapeError
+  double accuracy = 0.0;        // the drape coefficient's error asked for (AskedDrapeAccuracy)
+  double spacing_needed = 0.0;  // the largest h of two digits with e ≤ accuracy, m
+  bool spacing_chosen = false;  // the loader chose the spacing for the accuracy (drape_test)
+  bool coarse = false;          // expected_error > accuracy
   bool unresolved = false;      // K h / c reached kMostDrapeError: the lattice resolves no fold
 };
 

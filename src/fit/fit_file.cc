@@ -523,7 +523,9 @@ Scene SpecimenSceneAt(const FitSpec& spec, const FitSpecimen& specimen,
   for (size_t j = 0; j < theta.size(); ++j) {
     values.push_back({spec.parameters[j].key, YAML::Node(theta[j])});
   }
-  return specimen.scene->Load(spec.scene_overrides, values);
+  Scene scene = specimen.scene->Load(spec.scene_overrides, values);
+  if (specimen.chosen_spacing) scene.mesh.spacing = *specimen.chosen_spacing;
+  return scene;
 }
 
 FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& scene_overrides) {
@@ -535,7 +537,13 @@ FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& sce
   const YAML::Node document = ReadYamlFile(path, "fit file");
   YamlOrigins origins(path);
   ReadTop(YamlRoot(document, origins), &spec);
-  for (auto& specimen : spec.specimens) ReadSpecimenScene(&specimen);
+  for (auto& specimen : spec.specimens) {
+    ReadSpecimenScene(&specimen);
+    const Scene initial = LoadSpecimenScene(spec, specimen);
+    if (initial.drape_test && initial.drape_test->spacing_chosen) {
+      specimen.chosen_spacing = initial.mesh.spacing;
+    }
+  }
   for (const auto& specimen : spec.specimens) {
     for (std::string& warning : CheckSpecimen(spec, specimen)) {
       spec.warnings.push_back(std::move(warning));
@@ -558,7 +566,7 @@ std::string FitMeshWarning(const Scene& scene, const Model& model,
          RoundedNumber(advice->expected_error / measurement.sigma, 3) +
          " times the measurement's sigma " + RoundedNumber(measurement.sigma, 3) +
          ": the fitted parameters absorb it as a bias; " + LengthText(advice->spacing_needed, 2) +
-         " or finer keeps it within " + RoundedNumber(kCoarseDrapeError, 2);
+         " or finer keeps it within " + RoundedNumber(advice->accuracy, 2);
 }
 
 }  // namespace drape

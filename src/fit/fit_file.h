@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,10 @@ struct FitSpecimen {
   // The scene file, read and parsed once by LoadFitFile: every evaluation loads its scene from it.
   std::shared_ptr<const SceneDocument> scene;
   std::vector<FitMeasurement> measurements;
+  // A drape test without mesh.spacing: the lattice its accuracy chose at the initial parameters
+  // (src/scene/drape_tester.h). Every evaluation keeps it, so that the objective does not jump
+  // where other parameters (another bending length) would choose another lattice.
+  std::optional<double> chosen_spacing;
   Location where;
 };
 

@@ -172,7 +172,9 @@ std::string MeshRuleJson(const MeshAdvice& advice) {
   return JsonObject({{"spacing_m", JsonNumber(advice.spacing)},
                      {"bending_length_m", JsonNumber(advice.bending_length)},
                      {"expected_drape_coefficient_error", JsonNumber(advice.expected_error)},
+                     {"accuracy", JsonNumber(advice.accuracy)},
                      {"spacing_needed_m", JsonNumber(advice.spacing_needed)},
+                     {"spacing_chosen", JsonBool(advice.spacing_chosen)},
                      {"coarse", JsonBool(advice.coarse)}},
                     1);
 }
@@ -237,6 +239,7 @@ std::string UnitsObject() {
       {"drape.cusick", "1"},
       {"drape.ratio", "1"},
       {"mesh_rule.expected_drape_coefficient_error", "1"},
+      {"mesh_rule.accuracy", "1"},
       {"contact.thickness", "m"},
       {"contact.stiffness", "N/m^2"},
       {"contact.max_penetration", "m"},

@@ -61,4 +61,24 @@ std::optional<double> ReportedDrapeCoefficientError(const SolveReport& report) {
   return std::nullopt;
 }
 
+std::optional<AccuracyOutcome> AccuracyOf(const Scene& scene, const SolveReport& report) {
+  const std::optional<double> reached = ReportedDrapeCoefficientError(report);
+  if (!scene.drape_test || !report.mesh_advice || !reached) return std::nullopt;
+  AccuracyOutcome outcome;
+  outcome.asked = report.mesh_advice->accuracy;
+  outcome.reached = *reached;
+  outcome.spacing_chosen = report.mesh_advice->spacing_chosen;
+  outcome.binding = outcome.spacing_chosen || scene.drape_test->accuracy.has_value();
+  outcome.spacing = report.mesh_advice->spacing;
+  if (!report.result.converged && report.levels) {
+    for (const LevelRecord& level : report.levels->levels) {
+      if (!level.converged || !level.drape_coefficient || level.edges_through_disk > 0) continue;
+      outcome.best_converged = AccuracyOutcome::Level{
+          level.spacing, *level.drape_coefficient,
+          ExpectedDrapeError(level.spacing, report.mesh_advice->bending_length)};
+    }
+  }
+  return outcome;
+}
+
 }  // namespace drape

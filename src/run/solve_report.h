@@ -54,6 +54,30 @@ double ReportedDrapeCoefficient(const SolveReport& report);
 // one, else the mesh rule's expected error; none for a scene without a support disc or rule.
 std::optional<double> ReportedDrapeCoefficientError(const SolveReport& report);
 
+// What a drape test asked of its drape coefficient's error bar (drape_test.accuracy) and what the
+// solve reached. The accuracy binds where the scene gives it or where it chose the lattice
+// (drape_test.spacing_chosen): a run whose bar is wider then fails (exit 1). A scene that gives
+// mesh.spacing and no accuracy chose its lattice itself: a wider bar is the coarse mesh's warning.
+struct AccuracyOutcome {
+  double asked = 0.0;    // drape_test.accuracy, else kDefaultDrapeAccuracy
+  double reached = 0.0;  // ReportedDrapeCoefficientError
+  bool binding = false;
+  bool spacing_chosen = false;  // the loader chose mesh.spacing for `asked`
+  double spacing = 0.0;         // m, the finest lattice's
+  // Where the finest level stopped before equilibrium: the finest level that reached it, its
+  // drape coefficient and that lattice's error bar (the mesh rule's), the best the run got.
+  struct Level {
+    double spacing = 0.0;
+    double drape_coefficient = 0.0;
+    double error = 0.0;
+  };
+  std::optional<Level> best_converged;
+  bool met() const { return reached <= asked; }
+};
+
+// The outcome of a drape test on a lattice the mesh rule covers; none for any other scene.
+std::optional<AccuracyOutcome> AccuracyOf(const Scene& scene, const SolveReport& report);
+
 }  // namespace drape
 
 #endif  // DRAPE_SRC_RUN_SOLVE_REPORT_H_

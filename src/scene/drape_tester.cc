@@ -1,8 +1,14 @@
 #include "src/scene/drape_tester.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 
+#include "src/scene/drape_mesh_rule.h"
+#include "src/scene/number_text.h"
 #include "src/scene/scene_schema.h"
+#include "src/scene/scene_size.h"
 #include "src/scene/schema_reader.h"
 
 namespace drape {
@@ -17,6 +23,12 @@ constexpr double kClampNarrowerThanDisc = 0.01;
 std::string Centimetres(double metres) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g cm", metres * 100.0);
+  return text;
+}
+
+std::string Millimetres(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g mm", metres * 1000.0);
   return text;
 }
 
@@ -48,6 +60,7 @@ DrapeTestSpec ReadDrapeTest(const YamlValue& value) {
   test.where = value.where;
   ReadFields(map, "drape_test", &test);
   const YamlValue& at = map.value();
+  test.accuracy_where = map.Has("accuracy") ? map.Get("accuracy").where : test.where;
   if (!(test.disc_diameter < test.specimen_diameter)) {
     Fail(map.Has("disc_diameter") ? map.Get("disc_diameter") : at,
          "the disc (" + Centimetres(test.disc_diameter) + ") must be smaller than the specimen (" +
@@ -98,6 +111,41 @@ void ExpandDrapeTest(Scene* scene) {
   if (!scene->loads.gravity) scene->loads.gravity = Eigen::Vector3d(0.0, 0.0, -kTesterGravity);
 }
 
+// The circle lattice the loader chooses for `accuracy` (src/scene/drape_mesh_rule.h).
+MeshSpec LatticeForAccuracy(const MeshSpec& mesh, double accuracy, double bending_length) {
+  MeshSpec chosen = mesh;
+  chosen.spacing = std::min(SpacingForDrapeError(accuracy, bending_length), kCoarsestChosenSpacing);
+  return chosen;
+}
+
+void ChooseDrapeTestSpacing(Scene* scene) {
+  DrapeTestSpec& test = *scene->drape_test;
+  const std::optional<double> bending_length = LimperBendingLength(*scene);
+  if (!bending_length) return;  // no rule for this fabric: the mesh's own default spacing
+  const double accuracy = AskedDrapeAccuracy(*scene);
+  const MeshSpec chosen = LatticeForAccuracy(scene->mesh, accuracy, *bending_length);
+  const double nodes = EstimatedNodes(chosen);
+  if (nodes > chosen.max_nodes) {
+    // The finest accuracy of two decimals whose lattice is within the limit.
+    double reachable = std::ceil(accuracy * 100.0) / 100.0;
+    while (reachable < kMostDrapeError &&
+           EstimatedNodes(LatticeForAccuracy(scene->mesh, reachable, *bending_length)) >
+               chosen.max_nodes) {
+      reachable += 0.01;
+    }
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "an accuracy of %s needs a %s lattice for this fabric (bending length %s; the "
+                  "mesh rule, docs/drape-tester.md), about %.3g nodes, above mesh.max_nodes %d: "
+                  "ask for %.2g or more, or raise mesh.max_nodes",
+                  FormatNumber(accuracy).c_str(), Millimetres(chosen.spacing).c_str(),
+                  Millimetres(*bending_length).c_str(), nodes, chosen.max_nodes, reachable);
+    throw InputError(test.accuracy_where, text);
+  }
+  scene->mesh.spacing = chosen.spacing;
+  test.spacing_chosen = true;
+}
+
 std::string DrapeTestText(const Scene& scene) {
   const DrapeTestSpec& test = *scene.drape_test;
   const ObstacleSpec& disc = scene.obstacles.front();
@@ -111,6 +159,11 @@ std::string DrapeTestText(const Scene& scene) {
   if (test.drops > 1) {
     text += " (seed " + std::to_string(test.seed) + ", placement within " + Metres(test.placement) +
             " m, waviness " + Metres(test.waviness) + " m)";
+  }
+  if (test.spacing_chosen) {
+    text += "; mesh.spacing " + Millimetres(scene.mesh.spacing) + " chosen for an accuracy of " +
+            FormatNumber(AskedDrapeAccuracy(scene)) + " (the mesh rule, bending length " +
+            Millimetres(*LimperBendingLength(scene)) + ")";
   }
   text += "\nexpands to: mesh {kind: circle, radius: " + Metres(scene.mesh.radius) +
           ", spacing: " + Metres(scene.mesh.spacing) + ", origin: [0, 0, " +

@@ -1,7 +1,8 @@
 // The scene's `drape_test` block: a drape test (Cusick 1968; BS 5058, ISO 9073-9) given by its
 // geometry, so that a scene says the fabric and the test and nothing else. It expands into what a
 // hand-written tester scene says (configs/fv/ has both forms):
-//   mesh       circle of radius specimen_diameter/2, spacing mesh.spacing (default 1 cm), lying
+//   mesh       circle of radius specimen_diameter/2, spacing mesh.spacing (default: what the
+//              test's accuracy needs, ChooseDrapeTestSpacing), lying
 //              on the disc's clearance layer (z = contact.thickness);
 //   fixed      the nodes within clamp_diameter/2 of the disc's centre (x, y and z): the specimen
 //              clamped between the support and cover discs;
@@ -36,6 +37,13 @@ DrapeTestSpec ReadDrapeTest(const YamlValue& value);
 // Fills the scene's mesh (keeping its spacing and max_nodes), fixed, obstacles and gravity from
 // scene->drape_test, which must be set; contact.thickness must be read already.
 void ExpandDrapeTest(Scene* scene);
+
+// Where the scene gives no mesh.spacing: the spacing the mesh rule says reaches the test's
+// accuracy (drape_test.accuracy, else kDefaultDrapeAccuracy; src/scene/drape_mesh_rule.h), no
+// coarser than kCoarsestChosenSpacing, and drape_test.spacing_chosen. A fabric the rule does not
+// cover keeps the mesh's default. Throws InputError, located at the accuracy, where that lattice
+// would exceed mesh.max_nodes. The material, the loads and the mesh must be read already.
+void ChooseDrapeTestSpacing(Scene* scene);
 
 // The block and what it expands to, for `drape check`: two lines.
 std::string DrapeTestText(const Scene& scene);

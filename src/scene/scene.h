@@ -292,7 +292,13 @@ struct DrapeTestSpec {
   double placement = 0.002;
   double waviness = 0.002;
   int seed = 1;
+  // The drape coefficient's error the test asks for (none: kDefaultDrapeAccuracy,
+  // src/scene/drape_mesh_rule.h). Where the scene gives no mesh.spacing, the loader chooses the
+  // spacing that reaches it by the mesh rule (spacing_chosen).
+  std::optional<double> accuracy;
+  bool spacing_chosen = false;
   Location where;
+  Location accuracy_where;  // the accuracy's value, else the block
 };
 
 struct Scene {

@@ -1153,7 +1153,11 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   ResolveRegionReferences(scene);
   if (const auto v = top.Find("obstacles")) scene->obstacles = ReadObstacles(*v);
   scene->contact = ReadContact(OptionalSection(top, "contact"));
-  if (scene->drape_test) ExpandDrapeTest(scene);
+  if (scene->drape_test) {
+    ExpandDrapeTest(scene);
+    const auto mesh = top.Find("mesh");
+    if (!mesh || !YamlMap(*mesh).Has("spacing")) ChooseDrapeTestSpacing(scene);
+  }
   scene->solver = ReadSolver(OptionalSection(top, "solver"));
   scene->output = ReadOutput(OptionalSection(top, "output"), *scene);
   if (!top.Has("loads")) scene->loads.where = OptionalSection(top, "loads").where;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "src/scene/drape_mesh_rule.h"
 #include "src/scene/drape_tester.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
@@ -281,6 +282,14 @@ std::vector<SchemaRow> DrapeTest() {
           .Doc("the drops' random draws come from (seed, drop number) alone (not in scene.yaml, "
                "as `drops`)")
           .Example({"drape_test.seed=7"}, kNotWritten),
+      row("accuracy")
+          .Number("", Between(kFinestDrapeAccuracy, kMostDrapeError))
+          .Field(&DrapeTestSpec::accuracy)
+          .Default("`0.05`")
+          .Doc("the drape coefficient's error bar the test needs: without `mesh.spacing`, drape "
+               "chooses the lattice that reaches it; a run whose bar is wider says so and exits "
+               "1: [Accuracy](#accuracy)")
+          .Example({"drape_test.accuracy=0.1"}, "mesh.spacing", "0.0055"),
   };
 }
 
