@@ -240,6 +240,11 @@ std::shared_ptr<PySolved> Solve(const PyScene& loaded, const std::optional<std::
   if (log.lines.TakeKeyboardInterrupt()) interrupted = true;
   log.lines.RaiseIfFailed();
   solved->interrupted = interrupted;
+  const std::optional<AccuracyOutcome> accuracy = AccuracyOf(solved->scene, solved->report);
+  if (!interrupted && accuracy && accuracy->binding &&
+      (!solved->report.result.converged || !accuracy->met())) {
+    solved->warnings.push_back(AccuracyFailure(*accuracy, solved->report.result.converged));
+  }
   return solved;
 }
 

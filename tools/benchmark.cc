@@ -779,8 +779,8 @@ void PrintParetoRow(const ParetoPoint& point) {
   std::fflush(stdout);
 }
 
-// The chart: |error| against the command's wall time, a series per fabric and build (converged
-// runs only), drawn by gnuplot into `chart` (SVG).
+// The chart: |error| against the command's wall time, a point per converged run, a series per
+// fabric and build, drawn by gnuplot into `chart` (SVG); the target's box is the lower left.
 void DrawParetoChart(const std::vector<ParetoPoint>& points, const std::string& chart) {
   const std::string data = chart + ".dat";
   std::FILE* file = std::fopen(data.c_str(), "w");
@@ -812,7 +812,8 @@ void DrawParetoChart(const std::vector<ParetoPoint>& points, const std::string& 
                "set key outside right\nset arrow from graph 0, first 0.03 to graph 1, first 0.03 "
                "nohead dashtype 2\nset label 'target 0.03' at graph 0.02, first 0.034\n"
                "set arrow from 10, graph 0 to 10, graph 1 nohead dashtype 2\n"
-               "plot for [k=0:%zu] '%s' index k using 1:2 with linespoints title columnheader(1)\n",
+               "plot for [k=0:%zu] '%s' index k using 1:2 with points pointsize 1.4 "
+               "title columnheader(1)\n",
                chart.c_str(), series.size() - 1, data.c_str());
   std::fclose(file);
   if (std::system(("gnuplot '" + script + "'").c_str()) != 0) {

@@ -315,6 +315,19 @@ def test_drapes_warnings_are_python_warnings():
         drape.solve(config("fv/drape_tester_cotton_30.yaml"), set=coarse)  # silenced: no error
 
 
+def test_an_accuracy_not_reached_is_a_warning():
+    # The 2.5 cm lattice of the small polyester test expects 0.5, wider than the 0.05 asked.
+    narrow = {"mesh.spacing": 0.025, "drape_test.disc_diameter": 0.2, "solver.levels": 1,
+              "drape_test.accuracy": 0.05}
+    with pytest.warns(drape.DrapeWarning, match=r"wider than the ±0.05 asked"):
+        drape.solve(config("fv/drape_tester_polyester_24.yaml"), set=narrow)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", drape.DrapeWarning)
+        # Reached, and the lattice is not coarse for what was asked: no warning at all.
+        drape.solve(config("fv/drape_tester_polyester_24.yaml"),
+                    set={**narrow, "drape_test.accuracy": 0.5})
+
+
 def test_progress_goes_through_python(capfd):
     scene = drape.load(config("fv/drape_tester_cotton_30.yaml"), set={"mesh.spacing": 0.05})
     lines = []

@@ -197,43 +197,6 @@ std::string DrapeLine(const SolveReport& report) {
   return text + ", " + std::to_string(report.drape->folds.count) + " folds";
 }
 
-// "; accuracy ±0.05 asked, ±0.043 reached (mesh.spacing 2.7 mm chosen for it)".
-std::string AccuracyClause(const AccuracyOutcome& accuracy) {
-  return "; accuracy ±" + RoundedNumber(accuracy.asked, 2) + " asked, ±" +
-         RoundedNumber(accuracy.reached, 2) + " reached (mesh.spacing " +
-         LengthText(accuracy.spacing, 2) +
-         (accuracy.spacing_chosen ? " chosen for it)" : " given)");
-}
-
-// Why a run that asked for an accuracy did not reach it (stderr, exit 1): the finest lattice
-// stopped before equilibrium (with the best level that reached it), or its bar is wider.
-std::string AccuracyFailure(const AccuracyOutcome& accuracy, bool converged) {
-  const std::string asked = "±" + RoundedNumber(accuracy.asked, 2);
-  if (!converged) {
-    std::string text = "the " + LengthText(accuracy.spacing, 2) +
-                       " lattice stopped before equilibrium, so no drape coefficient within " +
-                       asked + " (drape_test.accuracy)";
-    if (const auto& best = accuracy.best_converged) {
-      char figure[64];
-      std::snprintf(figure, sizeof figure, "%.3f ± %.2g", best->drape_coefficient, best->error);
-      text += "; the best reached is the " + LengthText(best->spacing, 2) + " level's, " + figure +
-              " (mesh rule)";
-    }
-    return text + "; raise solver.time_limit or solver.max_iterations, or ask for less";
-  }
-  const std::string head = "the drape coefficient's error bar ±" +
-                           RoundedNumber(accuracy.reached, 2) + " is wider than the " + asked +
-                           " asked (drape_test.accuracy)";
-  if (!accuracy.spacing_chosen) {
-    return head + ": mesh.spacing " + LengthText(accuracy.spacing, 2) +
-           " is too coarse for it; leave mesh.spacing out and drape chooses the lattice";
-  }
-  return head + ": the levels changed it more than the mesh rule expects at " +
-         LengthText(accuracy.spacing, 2) + "; give mesh.spacing " +
-         LengthText(accuracy.spacing * accuracy.asked / accuracy.reached, 2) +
-         " or finer to narrow it";
-}
-
 // How many drops `drape solve` runs: --drops, else drape_test.drops, else 1. --drops > 1 needs a
 // drape_test block (the perturbations are the test's).
 int DropsOf(const Arguments& arguments, const Scene& scene) {

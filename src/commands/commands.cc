@@ -3,10 +3,12 @@
 #include <cstdio>
 #include <functional>
 
+#include "src/analysis/levels.h"
 #include "src/fit/fit_file.h"
 #include "src/fit/fit_methods.h"
 #include "src/fit/fit_problem.h"
 #include "src/fit/fit_writer.h"
+#include "src/output/json.h"
 #include "src/output/provenance.h"
 #include "src/output/writers.h"
 #include "src/parallel/process_group.h"
@@ -172,6 +174,43 @@ FabricsCommandResult RunFabricsCommand(FabricsOptions options, const CommandCont
     outcome.all_predicted = s.predicted == s.fabrics && !s.interrupted;
   }
   return outcome;
+}
+
+// "; accuracy ±0.05 asked, ±0.043 reached (mesh.spacing 2.7 mm chosen for it)".
+std::string AccuracyClause(const AccuracyOutcome& accuracy) {
+  return "; accuracy ±" + RoundedNumber(accuracy.asked, 2) + " asked, ±" +
+         RoundedNumber(accuracy.reached, 2) + " reached (mesh.spacing " +
+         LengthText(accuracy.spacing, 2) +
+         (accuracy.spacing_chosen ? " chosen for it)" : " given)");
+}
+
+// Why a run that asked for an accuracy did not reach it (stderr, exit 1): the finest lattice
+// stopped before equilibrium (with the best level that reached it), or its bar is wider.
+std::string AccuracyFailure(const AccuracyOutcome& accuracy, bool converged) {
+  const std::string asked = "±" + RoundedNumber(accuracy.asked, 2);
+  if (!converged) {
+    std::string text = "the " + LengthText(accuracy.spacing, 2) +
+                       " lattice stopped before equilibrium, so no drape coefficient within " +
+                       asked + " (drape_test.accuracy)";
+    if (const auto& best = accuracy.best_converged) {
+      char figure[64];
+      std::snprintf(figure, sizeof figure, "%.3f ± %.2g", best->drape_coefficient, best->error);
+      text += "; the best reached is the " + LengthText(best->spacing, 2) + " level's, " + figure +
+              " (mesh rule)";
+    }
+    return text + "; raise solver.time_limit or solver.max_iterations, or ask for less";
+  }
+  const std::string head = "the drape coefficient's error bar ±" +
+                           RoundedNumber(accuracy.reached, 2) + " is wider than the " + asked +
+                           " asked (drape_test.accuracy)";
+  if (!accuracy.spacing_chosen) {
+    return head + ": mesh.spacing " + LengthText(accuracy.spacing, 2) +
+           " is too coarse for it; leave mesh.spacing out and drape chooses the lattice";
+  }
+  return head + ": the levels changed it more than the mesh rule expects at " +
+         LengthText(accuracy.spacing, 2) + "; give mesh.spacing " +
+         LengthText(accuracy.spacing * accuracy.asked / accuracy.reached, 2) +
+         " or finer to narrow it";
 }
 
 }  // namespace drape

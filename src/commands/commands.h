@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "src/fit/fit_solver.h"
+#include "src/run/solve_report.h"
 #include "src/scene/scene.h"
 #include "src/sweep/drops.h"
 #include "src/sweep/fabrics.h"
@@ -102,6 +103,13 @@ struct FabricsCommandResult {
 };
 // `options.command_line` is taken from the context.
 FabricsCommandResult RunFabricsCommand(FabricsOptions options, const CommandContext& context);
+
+// What a drape test asked of its drape coefficient's error bar and what the solve reached
+// (AccuracyOf, src/run/solve_report.h), as both faces say it: the result line's clause ("; accuracy
+// ±0.05 asked, ±0.043 reached (mesh.spacing 2.7 mm chosen for it)"), and why a run whose accuracy
+// binds did not reach it (`drape solve` on stderr with exit 1, Python as a DrapeWarning).
+std::string AccuracyClause(const AccuracyOutcome& accuracy);
+std::string AccuracyFailure(const AccuracyOutcome& accuracy, bool converged);
 
 }  // namespace drape
 
