@@ -821,59 +821,74 @@ void DrawParetoChart(const std::vector<ParetoPoint>& points, const std::string& 
   }
 }
 
-int ParetoMain(int argc, char** argv) {
+// One fabric by one strategy, on this build or the baseline's binary.
+ParetoPoint RunParetoPoint(const ParetoFabric& fabric, const ParetoStrategy& strategy,
+                           const std::string& binary, bool is_baseline, double cap,
+                           const std::string& out) {
+  ParetoPoint point{fabric.name, is_baseline ? "baseline" : "this", strategy.label, {}};
+  point.run = RunDrape(binary, fabric.file, strategy.overrides, cap, out);
+  const bool extrapolated = strategy.extrapolate && point.run.extrapolated >= 0;
+  point.drape_coefficient = extrapolated ? point.run.extrapolated : point.run.drape_coefficient;
+  point.error =
+      point.drape_coefficient - (is_baseline ? fabric.baseline_reference : fabric.reference);
+  return point;
+}
+
+struct ParetoOptions {
   std::string drape = "build/drape", baseline, chart;
-  std::vector<std::string> names;
+  std::vector<std::string> fabrics;  // empty: all
   double cap = 300.0;
+};
+
+bool ReadParetoOptions(int argc, char** argv, ParetoOptions* options) {
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
     if (key == "--drape") {
-      drape = value;
+      options->drape = value;
     } else if (key == "--baseline") {
-      baseline = value;
+      options->baseline = value;
     } else if (key == "--chart") {
-      chart = value;
+      options->chart = value;
     } else if (key == "--cap") {
-      cap = std::atof(value.c_str());
+      options->cap = std::atof(value.c_str());
     } else if (key == "--fabrics") {
-      names = Split(value);
+      options->fabrics = Split(value);
     } else {
       std::fprintf(stderr,
                    "usage: benchmark pareto [--fabrics cotton,polyester,limp] [--cap s] "
                    "[--baseline BINARY] [--chart docs/pareto.svg] [--drape build/drape]\n");
-      return 2;
+      return false;
     }
   }
+  return true;
+}
+
+int ParetoMain(int argc, char** argv) {
+  ParetoOptions options;
+  if (!ReadParetoOptions(argc, argv, &options)) return 2;
   std::printf(
       "Speed against error (`benchmark pareto`, cap %.0f s per level; error against each build's "
       "own 1.3 mm drape coefficient):\n\n| fabric | build | strategy | nodes | wall s | "
       "iterations | converged | DC | error | error bar | covers |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|\n",
-      cap);
+      options.cap);
   const std::string out = "/tmp/drape_pareto_" + std::to_string(getpid());
+  const std::vector<std::string>& names = options.fabrics;
   std::vector<ParetoPoint> points;
   for (const ParetoFabric& fabric : ParetoFabrics()) {
     if (!names.empty() && std::find(names.begin(), names.end(), fabric.name) == names.end()) {
       continue;
     }
     for (const ParetoStrategy& strategy : ParetoStrategies()) {
-      for (const bool is_baseline : {false, true}) {
-        if (is_baseline && (baseline.empty() || strategy.this_build_only)) continue;
-        ParetoPoint point{fabric.name, is_baseline ? "baseline" : "this", strategy.label, {}};
-        point.run =
-            RunDrape(is_baseline ? baseline : drape, fabric.file, strategy.overrides, cap, out);
-        point.drape_coefficient = strategy.extrapolate && point.run.extrapolated >= 0
-                                      ? point.run.extrapolated
-                                      : point.run.drape_coefficient;
-        point.error =
-            point.drape_coefficient - (is_baseline ? fabric.baseline_reference : fabric.reference);
-        PrintParetoRow(point);
-        points.push_back(point);
-      }
+      points.push_back(RunParetoPoint(fabric, strategy, options.drape, false, options.cap, out));
+      PrintParetoRow(points.back());
+      if (options.baseline.empty() || strategy.this_build_only) continue;
+      points.push_back(RunParetoPoint(fabric, strategy, options.baseline, true, options.cap, out));
+      PrintParetoRow(points.back());
     }
   }
   std::system(("rm -rf '" + out + "'").c_str());
-  if (!chart.empty()) DrawParetoChart(points, chart);
+  if (!options.chart.empty()) DrawParetoChart(points, options.chart);
   return 0;
 }
 
