@@ -190,11 +190,19 @@ TEST_F(DrapeTestBlock, TheAccuracyChoosesTheLattice) {
       Load(std::string("drape_test: {accuracy: 0.02}\nmesh: {spacing: 0.02}\n") + kFabric);
   EXPECT_FALSE(given.drape_test->spacing_chosen);
   EXPECT_DOUBLE_EQ(given.mesh.spacing, 0.02);
-  // A fabric the rule does not cover (springs) keeps the mesh's own default.
-  const Scene springs =
-      Load("drape_test: {accuracy: 0.02}\nmaterial: {density: 0.1, springs: {structural: 100}}\n");
-  EXPECT_FALSE(springs.drape_test->spacing_chosen);
-  EXPECT_DOUBLE_EQ(springs.mesh.spacing, MeshSpec().spacing);
+  // A fabric the rule does not cover (springs) keeps the mesh's own default, and an accuracy,
+  // which nothing could hold it to, is refused at its key, with or without a spacing.
+  const std::string springs = "material: {density: 0.1, springs: {structural: 100}}\n";
+  const Scene plain = Load("drape_test: {}\n" + springs);
+  EXPECT_FALSE(plain.drape_test->spacing_chosen);
+  EXPECT_DOUBLE_EQ(plain.mesh.spacing, MeshSpec().spacing);
+  for (const std::string mesh : {"", "mesh: {spacing: 0.02}\n"}) {
+    const std::string error = Error("drape_test: {accuracy: 0.02}\n" + mesh + springs);
+    EXPECT_NE(error.find("scene.yaml:1:24: drape_test.accuracy: the mesh rule, by which a run is "
+                         "held to an accuracy, covers a finite_volume fabric"),
+              std::string::npos)
+        << error;
+  }
 }
 
 // An accuracy whose lattice would exceed mesh.max_nodes is refused at the accuracy, saying what

@@ -38,6 +38,13 @@ std::string Metres(double metres) {
   return text;
 }
 
+// The circle lattice the loader chooses for `accuracy` (src/scene/drape_mesh_rule.h).
+MeshSpec LatticeForAccuracy(const MeshSpec& mesh, double accuracy, double bending_length) {
+  MeshSpec chosen = mesh;
+  chosen.spacing = std::min(SpacingForDrapeError(accuracy, bending_length), kCoarsestChosenSpacing);
+  return chosen;
+}
+
 }  // namespace
 
 const std::vector<std::string>& DrapeTestKeys() {
@@ -111,36 +118,44 @@ void ExpandDrapeTest(Scene* scene) {
   if (!scene->loads.gravity) scene->loads.gravity = Eigen::Vector3d(0.0, 0.0, -kTesterGravity);
 }
 
-// The circle lattice the loader chooses for `accuracy` (src/scene/drape_mesh_rule.h).
-MeshSpec LatticeForAccuracy(const MeshSpec& mesh, double accuracy, double bending_length) {
-  MeshSpec chosen = mesh;
-  chosen.spacing = std::min(SpacingForDrapeError(accuracy, bending_length), kCoarsestChosenSpacing);
-  return chosen;
+void RequireTheMeshRuleForAnAccuracy(const Scene& scene) {
+  const DrapeTestSpec& test = *scene.drape_test;
+  if (!test.accuracy || LimperBendingLength(scene)) return;
+  throw InputError(test.accuracy_where,
+                   "the mesh rule, by which a run is held to an accuracy, covers a finite_volume "
+                   "fabric with a bending rigidity and a density, under gravity "
+                   "(docs/drape-tester.md): leave the accuracy out for this fabric");
 }
 
 void ChooseDrapeTestSpacing(Scene* scene) {
   DrapeTestSpec& test = *scene->drape_test;
   const std::optional<double> bending_length = LimperBendingLength(*scene);
+  RequireTheMeshRuleForAnAccuracy(*scene);
   if (!bending_length) return;  // no rule for this fabric: the mesh's own default spacing
   const double accuracy = AskedDrapeAccuracy(*scene);
   const MeshSpec chosen = LatticeForAccuracy(scene->mesh, accuracy, *bending_length);
   const double nodes = EstimatedNodes(chosen);
   if (nodes > chosen.max_nodes) {
-    // The finest accuracy of two decimals whose lattice is within the limit.
-    double reachable = std::ceil(accuracy * 100.0) / 100.0;
-    while (reachable < kMostDrapeError &&
-           EstimatedNodes(LatticeForAccuracy(scene->mesh, reachable, *bending_length)) >
-               chosen.max_nodes) {
-      reachable += 0.01;
+    // The finest accuracy of two decimals whose lattice is within the limit, if one is.
+    std::optional<double> reachable;
+    for (int hundredths = static_cast<int>(std::ceil(accuracy * 100.0 - 1e-9));
+         hundredths <= 100 * kMostDrapeError; ++hundredths) {
+      const MeshSpec coarser = LatticeForAccuracy(scene->mesh, hundredths / 100.0, *bending_length);
+      if (EstimatedNodes(coarser) <= chosen.max_nodes) {
+        reachable = hundredths / 100.0;
+        break;
+      }
     }
     char text[400];
     std::snprintf(text, sizeof text,
                   "an accuracy of %s needs a %s lattice for this fabric (bending length %s; the "
-                  "mesh rule, docs/drape-tester.md), about %.3g nodes, above mesh.max_nodes %d: "
-                  "ask for %.2g or more, or raise mesh.max_nodes",
+                  "mesh rule, docs/drape-tester.md), about %.3g nodes, above mesh.max_nodes %d: ",
                   FormatNumber(accuracy).c_str(), Millimetres(chosen.spacing).c_str(),
-                  Millimetres(*bending_length).c_str(), nodes, chosen.max_nodes, reachable);
-    throw InputError(test.accuracy_where, text);
+                  Millimetres(*bending_length).c_str(), nodes, chosen.max_nodes);
+    throw InputError(test.accuracy_where,
+                     text + (reachable ? "ask for " + FormatNumber(*reachable) +
+                                             " or more, or raise mesh.max_nodes"
+                                       : std::string("raise mesh.max_nodes")));
   }
   scene->mesh.spacing = chosen.spacing;
   test.spacing_chosen = true;

@@ -41,9 +41,15 @@ void ExpandDrapeTest(Scene* scene);
 // Where the scene gives no mesh.spacing: the spacing the mesh rule says reaches the test's
 // accuracy (drape_test.accuracy, else kDefaultDrapeAccuracy; src/scene/drape_mesh_rule.h), no
 // coarser than kCoarsestChosenSpacing, and drape_test.spacing_chosen. A fabric the rule does not
-// cover keeps the mesh's default. Throws InputError, located at the accuracy, where that lattice
-// would exceed mesh.max_nodes. The material, the loads and the mesh must be read already.
+// cover keeps the mesh's default (and may not give an accuracy: RequireTheMeshRuleForAnAccuracy).
+// Throws InputError, located at the accuracy, where that lattice would exceed mesh.max_nodes. The
+// material, the loads and the mesh must be read already.
 void ChooseDrapeTestSpacing(Scene* scene);
+
+// Throws InputError, located at drape_test.accuracy, where the scene gives an accuracy that the
+// mesh rule cannot hold it to: a fabric the rule does not cover (springs, a mass not given per
+// unit area, no bending rigidity or gravity), whose accuracy would otherwise go unused.
+void RequireTheMeshRuleForAnAccuracy(const Scene& scene);
 
 // The block and what it expands to, for `drape check`: two lines.
 std::string DrapeTestText(const Scene& scene);

@@ -1156,7 +1156,11 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   if (scene->drape_test) {
     ExpandDrapeTest(scene);
     const auto mesh = top.Find("mesh");
-    if (!mesh || !YamlMap(*mesh).Has("spacing")) ChooseDrapeTestSpacing(scene);
+    if (!mesh || !YamlMap(*mesh).Has("spacing")) {
+      ChooseDrapeTestSpacing(scene);
+    } else {
+      RequireTheMeshRuleForAnAccuracy(*scene);
+    }
   }
   scene->solver = ReadSolver(OptionalSection(top, "solver"));
   scene->output = ReadOutput(OptionalSection(top, "output"), *scene);
