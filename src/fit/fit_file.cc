@@ -364,11 +364,10 @@ Scene LoadSpecimenScene(const FitSpec& spec, const FitSpecimen& specimen) {
   }
 }
 
-// Checks a specimen's scene with every parameter at its initial value, and each measurement
-// against the model (ids in range, reactions at fixed nodes, a surface for a drape coefficient).
-// Returns the warnings (FitMeshWarning).
-std::vector<std::string> CheckSpecimen(const FitSpec& spec, const FitSpecimen& specimen) {
-  const Scene scene = LoadSpecimenScene(spec, specimen);
+// Checks a specimen's scene with every parameter at its initial value (`scene`, from
+// LoadSpecimenScene), and each measurement against the model (ids in range, reactions at fixed
+// nodes, a surface for a drape coefficient). Returns the warnings (FitMeshWarning).
+std::vector<std::string> CheckSpecimen(const FitSpecimen& specimen, const Scene& scene) {
   if (FrictionLoadSteps(scene) > 0) {
     throw InputError(scene.material.finite_volume.where,
                      "friction_load_steps: a fit solves each equilibrium with its loads at once, "
@@ -537,15 +536,16 @@ FitSpec LoadFitFile(const std::string& path, const std::vector<std::string>& sce
   const YAML::Node document = ReadYamlFile(path, "fit file");
   YamlOrigins origins(path);
   ReadTop(YamlRoot(document, origins), &spec);
+  std::vector<Scene> initial;  // each specimen's scene at the initial parameters
   for (auto& specimen : spec.specimens) {
     ReadSpecimenScene(&specimen);
-    const Scene initial = LoadSpecimenScene(spec, specimen);
-    if (initial.drape_test && initial.drape_test->spacing_chosen) {
-      specimen.chosen_spacing = initial.mesh.spacing;
+    initial.push_back(LoadSpecimenScene(spec, specimen));
+    if (initial.back().drape_test && initial.back().drape_test->spacing_chosen) {
+      specimen.chosen_spacing = initial.back().mesh.spacing;
     }
   }
-  for (const auto& specimen : spec.specimens) {
-    for (std::string& warning : CheckSpecimen(spec, specimen)) {
+  for (size_t k = 0; k < spec.specimens.size(); ++k) {
+    for (std::string& warning : CheckSpecimen(spec.specimens[k], initial[k])) {
       spec.warnings.push_back(std::move(warning));
     }
   }
