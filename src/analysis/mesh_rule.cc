@@ -22,8 +22,8 @@ std::optional<MeshAdvice> AdviseMeshOfScene(const Scene& scene) {
   MeshAdvice advice;
   advice.spacing = spacing;
   advice.bending_length = *bending_length;
-  advice.unresolved = kDrapeErrorPerSpacing * spacing / *bending_length >= kMostDrapeError;
   advice.expected_error = ExpectedDrapeError(spacing, *bending_length);
+  advice.unresolved = advice.expected_error >= kMostDrapeError;  // K h / c reached the cap
   advice.accuracy = AskedDrapeAccuracy(scene);
   advice.spacing_needed = SpacingForDrapeError(advice.accuracy, *bending_length);
   advice.spacing_chosen = scene.drape_test && scene.drape_test->spacing_chosen;

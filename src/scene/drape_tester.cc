@@ -130,7 +130,6 @@ void RequireTheMeshRuleForAnAccuracy(const Scene& scene) {
 void ChooseDrapeTestSpacing(Scene* scene) {
   DrapeTestSpec& test = *scene->drape_test;
   const std::optional<double> bending_length = LimperBendingLength(*scene);
-  RequireTheMeshRuleForAnAccuracy(*scene);
   if (!bending_length) return;  // no rule for this fabric: the mesh's own default spacing
   const double accuracy = AskedDrapeAccuracy(*scene);
   const MeshSpec chosen = LatticeForAccuracy(scene->mesh, accuracy, *bending_length);

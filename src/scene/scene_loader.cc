@@ -1155,12 +1155,9 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   scene->contact = ReadContact(OptionalSection(top, "contact"));
   if (scene->drape_test) {
     ExpandDrapeTest(scene);
+    RequireTheMeshRuleForAnAccuracy(*scene);
     const auto mesh = top.Find("mesh");
-    if (!mesh || !YamlMap(*mesh).Has("spacing")) {
-      ChooseDrapeTestSpacing(scene);
-    } else {
-      RequireTheMeshRuleForAnAccuracy(*scene);
-    }
+    if (!mesh || !YamlMap(*mesh).Has("spacing")) ChooseDrapeTestSpacing(scene);
   }
   scene->solver = ReadSolver(OptionalSection(top, "solver"));
   scene->output = ReadOutput(OptionalSection(top, "output"), *scene);
