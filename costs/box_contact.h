@@ -58,6 +58,9 @@ struct BoxContact {
     return true;
   }
 
+  // Whether the energy can be nonzero at x (InClearanceLayer, costs/contact_penalty.h).
+  bool Touches(const double* x) const { return InClearanceLayer(*this, x); }
+
   static BoxContact Create(const double min[3], const double max[3], double clearance,
                            double stiffness) {
     return BoxContact(min, max, clearance, stiffness);

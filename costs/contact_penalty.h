@@ -20,6 +20,15 @@ T ContactPenalty(const T& distance, double clearance, double stiffness) {
   return (stiffness / 3.0) * gap * gap * gap;
 }
 
+// Whether a node contact (a functor with a signed Distance φ and a clearance t) has energy at `x`:
+// φ < t, ContactPenalty's gap > 0 read on values. Where it is false the contact's energy, gradient
+// and Hessian are exactly zero, which is what lets the assembly skip it (a contact's Touches, the
+// active set of src/numerics/sparse_hessian.h) and the edge contact skip a point's Jets.
+template <typename Contact>
+bool InClearanceLayer(const Contact& contact, const double* x) {
+  return contact.Distance(x) < contact.clearance;
+}
+
 }  // namespace drape
 
 #endif  // DRAPE_COSTS_CONTACT_PENALTY_H_

@@ -51,6 +51,9 @@ struct CylinderContact {
     return true;
   }
 
+  // Whether the energy can be nonzero at x (InClearanceLayer, costs/contact_penalty.h).
+  bool Touches(const double* x) const { return InClearanceLayer(*this, x); }
+
   static CylinderContact Create(const double center[3], double radius, double height,
                                 double clearance, double stiffness) {
     return CylinderContact(center, radius, height, clearance, stiffness);

@@ -44,6 +44,9 @@ struct DiskContact {
     return true;
   }
 
+  // Whether the energy can be nonzero at x (InClearanceLayer, costs/contact_penalty.h).
+  bool Touches(const double* x) const { return InClearanceLayer(*this, x); }
+
   static DiskContact Create(const double center[3], double radius, double clearance,
                             double stiffness) {
     return DiskContact(center, radius, clearance, stiffness);

@@ -35,6 +35,18 @@ struct EdgeContact {
   // s_j of point j = 1..points.
   double Fraction(int j) const { return static_cast<double>(j) / (points + 1); }
 
+  // Whether the energy can be nonzero: some point inside the clearance layer (the test the
+  // operator makes point by point).
+  bool Touches(const double* a, const double* b) const {
+    for (int j = 1; j <= points; ++j) {
+      const double s = Fraction(j);
+      const double point[3] = {a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]),
+                               a[2] + s * (b[2] - a[2])};
+      if (InClearanceLayer(contact, point)) return true;
+    }
+    return false;
+  }
+
   template <typename T>
   bool operator()(const T* const a, const T* const b, T* energy) const {
     energy[0] = T();
@@ -44,7 +56,7 @@ struct EdgeContact {
       for (int c = 0; c < 3; ++c) {
         value[c] = ScalarPart(a[c]) + s * (ScalarPart(b[c]) - ScalarPart(a[c]));
       }
-      if (!(contact.Distance(value) < contact.clearance)) continue;  // no energy, no derivative
+      if (!InClearanceLayer(contact, value)) continue;  // no energy, no derivative
       const T point[3] = {a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]),
                           a[2] + s * (b[2] - a[2])};
       energy[0] += ContactPenalty(contact.Distance(point), contact.clearance, contact.stiffness);

@@ -33,6 +33,9 @@ struct PlaneContact {
     return true;
   }
 
+  // Whether the energy can be nonzero at x (InClearanceLayer, costs/contact_penalty.h).
+  bool Touches(const double* x) const { return InClearanceLayer(*this, x); }
+
   static PlaneContact Create(const double point[3], const double normal[3], double clearance,
                              double stiffness) {
     return PlaneContact(point, normal, clearance, stiffness);

@@ -38,6 +38,9 @@ struct SphereContact {
     return true;
   }
 
+  // Whether the energy can be nonzero at x (InClearanceLayer, costs/contact_penalty.h).
+  bool Touches(const double* x) const { return InClearanceLayer(*this, x); }
+
   static SphereContact Create(const double center[3], double radius, double clearance,
                               double stiffness) {
     return SphereContact(center, radius, clearance, stiffness);

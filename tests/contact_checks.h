@@ -1,5 +1,6 @@
 // Checks every obstacle contact functor passes: its distance to the surface at probe points worked
-// out by hand, the cubic penalty energy (k/3) g³ inside the clearance only, derivatives against
+// out by hand, the cubic penalty energy (k/3) g³ inside the clearance only (and Touches there
+// only), derivatives against
 // central differences, and a force pushing outward with magnitude k g².
 #ifndef DRAPE_TESTS_CONTACT_CHECKS_H_
 #define DRAPE_TESTS_CONTACT_CHECKS_H_
@@ -37,6 +38,15 @@ void ExpectCubicPenaltyInsideClearanceOnly(const Contact& obstacle,
     ASSERT_TRUE(term->Energy(probe.x.data(), &energy));
     const double gap = std::max(0.0, clearance - probe.distance);
     EXPECT_NEAR(energy, stiffness / 3.0 * gap * gap * gap, 1e-12 * (1.0 + energy));
+    // The assembly's active set: Touches exactly inside the clearance, and outside it the
+    // energy and every derivative are zero (the assembly skips it there).
+    EXPECT_EQ(term->Touches(probe.x.data()), probe.distance < clearance) << probe.distance;
+    if (term->Touches(probe.x.data())) continue;
+    double gradient[3], hessian[9];
+    ASSERT_TRUE(term->ReferenceHessian(probe.x.data(), &energy, gradient, hessian));
+    EXPECT_EQ(energy, 0.0);
+    for (double g : gradient) EXPECT_EQ(g, 0.0);
+    for (double h : hessian) EXPECT_EQ(h, 0.0);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <random>
 #include <vector>
 
 #include "costs/disk_contact.h"
@@ -83,6 +84,42 @@ TEST(EdgeContact, NothingWhereNoPointIsInTheClearanceLayer) {
   EXPECT_EQ(energy, 0.0);
   for (double g : gradient) EXPECT_EQ(g, 0.0);
   for (double h : hessian) EXPECT_EQ(h, 0.0);
+}
+
+// The assembly's active set asks Touches; an edge it skips must be one whose energy, gradient and
+// Hessian are exactly zero, and an edge it keeps one with some point in the layer: the corner cut,
+// whose nodes are both clear, among edges thrown at random across the rim.
+TEST(EdgeContact, TouchesExactlyWhereSomePointIsInTheClearanceLayer) {
+  const EdgeContact<DiskContact> corner(Disc(), 3);
+  EXPECT_TRUE(corner.Touches(kCornerCut.data(), kCornerCut.data() + 3));
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> radial(kRimRadius - 0.006, kRimRadius + 0.006);
+  std::uniform_real_distribution<double> height(-0.003, 0.003);
+  int touching = 0, clear = 0;
+  for (int sample = 0; sample < 2000; ++sample) {
+    const std::vector<double> x = {radial(random), 0.002 * height(random), height(random),
+                                   radial(random), 0.002 * height(random), height(random)};
+    const auto term = MakeTerm("disk_edge_contact", {0, 1}, EdgeContact(Disc(), 3));
+    double energy, gradient[6], hessian[36];
+    ASSERT_TRUE(term->ReferenceHessian(x.data(), &energy, gradient, hessian));
+    bool any_point_inside = false;
+    for (int j = 1; j <= 3; ++j) {
+      double point[3];
+      for (int c = 0; c < 3; ++c) point[c] = x[c] + 0.25 * j * (x[3 + c] - x[c]);
+      any_point_inside = any_point_inside || Disc().Distance(point) < kClearance;
+    }
+    ASSERT_EQ(term->Touches(x.data()), any_point_inside);
+    if (any_point_inside) {
+      ++touching;
+      continue;
+    }
+    ++clear;
+    EXPECT_EQ(energy, 0.0);
+    for (double g : gradient) EXPECT_EQ(g, 0.0);
+    for (double h : hessian) EXPECT_EQ(h, 0.0);
+  }
+  EXPECT_GT(touching, 100);
+  EXPECT_GT(clear, 100);
 }
 
 TEST(EdgeContact, DerivativesMatchDifferences) {

@@ -54,6 +54,11 @@ class Term {
   virtual bool EnergyGradient(const double* positions, double* energy, double* gradient) const = 0;
   virtual bool EnergyHessian(const double* positions, double* energy, double* gradient,
                              double* hessian) const = 0;
+  // False only where the energy, its gradient and its Hessian are all exactly zero: a contact
+  // whose every point lies outside its clearance layer (its functor's Touches). The assembly skips
+  // such a term (its active set, src/numerics/sparse_hessian.h); the term is asked again at every
+  // state, so no contact is missed that the whole set would make.
+  virtual bool Touches(const double* /*positions*/) const { return true; }
   // Whether EnergyHessianProjected is available: the term builds a semidefinite stand-in for its
   // Hessian from its functor's stages (src/derivatives/fast_hessian.h, "Projection").
   virtual bool HasStagedProjection() const { return false; }
@@ -125,6 +130,17 @@ struct ShiftedPotential {
   Functor functor;
   double shift;
 };
+
+// Whether a functor says on values where its energy can be nonzero: bool Touches(x0, ..., x{N-1}).
+template <typename Functor, typename = void>
+struct HasTouches : std::false_type {};
+template <typename Functor>
+struct HasTouches<Functor, std::void_t<decltype(&Functor::Touches)>> : std::true_type {};
+
+template <typename Functor, std::size_t... I>
+bool CallTouches(const Functor& functor, const double* const* x, std::index_sequence<I...>) {
+  return functor.Touches(x[I]...);
+}
 
 template <typename Functor, typename = void>
 struct TranslationInvariant : std::false_type {};
@@ -217,6 +233,16 @@ class AutoDiffTerm : public Term {
     const double* x[kN];
     for (int a = 0; a < kN; ++a) x[a] = positions + 3 * nodes()[a];
     return internal::EvaluateEnergy(functor_, x, energy);
+  }
+
+  bool Touches(const double* positions) const override {
+    if constexpr (internal::HasTouches<Functor>::value) {
+      const double* x[kN];
+      for (int a = 0; a < kN; ++a) x[a] = positions + 3 * nodes()[a];
+      return internal::CallTouches(functor_, x, std::make_index_sequence<kN>());
+    } else {
+      return true;
+    }
   }
 
   bool EnergyGradient(const double* positions, double* energy, double* gradient) const override {

@@ -212,6 +212,10 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
     ParallelFor(count, threads_, [&](int begin, int end) {
       for (int i = begin; i < end; ++i) {
         const int t = first + i;
+        if (active_set_ && !model_.terms[t]->Touches(positions)) {
+          block_status_[i] = kSkipped;
+          continue;
+        }
         const int offset = term_offsets_[t] - base;
         bool changed = false;
         const bool evaluated = EvaluateTerm(
@@ -232,6 +236,10 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
 // Adds term first + i's local results, held in the block buffers, into the assembly.
 void FreeHessian::AddBlockTerm(int first, int i, bool project, Assembly* assembly,
                                std::vector<double>* gradient) {
+  if (block_status_[i] == kSkipped) {  // its energy, gradient and Hessian are zero
+    ++assembly->skipped_terms;
+    return;
+  }
   const int t = first + i;
   const Term& term = *model_.terms[t];
   const int n = term.num_coordinates();

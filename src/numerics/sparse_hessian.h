@@ -12,7 +12,11 @@
 // from its functor's stages instead, unchanged where its Hessian is semidefinite. The terms' local
 // derivatives and projections are computed on several threads (std::thread: drape's OpenMP is
 // switched off for CHOLMOD's sake) and summed by one thread in term order, so the values do not
-// depend on the thread count.
+// depend on the thread count. Only the active set is evaluated: a contact term none of whose points
+// lies in its clearance layer at the state (Term::Touches, decided on values at every assembly)
+// adds exact zeros and is skipped, so the values equal the whole set's bit for bit; most of a
+// drape's edge contacts hang clear of the disc. The step limit (ObstacleSafeFraction,
+// src/model/contact.h) still guards every contact against tunnelling between states.
 //
 // SparseCholesky factorises a matrix of that pattern with CHOLMOD's supernodal Cholesky: the
 // symbolic analysis (fill-reducing ordering, supernodes) once, the numeric factorisation per
@@ -43,6 +47,7 @@ class FreeHessian {
     double energy = 0.0;            // J
     double energy_magnitude = 0.0;  // Σ |term energy|, J: the scale of the energy's roundoff
     int projected_terms = 0;        // terms whose local Hessian had a negative eigenvalue
+    int skipped_terms = 0;          // terms outside the active set (set_active_set)
   };
   // Energy, gradient over all 3n coordinates (`gradient`, resized) and the Hessian values at
   // `positions`. With `project`, also the per-term projected values. False if a term is not
@@ -55,6 +60,10 @@ class FreeHessian {
   // The results are bit-for-bit the same for every count.
   void set_threads(int threads) { threads_ = threads > 0 ? threads : 1; }
   int threads() const { return threads_; }
+  // The active set (default on): a term that does not touch (Term::Touches: a contact outside its
+  // clearance layer) is skipped; it would add exact zeros, so the values are bit-for-bit those of
+  // the whole set. Asked of every term at every assembly: nothing is carried between states.
+  void set_active_set(bool active_set) { active_set_ = active_set; }
 
   int size() const { return dofs_.num_free(); }
   const DofMap& dofs() const { return dofs_; }
@@ -91,8 +100,9 @@ class FreeHessian {
   std::vector<double> values_, projected_;
   EigenvalueFilter filter_ = EigenvalueFilter::kClamp;
   int threads_ = DefaultAssemblyThreads();
+  bool active_set_ = true;
   // One block of terms' local results (Assemble), reused between calls.
-  enum TermStatus : char { kEvaluated, kProjected, kFailed };
+  enum TermStatus : char { kEvaluated, kProjected, kFailed, kSkipped };
   std::vector<double> block_energy_, block_gradient_, block_hessian_, block_projected_;
   std::vector<int> block_gradient_offsets_;
   std::vector<TermStatus> block_status_;
