@@ -109,12 +109,29 @@ void ReturnToLastFinite(const Scene& scene, const std::string& method, const Las
 }
 
 // The frictions' smoothings δ (costs/fv_bending_friction.h, costs/fv_shear_friction.h) from which a
-// solve starts: smaller ones are reached by continuation, each stage a tenth of the last, started
-// from its positions (Newton from the flat state straight at δ = 0.01 1/m took 1,773 iterations
-// for the heavy cantilever of tests/fv_bending_friction_test.cc, where the stages take tens each).
-constexpr double kBendingContinuationStart = 1.0;  // 1/m
-constexpr double kShearContinuationStart = 0.1;    // rad
-constexpr double kFrictionContinuationRatio = 10.0;
+// solve starts, and the ratio of one stage's δ to the next: smaller ones are reached by
+// continuation, each stage started from the last one's positions (Newton from the flat state
+// straight at δ = 0.01 1/m took 1,773 iterations for the heavy cantilever of
+// tests/fv_bending_friction_test.cc, where the stages take tens each).
+//
+// The bending friction's stages fall by √10: a stage's answer differs from the next one's where
+// |κ| is below about δ, and Newton's quadratic model of √(κ² + δ²) holds only within δ of its
+// kink, so a tenfold step leaves the next stage crawling there. Measured in session 34 (newton
+// iterations in all, the same minimum to the energy's last digits either way):
+// - the friction cotton of docs/benchmarks.md, one level, at 3.8, 4, 4.2 and 4.5 mm: 758, 303,
+//   318 and 192 against 907, 425, 418 and 256 with stages 1, 0.1 1/m (at 4 mm 218 + 66 + 19
+//   against 218 + 207: the last stage no longer crawls);
+// - the limp fabric with H = 2e-4 N at 5 mm: 1,122 against 1,159;
+// - a third of a decade (1, 0.46, 0.22, 0.1) took the cotton at 4 mm 288: the extra stage's setup
+//   cancels what it saves;
+// - where nothing crawls the extra stages cost their few iterations each: the heavy cantilever at
+//   δ = 0.01 took 120 against 95.
+// The shear friction's stages keep a tenfold step: √10 took the cotton with HG = 0.49 N/m at 5 mm
+// 427 iterations against 390.
+constexpr double kBendingContinuationStart = 1.0;                 // 1/m
+constexpr double kBendingContinuationRatio = 3.1622776601683795;  // √10
+constexpr double kShearContinuationStart = 0.1;                   // rad
+constexpr double kShearContinuationRatio = 10.0;
 
 // Whether the scene's fabric, or one of its regions, has one of the given frictions (a region
 // gives them under their FiniteVolumeKeys() names).
@@ -139,7 +156,7 @@ struct Smoothings {
 };
 
 // The smoothings of the stages before the scene's own (none without friction, or with δ at or
-// above the start): each friction's δ falls tenfold a stage from its start until it is the
+// above the start): each friction's δ falls by its ratio a stage from its start until it is the
 // scene's.
 std::vector<Smoothings> ContinuationStages(const Scene& scene) {
   const FiniteVolumeSpec& fv = scene.material.finite_volume;
@@ -147,10 +164,16 @@ std::vector<Smoothings> ContinuationStages(const Scene& scene) {
       scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft});
   const bool shear = HasFriction(scene, {&FiniteVolumeSpec::shear_friction});
   std::vector<Smoothings> stages;
-  for (double scale = 1.0;; scale /= kFrictionContinuationRatio) {
+  for (int k = 0;; ++k) {
     Smoothings stage{fv.bending_friction_smoothing, fv.shear_friction_smoothing};
-    if (bending) stage.bending = std::max(stage.bending, kBendingContinuationStart * scale);
-    if (shear) stage.shear = std::max(stage.shear, kShearContinuationStart * scale);
+    if (bending) {
+      stage.bending = std::max(stage.bending,
+                               kBendingContinuationStart / std::pow(kBendingContinuationRatio, k));
+    }
+    if (shear) {
+      stage.shear =
+          std::max(stage.shear, kShearContinuationStart / std::pow(kShearContinuationRatio, k));
+    }
     if (stage.bending <= fv.bending_friction_smoothing * (1.0 + 1e-9) &&
         stage.shear <= fv.shear_friction_smoothing * (1.0 + 1e-9)) {
       return stages;
