@@ -39,12 +39,19 @@ struct FvBendingFriction {
   bool operator()(const T* const a, const T* const p, const T* const b, T* energy) const {
     T binormal[3];
     CurvatureBinormal(a, p, b, binormal);
+    energy[0] = OfBinormal(binormal);
+    return true;
+  }
+
+  // The energy as a function of the curvature binormal κb: the stage the fast derivatives
+  // differentiate (src/derivatives/fast_hessian.cc).
+  template <typename T>
+  T OfBinormal(const T* binormal) const {
     const T curvature_squared =
         (binormal[0] * binormal[0] + binormal[1] * binormal[1] + binormal[2] * binormal[2]) /
         (size * size);
     using std::sqrt;
-    energy[0] = weight * (sqrt(curvature_squared + smoothing * smoothing) - smoothing);
-    return true;
+    return weight * (sqrt(curvature_squared + smoothing * smoothing) - smoothing);
   }
 
   static FvBendingFriction Create(double friction, double volume_size, double volume_area,

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "costs/fv_bending.h"
+#include "costs/fv_bending_friction.h"
 #include "costs/fv_membrane.h"
 #include "costs/fv_twist.h"
 #include "src/derivatives/psd_projection.h"
@@ -238,6 +239,48 @@ bool FastHessian<FvBendingEdge>::Evaluate(const FvBendingEdge& functor, const do
       TriangleNodes::Hessian sum = gauss_newton;
       TriangleNodes::AddRelativeToCentre(curvature, 0, 1, 2, &sum);
       return sum;
+    });
+  }
+  return finite;
+}
+
+// FvBendingFriction (nodes A, P, B = 0..2): Q = k, the binormal; E = φ(k) by the functor's
+// OfBinormal stage, differentiated over the 3 values of k. ∇²E = Jᵀ ∇²φ J + Σ_j φ_j ∇²k_j
+// (J = ∂k/∂x). Its stand-in is the whole 9×9 Hessian's eigenvalues filtered, as for a functor
+// without a staged path: projecting only the curvature block (∇²φ is semidefinite, φ being convex
+// in k), as FvBendingEdge's, took the friction cotton of docs/benchmarks.md 392 newton iterations
+// against 303, to the same minimum.
+bool FastHessian<FvBendingFriction>::Evaluate(const FvBendingFriction& functor,
+                                              const double* const* x, double* energy,
+                                              double* gradient, double* hessian,
+                                              StagedProjection* projection) {
+  using Number = SecondOrder<3>;
+  const BinormalDerivatives k(x[0], x[1], x[2]);
+  Number q[3];
+  for (int c = 0; c < 3; ++c) q[c] = Number::Variable(k.value[c], c);
+  const Number e = functor.OfBinormal(q);
+  Eigen::Vector3d g_q;
+  Eigen::Matrix3d h_q;
+  for (int r = 0; r < 3; ++r) {
+    g_q[r] = e.gradient[r];
+    for (int c = 0; c < 3; ++c) h_q(r, c) = e.Hessian(r, c);
+  }
+  TriangleNodes::Jacobian<3> dq = TriangleNodes::Jacobian<3>::Zero();
+  TriangleNodes::AddRelativeToCentre<3>(k.jacobian, 0, 1, 2, dq);
+  TriangleNodes::Hessian h = SymmetricCongruence(dq, h_q);
+  const Eigen::Matrix<double, 6, 6> curvature = k.WeightedHessian(g_q.data());
+  TriangleNodes::AddRelativeToCentre(curvature, 0, 1, 2, &h);
+  Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
+  Eigen::Map<TriangleNodes::Hessian> full_hessian(hessian);
+  full_hessian = h;
+  full_gradient = dq.transpose() * g_q;
+  *energy = e.value;
+  const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
+  if (finite && projection) {
+    StoreTriangleProjection(IsSemidefinite(h), h, projection, [&] {
+      TriangleNodes::Hessian whole = h;
+      ProjectSymmetric(projection->filter, &whole);
+      return whole;
     });
   }
   return finite;

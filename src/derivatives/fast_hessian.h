@@ -4,7 +4,8 @@
 // FvBending and FvBendingEdge compute their residuals in stages: curvature binormals (3 nodes
 // each), unit tangents (2 nodes each), sections (FvBending only: 6 numbers each) and residuals
 // linear in the last stage. FvMembrane computes the Gram entries of its two arms (quadratic in
-// the coordinates), then its residuals from those 3 numbers. Nested Jets over one whole functor
+// the coordinates), then its residuals from those 3 numbers. FvBendingFriction computes one
+// curvature binormal, then its energy from those 3 numbers. Nested Jets over one whole functor
 // carry 6–12 derivatives through every operation; here each stage is differentiated on its own
 // with the few variables it reads (6 relative coordinates for a binormal, 3 for a tangent, 6 for
 // a section, 3 Gram entries), and the results are chained: for E = ½|r|², r = L y(Q(x)),
@@ -32,6 +33,8 @@
 //     not the nearest semidefinite matrix to H but a larger one (a compressed membrane arm of
 //     axial stiffness k keeps k·l/|u| > k along itself, where the whole term's projection would
 //     keep k); it replaces a 9×9 eigen-decomposition by a 3×3 and a 2×2 one.
+//   FvBendingFriction: the whole 9×9 Hessian's eigenvalues filtered, as a functor without a staged
+//     path has it (fast_hessian.cc says why not blockwise).
 //   FvBending: the Gauss–Newton part Jᵀ J of E = ½|r|² (J = ∂r/∂x, 8×15), which the chain rule
 //     has already formed: no decomposition at all. It drops the curvature Σ r_i ∇²r_i whole, the
 //     positive part too, so H₊ − H ⪰ 0 does not hold here; the filter does not apply. Measured
@@ -65,6 +68,7 @@ namespace drape {
 
 struct FvBending;
 struct FvBendingEdge;
+struct FvBendingFriction;
 struct FvMembrane;
 struct FvTwist;
 
@@ -105,6 +109,15 @@ struct FastHessian<FvBendingEdge> {
   static constexpr bool kAvailable = true;
   static constexpr StandIn kStandIn = StandIn::kAboveHessian;
   static bool Evaluate(const FvBendingEdge& functor, const double* const* x, double* energy,
+                       double* gradient, double* hessian, StagedProjection* projection = nullptr);
+};
+
+template <>
+struct FastHessian<FvBendingFriction> {
+  static constexpr bool kAvailable = true;
+  static constexpr StandIn kStandIn =
+      StandIn::kAboveHessian;  // the whole Hessian's eigenvalues filtered
+  static bool Evaluate(const FvBendingFriction& functor, const double* const* x, double* energy,
                        double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
 
