@@ -135,6 +135,19 @@ void StoreTriangleProjection(bool semidefinite, const TriangleNodes::Hessian& h,
   }
 }
 
+// A term of one binormal k (nodes A, P, B = 0..2): writes its energy `value`, its gradient
+// dqᵀ g_q (dq = ∂k/∂x, g_q = ∂E/∂k) and its Hessian h; whether all are finite.
+bool StoreBinormalTermResults(double value, const TriangleNodes::Jacobian<3>& dq,
+                              const Eigen::Vector3d& g_q, const TriangleNodes::Hessian& h,
+                              double* energy, double* gradient, double* hessian) {
+  Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
+  Eigen::Map<TriangleNodes::Hessian> full_hessian(hessian);
+  full_hessian = h;
+  full_gradient = dq.transpose() * g_q;
+  *energy = value;
+  return std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
+}
+
 // Jᵀ H J + M ⊗ I₃ over (u, v).
 Eigen::Matrix<double, 6, 6> MembraneRelative(const Eigen::Matrix<double, 3, 6>& j,
                                              const Eigen::Matrix3d& h_q, const Eigen::Matrix2d& m) {
@@ -227,12 +240,8 @@ bool FastHessian<FvBendingEdge>::Evaluate(const FvBendingEdge& functor, const do
   Eigen::Matrix<double, 6, 6> curvature = k.WeightedHessian(g_q.data());
   TriangleNodes::Hessian h = gauss_newton;
   TriangleNodes::AddRelativeToCentre(curvature, 0, 1, 2, &h);
-  Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
-  Eigen::Map<TriangleNodes::Hessian> full_hessian(hessian);
-  full_hessian = h;
-  full_gradient = dq.transpose() * g_q;
-  *energy = 0.5 * r.squaredNorm();
-  const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
+  const bool finite =
+      StoreBinormalTermResults(0.5 * r.squaredNorm(), dq, g_q, h, energy, gradient, hessian);
   if (finite && projection) {
     StoreTriangleProjection(IsSemidefinite(h), h, projection, [&] {
       ProjectSymmetric(projection->filter, &curvature);
@@ -270,12 +279,7 @@ bool FastHessian<FvBendingFriction>::Evaluate(const FvBendingFriction& functor,
   TriangleNodes::Hessian h = SymmetricCongruence(dq, h_q);
   const Eigen::Matrix<double, 6, 6> curvature = k.WeightedHessian(g_q.data());
   TriangleNodes::AddRelativeToCentre(curvature, 0, 1, 2, &h);
-  Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
-  Eigen::Map<TriangleNodes::Hessian> full_hessian(hessian);
-  full_hessian = h;
-  full_gradient = dq.transpose() * g_q;
-  *energy = e.value;
-  const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
+  const bool finite = StoreBinormalTermResults(e.value, dq, g_q, h, energy, gradient, hessian);
   if (finite && projection) {
     StoreTriangleProjection(IsSemidefinite(h), h, projection, [&] {
       TriangleNodes::Hessian whole = h;
