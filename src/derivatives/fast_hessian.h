@@ -112,11 +112,11 @@ struct FastHessian<FvBendingEdge> {
                        double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
 
+// Its stand-in is the whole 9×9 Hessian's eigenvalues filtered (H₊ − H ⪰ 0 holds for that too).
 template <>
 struct FastHessian<FvBendingFriction> {
   static constexpr bool kAvailable = true;
-  static constexpr StandIn kStandIn =
-      StandIn::kAboveHessian;  // the whole Hessian's eigenvalues filtered
+  static constexpr StandIn kStandIn = StandIn::kAboveHessian;
   static bool Evaluate(const FvBendingFriction& functor, const double* const* x, double* energy,
                        double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
