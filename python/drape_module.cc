@@ -241,8 +241,7 @@ std::shared_ptr<PySolved> Solve(const PyScene& loaded, const std::optional<std::
   log.lines.RaiseIfFailed();
   solved->interrupted = interrupted;
   const std::optional<AccuracyOutcome> accuracy = AccuracyOf(solved->scene, solved->report);
-  if (!interrupted && accuracy && accuracy->binding &&
-      (!solved->report.result.converged || !accuracy->met())) {
+  if (!interrupted && accuracy && accuracy->Failed(solved->report.result.converged)) {
     solved->warnings.push_back(AccuracyFailure(*accuracy, solved->report.result.converged));
   }
   return solved;

@@ -286,7 +286,7 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
   out << ResultLine(report.result, directory)
       << (report.levels ? LevelsLine(*report.levels) : DrapeLine(report))
       << (accuracy && accuracy->binding ? AccuracyClause(*accuracy) : "") << std::endl;
-  if (accuracy && accuracy->binding && (!report.result.converged || !accuracy->met())) {
+  if (accuracy && accuracy->Failed(report.result.converged)) {
     err << "drape: " << AccuracyFailure(*accuracy, report.result.converged) << "\n";
     return kExitNotConverged;
   }

@@ -73,6 +73,9 @@ struct AccuracyOutcome {
   };
   std::optional<Level> best_converged;
   bool met() const { return reached <= asked; }
+  // Whether the run fails for it (exit 1, a DrapeWarning in Python): the accuracy binds and the
+  // finest lattice stopped before equilibrium or its bar is wider than asked.
+  bool Failed(bool converged) const { return binding && (!converged || !met()); }
 };
 
 // The outcome of a drape test on a lattice the mesh rule covers; none for any other scene.
