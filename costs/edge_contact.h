@@ -35,13 +35,18 @@ struct EdgeContact {
   // s_j of point j = 1..points.
   double Fraction(int j) const { return static_cast<double>(j) / (points + 1); }
 
+  // Point j's position x_j on the edge a–b (values).
+  void PointAt(const double* a, const double* b, int j, double* point) const {
+    const double s = Fraction(j);
+    for (int c = 0; c < 3; ++c) point[c] = a[c] + s * (b[c] - a[c]);
+  }
+
   // Whether the energy can be nonzero: some point inside the clearance layer (the test the
   // operator makes point by point).
   bool Touches(const double* a, const double* b) const {
     for (int j = 1; j <= points; ++j) {
-      const double s = Fraction(j);
-      const double point[3] = {a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]),
-                               a[2] + s * (b[2] - a[2])};
+      double point[3];
+      PointAt(a, b, j, point);
       if (InClearanceLayer(contact, point)) return true;
     }
     return false;
@@ -50,13 +55,13 @@ struct EdgeContact {
   template <typename T>
   bool operator()(const T* const a, const T* const b, T* energy) const {
     energy[0] = T();
+    const double a_value[3] = {ScalarPart(a[0]), ScalarPart(a[1]), ScalarPart(a[2])};
+    const double b_value[3] = {ScalarPart(b[0]), ScalarPart(b[1]), ScalarPart(b[2])};
     for (int j = 1; j <= points; ++j) {
-      const double s = Fraction(j);
       double value[3];
-      for (int c = 0; c < 3; ++c) {
-        value[c] = ScalarPart(a[c]) + s * (ScalarPart(b[c]) - ScalarPart(a[c]));
-      }
+      PointAt(a_value, b_value, j, value);
       if (!InClearanceLayer(contact, value)) continue;  // no energy, no derivative
+      const double s = Fraction(j);
       const T point[3] = {a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]),
                           a[2] + s * (b[2] - a[2])};
       energy[0] += ContactPenalty(contact.Distance(point), contact.clearance, contact.stiffness);
