@@ -246,6 +246,48 @@ TEST(FreeHessian, TheActiveSetMissesNoContactTheWholeSetWouldMake) {
   EXPECT_TRUE(active.projected_values() == whole.projected_values());
 }
 
+// Terms with no free coordinate (a drape's clamped centre) are evaluated at the first assembly and
+// reused while the fixed positions stay: each assembly equals one that evaluates every term, bit
+// for bit, and moving a fixed coordinate makes the next one evaluate them anew. The clamped nodes
+// are moved off their rest state first, so that those terms carry energy and force (at rest both
+// are zero, and a stale value could not show).
+TEST(FreeHessian, ConstantTermsAreReusedOnlyWhileTheFixedPositionsStay) {
+  Model model = ShakenDrape("0.01", 5, 0.002);
+  const DofMap dofs(model);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> noise(-1e-3, 1e-3);
+  std::vector<int> fixed_coordinates;
+  for (int k = 0; k < model.num_dofs(); ++k) {
+    if (dofs.global_to_free()[k] >= 0) continue;
+    fixed_coordinates.push_back(k);
+    model.positions[k] += noise(random);
+  }
+  ASSERT_FALSE(fixed_coordinates.empty());
+  FreeHessian reusing(model, dofs), evaluating(model, dofs);
+  evaluating.set_reuse_constant_terms(false);
+  std::vector<double> x = model.positions;
+  auto assemble_both = [&](bool reuse_expected) {
+    FreeHessian::Assembly reused, evaluated;
+    std::vector<double> reused_gradient, evaluated_gradient;
+    EXPECT_TRUE(reusing.Assemble(x.data(), true, &reused, &reused_gradient));
+    EXPECT_TRUE(evaluating.Assemble(x.data(), true, &evaluated, &evaluated_gradient));
+    EXPECT_EQ(reused.reused_terms > 0, reuse_expected);
+    EXPECT_EQ(evaluated.reused_terms, 0);
+    EXPECT_EQ(reused.energy, evaluated.energy);
+    EXPECT_EQ(reused.energy_magnitude, evaluated.energy_magnitude);
+    EXPECT_TRUE(reused_gradient == evaluated_gradient);
+    EXPECT_TRUE(reusing.values() == evaluating.values());
+    EXPECT_TRUE(reusing.projected_values() == evaluating.projected_values());
+    return evaluated.energy;
+  };
+  assemble_both(/*reuse_expected=*/false);  // the first assembly evaluates every term
+  x[dofs.free_to_global()[0]] += 1e-3;
+  const double before = assemble_both(/*reuse_expected=*/true);
+  x[fixed_coordinates[fixed_coordinates.size() / 2]] += 1e-3;  // a clamped node of the centre
+  EXPECT_NE(assemble_both(/*reuse_expected=*/false), before);
+  assemble_both(/*reuse_expected=*/true);
+}
+
 TEST(SparseCholesky, SolvesAPositiveDefiniteSystemAndRefusesAnIndefiniteOne) {
   const Model model = ShakenSheet(0.8);
   const AssembledHessian assembled(model, /*project=*/true);

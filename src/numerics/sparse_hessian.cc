@@ -5,7 +5,6 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <new>
 #include <thread>
 
@@ -53,6 +52,7 @@ bool ProjectToPositiveSemidefinite(EigenvalueFilter filter, int n, double* row_m
 FreeHessian::FreeHessian(const Model& model, const DofMap& dofs) : model_(model), dofs_(dofs) {
   BuildPattern();
   BuildDestinations();
+  FindConstantTerms();
   values_.assign(rows_.size(), 0.0);
   projected_.assign(rows_.size(), 0.0);
 }
@@ -115,6 +115,63 @@ void FreeHessian::BuildDestinations() {
     term_offsets_.push_back(term_offsets_.back() + n * n);
     scatter_starts_.push_back(static_cast<int>(scatter_.size()));
   }
+}
+
+void FreeHessian::FindConstantTerms() {
+  const std::vector<int>& to_free = dofs_.global_to_free();
+  constant_slot_.assign(model_.terms.size(), -1);
+  constant_gradient_offsets_.assign(1, 0);
+  for (size_t t = 0; t < model_.terms.size(); ++t) {
+    const Term& term = *model_.terms[t];
+    const auto& nodes = term.nodes();
+    bool has_free = false;
+    for (int k = 0; k < term.num_coordinates() && !has_free; ++k) {
+      has_free = to_free[3 * nodes[k / 3] + k % 3] >= 0;
+    }
+    if (has_free) continue;
+    constant_slot_[t] = static_cast<int>(constant_gradient_offsets_.size()) - 1;
+    constant_gradient_offsets_.push_back(constant_gradient_offsets_.back() +
+                                         term.num_coordinates());
+  }
+  constant_energy_.assign(constant_gradient_offsets_.size() - 1, 0.0);
+  constant_gradient_.assign(constant_gradient_offsets_.back(), 0.0);
+  for (int k = 0; k < model_.num_dofs(); ++k) {
+    if (to_free[k] < 0) fixed_coordinates_.push_back(k);
+  }
+}
+
+bool FreeHessian::FixedPositionsAsStored(const double* positions) const {
+  for (size_t f = 0; f < fixed_coordinates_.size(); ++f) {
+    const double now = positions[fixed_coordinates_[f]];
+    const double stored = stored_fixed_positions_[f];
+    if (now != stored || std::signbit(now) != std::signbit(stored)) return false;  // NaN: changed
+  }
+  return true;
+}
+
+void FreeHessian::StoreFixedPositions(const double* positions) {
+  stored_fixed_positions_.resize(fixed_coordinates_.size());
+  for (size_t f = 0; f < fixed_coordinates_.size(); ++f) {
+    stored_fixed_positions_[f] = positions[fixed_coordinates_[f]];
+  }
+}
+
+void FreeHessian::AddConstantTerm(int t, Assembly* assembly, std::vector<double>* gradient) const {
+  const int slot = constant_slot_[t];
+  assembly->energy += constant_energy_[slot];
+  assembly->energy_magnitude += std::abs(constant_energy_[slot]);
+  ++assembly->reused_terms;
+  const auto& nodes = model_.terms[t]->nodes();
+  const double* stored = constant_gradient_.data() + constant_gradient_offsets_[slot];
+  const int n = constant_gradient_offsets_[slot + 1] - constant_gradient_offsets_[slot];
+  for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += stored[k];
+}
+
+void FreeHessian::StoreConstantTerm(int t, double energy, const double* local_gradient) {
+  const int slot = constant_slot_[t];
+  constant_energy_[slot] = energy;
+  std::copy(local_gradient, local_gradient + model_.terms[t]->num_coordinates(),
+            constant_gradient_.begin() + constant_gradient_offsets_[slot]);
 }
 
 namespace {
@@ -193,6 +250,11 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
   gradient->assign(model_.num_dofs(), 0.0);
   std::fill(values_.begin(), values_.end(), 0.0);
   if (project) std::fill(projected_.begin(), projected_.end(), 0.0);
+  // The constant terms' stored values hold while no fixed coordinate has moved; else this assembly
+  // evaluates them and stores them anew.
+  const bool reuse =
+      reuse_constant_terms_ && constants_stored_ && FixedPositionsAsStored(positions);
+  if (!reuse) constants_stored_ = false;
   const int num_terms = static_cast<int>(model_.terms.size());
   for (int first = 0; first < num_terms; first += kTermsPerBlock) {
     const int last = std::min(num_terms, first + kTermsPerBlock);
@@ -210,27 +272,40 @@ bool FreeHessian::Assemble(const double* positions, bool project, Assembly* asse
     GrowTo(term_offsets_[last] - base, &block_hessian_);
     if (project) GrowTo(term_offsets_[last] - base, &block_projected_);
     ParallelFor(count, threads_, [&](int begin, int end) {
-      for (int i = begin; i < end; ++i) {
-        const int t = first + i;
-        if (active_set_ && !model_.terms[t]->Touches(positions)) {
-          block_status_[i] = kSkipped;
-          continue;
-        }
-        const int offset = term_offsets_[t] - base;
-        bool changed = false;
-        const bool evaluated = EvaluateTerm(
-            *model_.terms[t], positions, filter_, &block_energy_[i],
-            block_gradient_.data() + block_gradient_offsets_[i], block_hessian_.data() + offset,
-            project ? block_projected_.data() + offset : nullptr, &changed);
-        block_status_[i] = !evaluated ? kFailed : (changed ? kProjected : kEvaluated);
-      }
+      for (int i = begin; i < end; ++i) EvaluateBlockTerm(positions, project, reuse, first, i);
     });
     for (int i = 0; i < count; ++i) {
       if (block_status_[i] == kFailed) return false;
       AddBlockTerm(first, i, project, assembly, gradient);
     }
   }
+  if (reuse_constant_terms_ && !reuse) {
+    StoreFixedPositions(positions);
+    constants_stored_ = true;
+  }
   return std::isfinite(assembly->energy);
+}
+
+// Term first + i's local results into the block buffers, and its status: skipped outside the active
+// set, constant where its stored values hold (`reuse`), else evaluated.
+void FreeHessian::EvaluateBlockTerm(const double* positions, bool project, bool reuse, int first,
+                                    int i) {
+  const int t = first + i;
+  if (active_set_ && !model_.terms[t]->Touches(positions)) {
+    block_status_[i] = kSkipped;
+    return;
+  }
+  if (reuse && constant_slot_[t] >= 0) {
+    block_status_[i] = kConstant;
+    return;
+  }
+  const int offset = term_offsets_[t] - term_offsets_[first];
+  bool changed = false;
+  const bool evaluated = EvaluateTerm(
+      *model_.terms[t], positions, filter_, &block_energy_[i],
+      block_gradient_.data() + block_gradient_offsets_[i], block_hessian_.data() + offset,
+      project ? block_projected_.data() + offset : nullptr, &changed);
+  block_status_[i] = !evaluated ? kFailed : (changed ? kProjected : kEvaluated);
 }
 
 // Adds term first + i's local results, held in the block buffers, into the assembly.
@@ -241,6 +316,10 @@ void FreeHessian::AddBlockTerm(int first, int i, bool project, Assembly* assembl
     return;
   }
   const int t = first + i;
+  if (block_status_[i] == kConstant) {  // no Hessian entry: its stored energy and gradient
+    AddConstantTerm(t, assembly, gradient);
+    return;
+  }
   const Term& term = *model_.terms[t];
   const int n = term.num_coordinates();
   assembly->energy += block_energy_[i];
@@ -248,6 +327,10 @@ void FreeHessian::AddBlockTerm(int first, int i, bool project, Assembly* assembl
   const auto& nodes = term.nodes();
   const double* local_gradient = block_gradient_.data() + block_gradient_offsets_[i];
   for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
+  if (constant_slot_[t] >= 0) {  // its scatter is empty: nothing reaches the Hessian
+    StoreConstantTerm(t, block_energy_[i], local_gradient);
+    return;
+  }
   const double* local = block_hessian_.data() + term_offsets_[t] - term_offsets_[first];
   // An unchanged term's stand-in is its Hessian, equal to it bit for bit: read it once.
   const double* stand_in = nullptr;

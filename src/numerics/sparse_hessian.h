@@ -16,7 +16,9 @@
 // lies in its clearance layer at the state (Term::Touches, decided on values at every assembly)
 // adds exact zeros and is skipped, so the values equal the whole set's bit for bit; most of a
 // drape's edge contacts hang clear of the disc. The step limit (ObstacleSafeFraction,
-// src/model/contact.h) still guards every contact against tunnelling between states.
+// src/model/contact.h) still guards every contact against tunnelling between states. A term with
+// no free coordinate (a drape's clamped centre: a third of its fabric terms) is evaluated once and
+// its energy and fixed-coordinate gradient reused while the fixed positions stay as they were.
 //
 // SparseCholesky factorises a matrix of that pattern with CHOLMOD's supernodal Cholesky: the
 // symbolic analysis (fill-reducing ordering, supernodes) once, the numeric factorisation per
@@ -46,8 +48,10 @@ class FreeHessian {
   struct Assembly {
     double energy = 0.0;            // J
     double energy_magnitude = 0.0;  // Σ |term energy|, J: the scale of the energy's roundoff
-    int projected_terms = 0;        // terms whose local Hessian had a negative eigenvalue
+    int projected_terms = 0;        // terms with a free coordinate whose local Hessian had a
+                                    // negative eigenvalue
     int skipped_terms = 0;          // terms outside the active set (set_active_set)
+    int reused_terms = 0;           // constant terms whose stored values were added
   };
   // Energy, gradient over all 3n coordinates (`gradient`, resized) and the Hessian values at
   // `positions`. With `project`, also the per-term projected values. False if a term is not
@@ -64,6 +68,16 @@ class FreeHessian {
   // clearance layer) is skipped; it would add exact zeros, so the values are bit-for-bit those of
   // the whole set. Asked of every term at every assembly: nothing is carried between states.
   void set_active_set(bool active_set) { active_set_ = active_set; }
+  // Constant terms (default on): a term none of whose coordinates is free (a drape's clamped
+  // centre) adds to the energy and to the fixed coordinates' gradient only, values that depend on
+  // the fixed positions alone. They are evaluated at the first assembly, and again whenever a
+  // fixed coordinate has changed since (compared bit for bit at every assembly); otherwise their
+  // stored energies and gradients are added, in the same order: the values are bit-for-bit those
+  // of evaluating every term.
+  void set_reuse_constant_terms(bool reuse) {
+    reuse_constant_terms_ = reuse;
+    constants_stored_ = false;
+  }
 
   int size() const { return dofs_.num_free(); }
   const DofMap& dofs() const { return dofs_; }
@@ -81,8 +95,14 @@ class FreeHessian {
  private:
   void BuildPattern();
   void BuildDestinations();
+  void EvaluateBlockTerm(const double* positions, bool project, bool reuse, int first, int i);
   void AddBlockTerm(int first, int i, bool project, Assembly* assembly,
                     std::vector<double>* gradient);
+  void FindConstantTerms();
+  bool FixedPositionsAsStored(const double* positions) const;
+  void StoreFixedPositions(const double* positions);
+  void AddConstantTerm(int t, Assembly* assembly, std::vector<double>* gradient) const;
+  void StoreConstantTerm(int t, double energy, const double* local_gradient);
 
   const Model& model_;
   const DofMap& dofs_;
@@ -101,8 +121,15 @@ class FreeHessian {
   EigenvalueFilter filter_ = EigenvalueFilter::kClamp;
   int threads_ = DefaultAssemblyThreads();
   bool active_set_ = true;
+  // The constant terms (set_reuse_constant_terms): each term's slot (-1: it has a free coordinate),
+  // the slots' stored energies and gradients, and the fixed coordinates with their values when
+  // they were stored.
+  bool reuse_constant_terms_ = true;
+  bool constants_stored_ = false;
+  std::vector<int> constant_slot_, constant_gradient_offsets_, fixed_coordinates_;
+  std::vector<double> constant_energy_, constant_gradient_, stored_fixed_positions_;
   // One block of terms' local results (Assemble), reused between calls.
-  enum TermStatus : char { kEvaluated, kProjected, kFailed, kSkipped };
+  enum TermStatus : char { kEvaluated, kProjected, kFailed, kSkipped, kConstant };
   std::vector<double> block_energy_, block_gradient_, block_hessian_, block_projected_;
   std::vector<int> block_gradient_offsets_;
   std::vector<TermStatus> block_status_;
