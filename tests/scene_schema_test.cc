@@ -540,7 +540,9 @@ TEST(SceneSchema, RangesSayTheirBounds) {
 // Every plain row's type, range and default text come from its typed value, bounds and default.
 TEST(SceneSchema, PlainRowsSayTheirTypedValues) {
   for (const SchemaRow& row : SceneSchema()) {
-    if (row.bounds) EXPECT_EQ(row.range, row.bounds->Text()) << row.Path();
+    if (row.bounds) {
+      EXPECT_EQ(row.range, row.bounds->Text()) << row.Path();
+    }
     const std::string text = FieldValueText(row.default_value);
     if (!text.empty()) {
       EXPECT_EQ(row.default_text.rfind("`" + text + "`", 0), 0u) << row.Path();
