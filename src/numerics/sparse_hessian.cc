@@ -117,24 +117,20 @@ void FreeHessian::BuildDestinations() {
   }
 }
 
+// A term with a free coordinate scatters at least that coordinate's diagonal entry; a constant
+// term scatters nothing.
 void FreeHessian::FindConstantTerms() {
-  const std::vector<int>& to_free = dofs_.global_to_free();
   constant_slot_.assign(model_.terms.size(), -1);
   constant_gradient_offsets_.assign(1, 0);
   for (size_t t = 0; t < model_.terms.size(); ++t) {
-    const Term& term = *model_.terms[t];
-    const auto& nodes = term.nodes();
-    bool has_free = false;
-    for (int k = 0; k < term.num_coordinates() && !has_free; ++k) {
-      has_free = to_free[3 * nodes[k / 3] + k % 3] >= 0;
-    }
-    if (has_free) continue;
+    if (scatter_starts_[t + 1] > scatter_starts_[t]) continue;
     constant_slot_[t] = static_cast<int>(constant_gradient_offsets_.size()) - 1;
     constant_gradient_offsets_.push_back(constant_gradient_offsets_.back() +
-                                         term.num_coordinates());
+                                         model_.terms[t]->num_coordinates());
   }
   constant_energy_.assign(constant_gradient_offsets_.size() - 1, 0.0);
   constant_gradient_.assign(constant_gradient_offsets_.back(), 0.0);
+  const std::vector<int>& to_free = dofs_.global_to_free();
   for (int k = 0; k < model_.num_dofs(); ++k) {
     if (to_free[k] < 0) fixed_coordinates_.push_back(k);
   }
@@ -156,15 +152,24 @@ void FreeHessian::StoreFixedPositions(const double* positions) {
   }
 }
 
+// Adds term t's energy and local gradient into the assembly.
+void FreeHessian::AddEnergyAndGradient(int t, double energy, const double* local_gradient,
+                                       Assembly* assembly, std::vector<double>* gradient) const {
+  assembly->energy += energy;
+  assembly->energy_magnitude += std::abs(energy);
+  const Term& term = *model_.terms[t];
+  const auto& nodes = term.nodes();
+  for (int k = 0; k < term.num_coordinates(); ++k) {
+    (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
+  }
+}
+
 void FreeHessian::AddConstantTerm(int t, Assembly* assembly, std::vector<double>* gradient) const {
   const int slot = constant_slot_[t];
-  assembly->energy += constant_energy_[slot];
-  assembly->energy_magnitude += std::abs(constant_energy_[slot]);
   ++assembly->reused_terms;
-  const auto& nodes = model_.terms[t]->nodes();
-  const double* stored = constant_gradient_.data() + constant_gradient_offsets_[slot];
-  const int n = constant_gradient_offsets_[slot + 1] - constant_gradient_offsets_[slot];
-  for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += stored[k];
+  AddEnergyAndGradient(t, constant_energy_[slot],
+                       constant_gradient_.data() + constant_gradient_offsets_[slot], assembly,
+                       gradient);
 }
 
 void FreeHessian::StoreConstantTerm(int t, double energy, const double* local_gradient) {
@@ -320,13 +325,8 @@ void FreeHessian::AddBlockTerm(int first, int i, bool project, Assembly* assembl
     AddConstantTerm(t, assembly, gradient);
     return;
   }
-  const Term& term = *model_.terms[t];
-  const int n = term.num_coordinates();
-  assembly->energy += block_energy_[i];
-  assembly->energy_magnitude += std::abs(block_energy_[i]);
-  const auto& nodes = term.nodes();
   const double* local_gradient = block_gradient_.data() + block_gradient_offsets_[i];
-  for (int k = 0; k < n; ++k) (*gradient)[3 * nodes[k / 3] + k % 3] += local_gradient[k];
+  AddEnergyAndGradient(t, block_energy_[i], local_gradient, assembly, gradient);
   if (constant_slot_[t] >= 0) {  // its scatter is empty: nothing reaches the Hessian
     StoreConstantTerm(t, block_energy_[i], local_gradient);
     return;

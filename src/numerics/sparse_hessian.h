@@ -101,6 +101,8 @@ class FreeHessian {
   void FindConstantTerms();
   bool FixedPositionsAsStored(const double* positions) const;
   void StoreFixedPositions(const double* positions);
+  void AddEnergyAndGradient(int t, double energy, const double* local_gradient, Assembly* assembly,
+                            std::vector<double>* gradient) const;
   void AddConstantTerm(int t, Assembly* assembly, std::vector<double>* gradient) const;
   void StoreConstantTerm(int t, double energy, const double* local_gradient);
 
