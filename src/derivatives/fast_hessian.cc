@@ -254,11 +254,14 @@ bool FastHessian<FvBendingEdge>::Evaluate(const FvBendingEdge& functor, const do
 }
 
 // FvBendingFriction (nodes A, P, B = 0..2): Q = k, the binormal; E = φ(k) by the functor's
-// OfBinormal stage, differentiated over the 3 values of k. ∇²E = Jᵀ ∇²φ J + Σ_j φ_j ∇²k_j
-// (J = ∂k/∂x). Its stand-in is the whole 9×9 Hessian's eigenvalues filtered, as for a functor
-// without a staged path: projecting only the curvature block (∇²φ is semidefinite, φ being convex
-// in k), as FvBendingEdge's, took the friction cotton of docs/benchmarks.md 392 newton iterations
-// against 303, to the same minimum.
+// OfBinormal stage, differentiated over the 3 values of k. Over the relative coordinates
+// (a − p, b − p), ∇²E = Kᵀ ∇²φ K + Σ_j φ_j ∇²k_j (K = ∂k/∂(a − p, b − p), 3×6), mapped to the nodes
+// by H = Tᵀ B T (T: x ↦ (a − p, b − p)). Its stand-in is B's eigenvalues filtered, mapped the same
+// way: semidefinite, H₊ − H = Tᵀ (B₊ − B) T ⪰ 0, translations in its null space; a 6×6
+// decomposition in place of the whole 9×9 Hessian's (session 36: the same iterations to the same
+// minimum, docs/benchmarks.md). Projecting only the curvature block (∇²φ is semidefinite, φ being
+// convex in k), as FvBendingEdge's, took the friction cotton of docs/benchmarks.md 392 newton
+// iterations against 303, to the same minimum.
 bool FastHessian<FvBendingFriction>::Evaluate(const FvBendingFriction& functor,
                                               const double* const* x, double* energy,
                                               double* gradient, double* hessian,
@@ -276,15 +279,17 @@ bool FastHessian<FvBendingFriction>::Evaluate(const FvBendingFriction& functor,
   }
   TriangleNodes::Jacobian<3> dq = TriangleNodes::Jacobian<3>::Zero();
   TriangleNodes::AddRelativeToCentre<3>(k.jacobian, 0, 1, 2, dq);
-  TriangleNodes::Hessian h = SymmetricCongruence(dq, h_q);
-  const Eigen::Matrix<double, 6, 6> curvature = k.WeightedHessian(g_q.data());
-  TriangleNodes::AddRelativeToCentre(curvature, 0, 1, 2, &h);
+  Eigen::Matrix<double, 6, 6> relative = SymmetricCongruence(k.jacobian, h_q);
+  relative += k.WeightedHessian(g_q.data());
+  TriangleNodes::Hessian h = TriangleNodes::Hessian::Zero();
+  TriangleNodes::AddRelativeToCentre(relative, 0, 1, 2, &h);
   const bool finite = StoreBinormalTermResults(e.value, dq, g_q, h, energy, gradient, hessian);
   if (finite && projection) {
-    StoreTriangleProjection(IsSemidefinite(h), h, projection, [&] {
-      TriangleNodes::Hessian whole = h;
-      ProjectSymmetric(projection->filter, &whole);
-      return whole;
+    StoreTriangleProjection(IsSemidefinite(relative), h, projection, [&] {
+      ProjectSymmetric(projection->filter, &relative);
+      TriangleNodes::Hessian stand_in = TriangleNodes::Hessian::Zero();
+      TriangleNodes::AddRelativeToCentre(relative, 0, 1, 2, &stand_in);
+      return stand_in;
     });
   }
   return finite;

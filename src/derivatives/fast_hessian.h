@@ -33,8 +33,8 @@
 //     not the nearest semidefinite matrix to H but a larger one (a compressed membrane arm of
 //     axial stiffness k keeps k·l/|u| > k along itself, where the whole term's projection would
 //     keep k); it replaces a 9×9 eigen-decomposition by a 3×3 and a 2×2 one.
-//   FvBendingFriction: the whole 9×9 Hessian's eigenvalues filtered, as a functor without a staged
-//     path has it (fast_hessian.cc says why not blockwise).
+//   FvBendingFriction: the eigenvalues filtered of its whole Hessian over the relative coordinates
+//     (6×6, a − p and b − p; fast_hessian.cc says why not blockwise), mapped to the nodes.
 //   FvBending: the Gauss–Newton part Jᵀ J of E = ½|r|² (J = ∂r/∂x, 8×15), which the chain rule
 //     has already formed: no decomposition at all. It drops the curvature Σ r_i ∇²r_i whole, the
 //     positive part too, so H₊ − H ⪰ 0 does not hold here; the filter does not apply. Measured
@@ -112,7 +112,7 @@ struct FastHessian<FvBendingEdge> {
                        double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
 
-// Its stand-in is the whole 9×9 Hessian's eigenvalues filtered (H₊ − H ⪰ 0 holds for that too).
+// Its stand-in is its relative 6×6 Hessian's eigenvalues filtered (H₊ − H ⪰ 0 holds for that too).
 template <>
 struct FastHessian<FvBendingFriction> {
   static constexpr bool kAvailable = true;
