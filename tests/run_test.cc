@@ -12,6 +12,7 @@
 #include "costs/constant_force_potential.h"
 #include "src/scene/scene_loader.h"
 #include "tests/scratch_folder.h"
+#include "tests/test_scenes.h"
 
 namespace drape {
 namespace {
@@ -26,6 +27,26 @@ constexpr char kChain[] =
     "fixed:\n  - nodes: {ids: [0, 4]}\n"
     "loads: {gravity: [0, 0, -9.81]}\n"
     "solver: {method: newton, tolerance: 1.0e-10}\n";
+
+// Where the fabric has a bending friction, newton takes no step doublings unless the scene asks for
+// them (src/run/run.cc, kFrictionMaxExpansions); other methods and frictionless fabrics take the
+// options as given (the shear friction too).
+TEST(SolveMethodOptions, NewtonOnAFabricWithABendingFrictionDoesNotDoubleItsSteps) {
+  const std::string cotton = testing::SourcePath("configs/fv/drape_tester_cotton_30.yaml");
+  const std::string friction = "material.finite_volume.kes.2HB_warp=0.124";
+  const Scene elastic = LoadScene(cotton);
+  ASSERT_FALSE(HasFriction(elastic));
+  EXPECT_EQ(SolveMethodOptions(elastic, "newton").count("max_expansions"), 0u);
+  const Scene rubbing = LoadScene(cotton, {friction});
+  ASSERT_TRUE(HasFriction(rubbing));
+  EXPECT_EQ(SolveMethodOptions(rubbing, "newton").at("max_expansions"), 0.0);
+  EXPECT_EQ(SolveMethodOptions(rubbing, "ceres-lbfgs").count("max_expansions"), 0u);
+  const Scene shear = LoadScene(cotton, {"material.finite_volume.shear_friction=0.49"});
+  ASSERT_TRUE(HasFriction(shear));
+  EXPECT_EQ(SolveMethodOptions(shear, "newton").count("max_expansions"), 0u);
+  const Scene asked = LoadScene(cotton, {friction, "solver.newton.max_expansions=2"});
+  EXPECT_EQ(SolveMethodOptions(asked, "newton").at("max_expansions"), 2.0);
+}
 
 // The balance "reactions + contact + constraint = −(weight + loads)" is part of convergence: a
 // model with a force the balance does not know of (a term outside `applied`, as a bug in a model

@@ -13,6 +13,7 @@
 #include "src/model/model.h"
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/scene_loader.h"
+#include "src/scene/solver_methods.h"
 #include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"
 
@@ -126,6 +127,20 @@ TEST(SceneYaml, HoldsTheSiValuesTheOverridesAndTheDefaults) {
   EXPECT_EQ(text.find("kes"), std::string::npos) << text;
   EXPECT_NE(text.find("max_iterations: 2000"), std::string::npos) << text;
   EXPECT_NE(text.find("max_nodes:"), std::string::npos) << text;  // a default, filled in
+}
+
+// A fabric with a bending friction: newton's options as its solve takes them (no step doublings unless
+// asked, src/run/run.h, SolveMethodOptions), so that scene.yaml solves the same way again.
+TEST(SceneYaml, RecordsTheNewtonOptionsAFrictionSets) {
+  const std::string cotton = testing::SourcePath("configs/fv/drape_tester_cotton_30.yaml");
+  const Scene scene = LoadScene(cotton, {"material.finite_volume.kes.2HB_warp=0.124"});
+  const Scene again = RoundTrip(scene, "friction");
+  EXPECT_EQ(again.solver.method_options.at("newton").at("max_expansions"), 0.0);
+  const Scene elastic = RoundTrip(LoadScene(cotton), "elastic");
+  const MethodOption* doublings = FindMethodOption(*FindSolverMethod("newton"), "max_expansions");
+  EXPECT_EQ(elastic.solver.method_options.at("newton").at("max_expansions"),
+            doublings->default_value.value());
+  EXPECT_NE(doublings->default_value.value(), 0.0);
 }
 
 // output.obj_up is recorded as chosen.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "src/output/json.h"
+#include "src/run/run.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
 #include "src/scene/scene_field.h"
@@ -369,9 +370,11 @@ void WriteObstacle(const ObstacleSpec& obstacle, YAML::Emitter& out) {
   out << YAML::EndMap << YAML::EndMap;
 }
 
-// The method, the tolerance, the limits in effect and the method's options (given, else their
-// defaults where the catalogue has a finite one); other methods' option sections as given.
-void WriteSolver(const SolverSpec& solver, YAML::Emitter& out) {
+// The method, the tolerance, the limits in effect and the method's options as its solve takes them
+// (given, or set for this scene: SolveMethodOptions; else their defaults where the catalogue has a
+// finite one); other methods' option sections as given.
+void WriteSolver(const Scene& scene, YAML::Emitter& out) {
+  const SolverSpec& solver = scene.solver;
   Key(out, "solver");
   out << YAML::Value << YAML::BeginMap;
   WriteFields(out, "solver", solver, "", {"max_iterations", "time_limit", "levels"});
@@ -384,6 +387,7 @@ void WriteSolver(const SolverSpec& solver, YAML::Emitter& out) {
     out << YAML::Value << solver.levels;
   }
   std::map<std::string, std::map<std::string, double>> options = solver.method_options;
+  options[solver.method] = SolveMethodOptions(scene, solver.method);
   if (const SolverMethod* method = FindSolverMethod(solver.method)) {
     for (const MethodOption& option : method->options) {
       if (option.default_value && std::isfinite(*option.default_value)) {
@@ -425,7 +429,7 @@ void WriteSceneYaml(const Scene& scene, std::ostream& stream) {
   out << YAML::Value << YAML::BeginMap;
   WriteFields(out, "contact", scene.contact);
   out << YAML::EndMap;
-  WriteSolver(scene.solver, out);
+  WriteSolver(scene, out);
   Key(out, "output");
   out << YAML::Value << YAML::BeginMap;
   Key(out, "directory");

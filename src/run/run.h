@@ -3,6 +3,7 @@
 #define DRAPE_SRC_RUN_RUN_H_
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,12 @@ SolverSummary SolveWithSceneOptions(
 
 // Whether the scene's fabric, or one of its regions, has a friction (in bending or in shear).
 bool HasFriction(const Scene& scene);
+
+// The options a solve of `method` takes from the scene: solver.<method>.<key> as given, and where
+// the fabric has a bending friction, newton's max_expansions 0 unless given (src/run/run.cc,
+// kFrictionMaxExpansions, has the evidence). The solvers take the catalogue's defaults for the
+// rest (src/scene/solver_methods.h); scene.yaml writes these.
+std::map<std::string, double> SolveMethodOptions(const Scene& scene, const std::string& method);
 
 // The frictions' continuation, which RunSolve runs first: from model.positions, the stages of
 // larger smoothing δ that a friction's kink at the flat state needs before the scene's own δ

@@ -68,7 +68,9 @@ std::vector<SolverMethod> BuildCatalogue() {
        600.0,
        {Real("regularization", 1e-4, 1e-12, 1e16, "initial pseudo-time regularisation mu"),
         Integer("max_line_search", 30, 1, 1000, "energy evaluations per line search"),
-        Integer("max_expansions", 4, 0, 60, "doublings of an accepted full step"),
+        Integer("max_expansions", 4, 0, 60,
+                "doublings of an accepted full step (0 unless given where the fabric has a "
+                "bending friction)"),
         Real("exact_hessian_residual", kInf, 0, kInf,
              "try the unprojected Hessian only below this relative residual"),
         Real("absolute_projection_above", 1e-4, 0, kInf,
