@@ -129,8 +129,8 @@ TEST(SceneYaml, HoldsTheSiValuesTheOverridesAndTheDefaults) {
   EXPECT_NE(text.find("max_nodes:"), std::string::npos) << text;  // a default, filled in
 }
 
-// A fabric with a bending friction: newton's options as its solve takes them (no step doublings unless
-// asked, src/run/run.h, SolveMethodOptions), so that scene.yaml solves the same way again.
+// A fabric with a bending friction: newton's options as its solve takes them (no step doublings
+// unless asked, src/run/run.h, SolveMethodOptions), so that scene.yaml solves the same way again.
 TEST(SceneYaml, RecordsTheNewtonOptionsAFrictionSets) {
   const std::string cotton = testing::SourcePath("configs/fv/drape_tester_cotton_30.yaml");
   const Scene scene = LoadScene(cotton, {"material.finite_volume.kes.2HB_warp=0.124"});
