@@ -13,7 +13,8 @@ docs/validation.md from the fabrics.csv files it writes:
 
 `drape fabrics` solves each fabric with the drape test's two levels (the spacing and twice it), so
 every prediction carries drape's error bar, and keeps what it solved: a run that was stopped goes
-on where it stopped.
+on where it stopped, and a folder deleted is solved again (the tables' heading names the drape that
+solved each variant's rows, from fabrics.csv's drape_version column).
 
 Run from the repository root after building drape (Release):
     python3 tools/validation.py [--drape build/drape] [--spacings 0.005,0.0026] [--out DIR]
@@ -97,6 +98,21 @@ def tables(spacing, results):
     return "\n".join(text) + "\n"
 
 
+def solved_by(all_results):
+    """Which drape solved the rows: `drape fabrics` keeps a re-run's finished rows, so a table may
+    hold rows of an older drape (their drape_version column), named here with their variants."""
+    variants = {}
+    for results in all_results:
+        for variant, rows in results.items():
+            for row in rows.values():
+                variants.setdefault(row["drape_version"].strip(), [])
+                if variant not in variants[row["drape_version"].strip()]:
+                    variants[row["drape_version"].strip()].append(variant)
+    if len(variants) == 1:
+        return f"drape {next(iter(variants))}"
+    return "; ".join(f"drape {version} ({', '.join(names)})" for version, names in variants.items())
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--drape", default="build/drape")
@@ -104,18 +120,18 @@ def main():
     parser.add_argument("--out", default="out/validation")
     parser.add_argument("--dry-run", action="store_true")
     args = parser.parse_args()
-    blocks = []
+    blocks, all_results = [], []
     for spacing in (float(s) for s in args.spacings.split(",")):
         results = {name: run_fabrics(args.drape, spacing, name, overrides, args.out, args.dry_run)
                    for name, overrides in VARIANTS}
         if not args.dry_run:
             blocks.append(tables(spacing, results))
+            all_results.append(results)
     if args.dry_run:
         return
     command = "python3 tools/validation.py" + (f" --spacings {args.spacings}"
                                                 if args.spacings != "0.005,0.0026" else "")
-    version = subprocess.run([args.drape, "--version"], capture_output=True, text=True)
-    body = f"`{command}`, with {version.stdout.strip()}, one run:\n\n" + "\n".join(blocks)
+    body = f"`{command}`, with {solved_by(all_results)}, one run:\n\n" + "\n".join(blocks)
     with open(DOC, encoding="utf-8") as f:
         doc = f.read()
     head, rest = doc.split(BEGIN, 1)
