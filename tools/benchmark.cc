@@ -298,7 +298,7 @@ const std::vector<BenchScene>& AllScenes() {
       {"limp1.3",
        "configs/fv/drape_tester_limp_30.yaml",
        {"mesh.spacing=0.0013", "solver.levels=1"}},
-      // The friction cotton of docs/benchmarks.md ("Friction"): 2HB = 0.124 gf·cm/cm both ways.
+      // The friction cotton of docs/benchmarks.md ("Current"): 2HB = 0.124 gf·cm/cm both ways.
       {"friction4",
        "configs/fv/drape_tester_cotton_30.yaml",
        {"mesh.spacing=0.004", "solver.levels=1", "material.finite_volume.kes.2HB_warp=0.124",
