@@ -36,7 +36,8 @@
 // whose energy is not finite is never accepted, the step is shortened instead. When the full step
 // is accepted, it is doubled (up to 4 times) while the energy keeps falling: H₊ overstates the
 // curvature where terms are indefinite, and an energy evaluation costs about 1/300 of a
-// factorisation. Near the end,
+// factorisation (not where the fabric has a bending friction: a doubled step carries control
+// volumes past the friction's kink; src/run/run.cc, SolveMethodOptions). Near the end,
 // where the energy changes by less than its own rounding (64 ulps of Σ|term energy|), it cannot
 // judge a step; there the step is accepted if it lowers the norm of the free residual force, both
 // norms computed by one path (EvaluateEnergy), not the iterate's from the assembly's fast
