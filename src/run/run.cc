@@ -151,6 +151,12 @@ bool HasFriction(const Scene& scene, std::initializer_list<double FiniteVolumeSp
   return false;
 }
 
+// Whether the scene's fabric, or one of its regions, has a bending friction (warp or weft).
+bool HasBendingFriction(const Scene& scene) {
+  return HasFriction(
+      scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft});
+}
+
 struct Smoothings {
   double bending = 0.0;  // 1/m
   double shear = 0.0;    // rad
@@ -161,8 +167,7 @@ struct Smoothings {
 // scene's.
 std::vector<Smoothings> ContinuationStages(const Scene& scene) {
   const FiniteVolumeSpec& fv = scene.material.finite_volume;
-  const bool bending = HasFriction(
-      scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft});
+  const bool bending = HasBendingFriction(scene);
   const bool shear = HasFriction(scene, {&FiniteVolumeSpec::shear_friction});
   std::vector<Smoothings> stages;
   for (int k = 0;; ++k) {
@@ -346,18 +351,14 @@ std::map<std::string, double> SolveMethodOptions(const Scene& scene, const std::
   if (auto it = scene.solver.method_options.find(method); it != scene.solver.method_options.end()) {
     options = it->second;
   }
-  const bool bending_friction = HasFriction(
-      scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft});
-  if (method == "newton" && bending_friction) {
+  if (method == "newton" && HasBendingFriction(scene)) {
     options.emplace("max_expansions", kFrictionMaxExpansions);
   }
   return options;
 }
 
 bool HasFriction(const Scene& scene) {
-  return HasFriction(
-      scene, {&FiniteVolumeSpec::bending_friction_warp, &FiniteVolumeSpec::bending_friction_weft,
-              &FiniteVolumeSpec::shear_friction});
+  return HasBendingFriction(scene) || HasFriction(scene, {&FiniteVolumeSpec::shear_friction});
 }
 
 SolverSummary RunFrictionContinuation(
