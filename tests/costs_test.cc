@@ -26,6 +26,7 @@
 #include "costs/fv_bending.h"
 #include "costs/fv_bending_friction.h"
 #include "costs/fv_bending_friction_step.h"
+#include "costs/fv_cell_shear.h"
 #include "costs/fv_membrane.h"
 #include "costs/fv_shear_friction.h"
 #include "costs/fv_twist.h"
@@ -232,6 +233,16 @@ struct Sample<FvTwist> {
 };
 
 template <>
+struct Sample<FvCellShear> {
+  static constexpr const char* kName = "FvCellShear";
+  // G A_c = 50 N/m × 1.2e-4 m² on a 1 cm × 1.2 cm cell.
+  static FvCellShear Make() { return FvCellShear::Create(50.0, 1.2e-4); }
+  static std::vector<std::vector<double>> States() {  // nodes P, E, N, C
+    return Sample<FvTwist>::States();
+  }
+};
+
+template <>
 struct Sample<FvBendingFriction> {
   static constexpr const char* kName = "FvBendingFriction";
   // δ = 5 1/m: the generic state's κ ≈ 50 1/m is far beyond it, the flat state at its kink.
@@ -288,7 +299,7 @@ using Functors =
                      ConstantForcePotential, PressurePotential, SphereContact, PlaneContact,
                      DiskContact, EdgeContact<DiskContact>, CylinderContact, BoxContact, FvMembrane,
                      FvBendingEdge, FvBending, FvBendingFriction, FvBendingFrictionStep,
-                     FvShearFriction, FvTwist>;
+                     FvShearFriction, FvTwist, FvCellShear>;
 
 class FunctorNames {
  public:

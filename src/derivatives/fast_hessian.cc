@@ -9,6 +9,7 @@
 
 #include "costs/fv_bending.h"
 #include "costs/fv_bending_friction.h"
+#include "costs/fv_cell_shear.h"
 #include "costs/fv_membrane.h"
 #include "costs/fv_twist.h"
 #include "src/derivatives/psd_projection.h"
@@ -297,58 +298,142 @@ bool FastHessian<FvBendingFriction>::Evaluate(const FvBendingFriction& functor,
   return finite;
 }
 
-// FvMembrane (nodes P, A, B = 0..2): Q = (u·u, v·v, u·v), the Gram entries of the arms u = A − P,
-// v = B − P, quadratic in the coordinates; E = φ(Q) = ½|r(Q)|² by the functor's Residuals stage,
-// differentiated over the 3 values of Q. With J = ∂Q/∂(u, v) (rows (2u, 0),
-// (0, 2v), (v, u)) and the constant second derivatives of Q,
+namespace {
+
+// E = φ(Q) = ½|r(Q)|² over the Gram entries Q = (u·u, v·v, u·v) of two arms u, v (FvMembrane's
+// and FvCellShear's Residuals stage), differentiated over the 3 values of Q. With J = ∂Q/∂(u, v)
+// (rows (2u, 0), (0, 2v), (v, u)) and the constant second derivatives of Q,
 //   ∇²E = Jᵀ ∇²φ J + M ⊗ I₃,   M = [2 φ_uu  φ_uv; φ_uv  2 φ_vv]   (φ_Q = ∂φ/∂Q),
-// over (u, v), mapped to the nodes by u = A − P, v = B − P.
+// over (u, v). Its stand-in: ∇²φ and M each made semidefinite (fast_hessian.h, "Projection").
+class GramStage {
+ public:
+  template <typename Functor>
+  bool Evaluate(const Functor& functor, const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+    using Number = SecondOrder<3>;
+    const double gram[3] = {u.dot(u), v.dot(v), u.dot(v)};
+    Number q[3], r[Functor::kNumOutputs];
+    for (int k = 0; k < 3; ++k) q[k] = Number::Variable(gram[k], k);
+    if (!functor.Residuals(q, r)) return false;
+    Number sum;
+    for (const Number& residual : r) sum += residual * residual;
+    const Number e = 0.5 * sum;
+    Eigen::Vector3d g_q;
+    for (int k = 0; k < 3; ++k) {
+      g_q[k] = e.gradient[k];
+      for (int c = 0; c < 3; ++c) h_q_(k, c) = e.Hessian(k, c);
+    }
+    j_ << 2.0 * u.transpose(), Eigen::RowVector3d::Zero(), Eigen::RowVector3d::Zero(),
+        2.0 * v.transpose(), v.transpose(), u.transpose();
+    m_ << 2.0 * g_q[0], g_q[2], g_q[2], 2.0 * g_q[1];
+    hessian = MembraneRelative(j_, h_q_, m_);
+    gradient = j_.transpose() * g_q;
+    energy = e.value;
+    return std::isfinite(energy) && gradient.allFinite() && hessian.allFinite();
+  }
+
+  Eigen::Matrix<double, 6, 6> StandIn(EigenvalueFilter filter) const {
+    Eigen::Matrix3d h_q = h_q_;
+    Eigen::Matrix2d m = m_;
+    ProjectSymmetric(filter, &h_q);
+    ProjectSymmetric(filter, &m);
+    return MembraneRelative(j_, h_q, m);
+  }
+
+  double energy = 0.0;
+  Eigen::Matrix<double, 6, 1> gradient;  // over (u, v)
+  Eigen::Matrix<double, 6, 6> hessian;
+
+ private:
+  Eigen::Matrix<double, 3, 6> j_;
+  Eigen::Matrix3d h_q_;
+  Eigen::Matrix2d m_;
+};
+
+// A 4-node term's Hessian over the relative positions x_a − x_P (a = 1..3, 9×9) mapped to its
+// nodes (12×12, row-major): node P's rows and columns are minus the sums of the others'.
+void FourNodesFromRelative(const Eigen::Matrix<double, 9, 9>& relative, double* out) {
+  Eigen::Map<NodeDerivatives<4>::Hessian> h(out);
+  h.setZero();
+  h.bottomRightCorner<9, 9>() = relative;
+  for (int node = 0; node < 3; ++node) {
+    const Eigen::Matrix<double, 3, 9> rows = relative.middleRows<3>(3 * node);
+    h.block<3, 9>(0, 3).noalias() -= rows;
+    h.block<9, 3>(3, 0).noalias() -= rows.transpose();
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) h.block<3, 3>(0, 0) += relative.block<3, 3>(3 * i, 3 * j);
+  }
+}
+
+// A 4-node term's gradient over the relative positions mapped to its nodes.
+void FourNodesFromRelative(const Eigen::Matrix<double, 9, 1>& relative, double* out) {
+  Eigen::Map<Eigen::Matrix<double, 12, 1>> g(out);
+  g << -(relative.segment<3>(0) + relative.segment<3>(3) + relative.segment<3>(6)), relative;
+}
+
+}  // namespace
+
+// FvMembrane (nodes P, A, B = 0..2): GramStage over the arms u = A − P, v = B − P, mapped to the
+// nodes.
 bool FastHessian<FvMembrane>::Evaluate(const FvMembrane& functor, const double* const* x,
                                        double* energy, double* gradient, double* hessian,
                                        StagedProjection* projection) {
-  using Number = SecondOrder<3>;
-  double gram[3];
-  FvMembrane::ArmGram(x[0], x[1], x[2], gram);
-  Number q[3], r[3];
-  for (int k = 0; k < 3; ++k) q[k] = Number::Variable(gram[k], k);
-  if (!functor.Residuals(q, r)) return false;
-  Number sum;
-  for (const Number& residual : r) sum += residual * residual;
-  const Number e = 0.5 * sum;
-  Eigen::Vector3d g_q;
-  Eigen::Matrix3d h_q;
-  for (int k = 0; k < 3; ++k) {
-    g_q[k] = e.gradient[k];
-    for (int c = 0; c < 3; ++c) h_q(k, c) = e.Hessian(k, c);
-  }
   const Eigen::Vector3d u(x[1][0] - x[0][0], x[1][1] - x[0][1], x[1][2] - x[0][2]);
   const Eigen::Vector3d v(x[2][0] - x[0][0], x[2][1] - x[0][1], x[2][2] - x[0][2]);
-  Eigen::Matrix<double, 3, 6> j;
-  j << 2.0 * u.transpose(), Eigen::RowVector3d::Zero(), Eigen::RowVector3d::Zero(),
-      2.0 * v.transpose(), v.transpose(), u.transpose();
-  Eigen::Matrix2d m;
-  m << 2.0 * g_q[0], g_q[2], g_q[2], 2.0 * g_q[1];
-  const Eigen::Matrix<double, 6, 6> h_relative = MembraneRelative(j, h_q, m);
-  const Eigen::Matrix<double, 6, 1> g_relative = j.transpose() * g_q;
-
+  GramStage stage;
+  if (!stage.Evaluate(functor, u, v)) return false;
   Eigen::Map<Eigen::Matrix<double, 9, 1>> full_gradient(gradient);
-  full_gradient << -(g_relative.head<3>() + g_relative.tail<3>()), g_relative;
+  full_gradient << -(stage.gradient.head<3>() + stage.gradient.tail<3>()), stage.gradient;
   Eigen::Map<TriangleNodes::Hessian> full_hessian(hessian);
   TriangleNodes::Hessian h = TriangleNodes::Hessian::Zero();
-  TriangleNodes::AddRelativeToCentre(h_relative, 1, 0, 2, &h);
+  TriangleNodes::AddRelativeToCentre(stage.hessian, 1, 0, 2, &h);
   full_hessian = h;
-  *energy = e.value;
-  const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h.allFinite();
-  if (finite && projection) {
-    StoreTriangleProjection(IsSemidefinite(h_relative), h, projection, [&] {
-      ProjectSymmetric(projection->filter, &h_q);
-      ProjectSymmetric(projection->filter, &m);
+  *energy = stage.energy;
+  if (projection) {
+    StoreTriangleProjection(IsSemidefinite(stage.hessian), h, projection, [&] {
       TriangleNodes::Hessian stand_in = TriangleNodes::Hessian::Zero();
-      TriangleNodes::AddRelativeToCentre(MembraneRelative(j, h_q, m), 1, 0, 2, &stand_in);
+      TriangleNodes::AddRelativeToCentre(stage.StandIn(projection->filter), 1, 0, 2, &stand_in);
       return stand_in;
     });
   }
-  return finite;
+  return true;
+}
+
+// FvCellShear (nodes P, E, N, C = 0..3): GramStage over the centre tangents (u_c, v_c) = S X,
+// linear in the relative positions X = (E − P, N − P, C − P): u_c = (X_E − X_N + X_C)/2,
+// v_c = (X_N − X_E + X_C)/2. Over X the gradient is Sᵀ g and the Hessian Sᵀ H S, mapped to the
+// nodes as FvTwist's.
+bool FastHessian<FvCellShear>::Evaluate(const FvCellShear& functor, const double* const* x,
+                                        double* energy, double* gradient, double* hessian,
+                                        StagedProjection* projection) {
+  enum { kP, kE, kN, kC };
+  Eigen::Vector3d u, v;
+  for (int k = 0; k < 3; ++k) {
+    u[k] = 0.5 * ((x[kE][k] - x[kP][k]) + (x[kC][k] - x[kN][k]));
+    v[k] = 0.5 * ((x[kN][k] - x[kP][k]) + (x[kC][k] - x[kE][k]));
+  }
+  GramStage stage;
+  if (!stage.Evaluate(functor, u, v)) return false;
+  Eigen::Matrix<double, 6, 9> s = Eigen::Matrix<double, 6, 9>::Zero();
+  const Eigen::Matrix3d half = 0.5 * Eigen::Matrix3d::Identity();
+  s.block<3, 3>(0, 0) = half;   // u_c: E
+  s.block<3, 3>(0, 3) = -half;  //      N
+  s.block<3, 3>(0, 6) = half;   //      C
+  s.block<3, 3>(3, 0) = -half;  // v_c: E
+  s.block<3, 3>(3, 3) = half;   //      N
+  s.block<3, 3>(3, 6) = half;   //      C
+  const Eigen::Matrix<double, 9, 1> g_relative = s.transpose() * stage.gradient;
+  FourNodesFromRelative(g_relative, gradient);
+  FourNodesFromRelative(SymmetricCongruence(s, stage.hessian), hessian);
+  *energy = stage.energy;
+  if (projection) {
+    projection->changed = !IsSemidefinite(stage.hessian);
+    FourNodesFromRelative(
+        SymmetricCongruence(
+            s, projection->changed ? stage.StandIn(projection->filter) : stage.hessian),
+        projection->hessian);
+  }
+  return true;
 }
 
 // FvTwist (nodes P, E, N, C = 0..3), by its stages: Q = (d, a, b), linear in the relative
@@ -417,31 +502,14 @@ bool FastHessian<FvTwist>::Evaluate(const FvTwist& functor, const double* const*
   const Eigen::Matrix<double, 9, 1> dr = t.transpose() * g_q;
   const Eigen::Matrix<double, 9, 9> gauss_newton = dr * dr.transpose();
   const Eigen::Matrix<double, 9, 9> h_relative = gauss_newton + r.value * (t.transpose() * h_q * t);
-  // Back to the nodes: x_a − x_P for a = 1..3, so node P's rows and columns are minus the sums.
-  const auto to_nodes = [](const Eigen::Matrix<double, 9, 9>& relative, double* out) {
-    Eigen::Map<NodeDerivatives<4>::Hessian> h(out);
-    h.setZero();
-    h.bottomRightCorner<9, 9>() = relative;
-    for (int node = 0; node < 3; ++node) {
-      const Eigen::Matrix<double, 3, 9> rows = relative.middleRows<3>(3 * node);
-      h.block<3, 9>(0, 3).noalias() -= rows;
-      h.block<9, 3>(3, 0).noalias() -= rows.transpose();
-    }
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) h.block<3, 3>(0, 0) += relative.block<3, 3>(3 * i, 3 * j);
-    }
-  };
-  Eigen::Map<Eigen::Matrix<double, 12, 1>> full_gradient(gradient);
   const Eigen::Matrix<double, 9, 1> g_relative = r.value * dr;
-  full_gradient << -(g_relative.segment<3>(0) + g_relative.segment<3>(3) +
-                     g_relative.segment<3>(6)),
-      g_relative;
-  to_nodes(h_relative, hessian);
+  FourNodesFromRelative(g_relative, gradient);
+  FourNodesFromRelative(h_relative, hessian);
   *energy = 0.5 * r.value * r.value;
-  const bool finite = std::isfinite(*energy) && full_gradient.allFinite() && h_relative.allFinite();
+  const bool finite = std::isfinite(*energy) && g_relative.allFinite() && h_relative.allFinite();
   if (finite && projection) {  // H where semidefinite, else ∇r ∇rᵀ (fast_hessian.h, "Projection")
     projection->changed = !IsSemidefinite(h_relative);
-    to_nodes(projection->changed ? gauss_newton : h_relative, projection->hessian);
+    FourNodesFromRelative(projection->changed ? gauss_newton : h_relative, projection->hessian);
   }
   return finite;
 }

@@ -4,7 +4,8 @@
 // FvBending and FvBendingEdge compute their residuals in stages: curvature binormals (3 nodes
 // each), unit tangents (2 nodes each), sections (FvBending only: 6 numbers each) and residuals
 // linear in the last stage. FvMembrane computes the Gram entries of its two arms (quadratic in
-// the coordinates), then its residuals from those 3 numbers. FvBendingFriction computes one
+// the coordinates), then its residuals from those 3 numbers; FvCellShear the same of its cell's
+// centre tangents. FvBendingFriction computes one
 // curvature binormal, then its energy from those 3 numbers. Nested Jets over one whole functor
 // carry 6–12 derivatives through every operation; here each stage is differentiated on its own
 // with the few variables it reads (6 relative coordinates for a binormal, 3 for a tangent, 6 for
@@ -47,6 +48,8 @@
 // is indefinite H₊ − H ⪰ 0 (StandIn::kAboveHessian) or H₊ = Jᵀ J with J from Ceres's
 // differentiation of the functor's residuals (StandIn::kGaussNewton).
 //
+//   FvCellShear: as FvMembrane, its Gram stage taken over the cell's centre tangents (linear in
+//     its four nodes), both curvature blocks made semidefinite on their own.
 //   FvTwist: one residual r, so ∇²E = ∇r ∇rᵀ + r ∇²r; its stand-in is ∇r ∇rᵀ, the Gauss–Newton
 //     part, as FvBending's.
 // FvTwist computes its residual in stages too: the mixed difference d and the diagonals a, b
@@ -69,6 +72,7 @@ namespace drape {
 struct FvBending;
 struct FvBendingEdge;
 struct FvBendingFriction;
+struct FvCellShear;
 struct FvMembrane;
 struct FvTwist;
 
@@ -126,6 +130,14 @@ struct FastHessian<FvMembrane> {
   static constexpr bool kAvailable = true;
   static constexpr StandIn kStandIn = StandIn::kAboveHessian;
   static bool Evaluate(const FvMembrane& functor, const double* const* x, double* energy,
+                       double* gradient, double* hessian, StagedProjection* projection = nullptr);
+};
+
+template <>
+struct FastHessian<FvCellShear> {
+  static constexpr bool kAvailable = true;
+  static constexpr StandIn kStandIn = StandIn::kAboveHessian;
+  static bool Evaluate(const FvCellShear& functor, const double* const* x, double* energy,
                        double* gradient, double* hessian, StagedProjection* projection = nullptr);
 };
 

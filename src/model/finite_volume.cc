@@ -10,6 +10,7 @@
 #include "costs/fv_bending.h"
 #include "costs/fv_bending_friction.h"
 #include "costs/fv_bending_friction_step.h"
+#include "costs/fv_cell_shear.h"
 #include "costs/fv_membrane.h"
 #include "costs/fv_shear_friction.h"
 #include "costs/fv_twist.h"
@@ -224,17 +225,27 @@ void AddBending(const FiniteVolumeSpec& spec, const Mesh& mesh, int p, const Nei
   }
 }
 
+// Whether the quarter of control volume p between its arms to a (warp) and b (weft) lies in a
+// whole lattice cell: the cell's fourth corner, at a's column and b's row, is a node.
+bool InWholeCell(const Lattice& lattice, const Mesh& mesh, int a, int b) {
+  return lattice.At(mesh.grid_index[a][0], mesh.grid_index[b][1]) >= 0;
+}
+
 // The four quarters of control volume p: membrane, and the shear friction where the fabric has it.
-// The friction's least-squares shift, HG A_q, its energy at a shear angle of 1 rad, keeps the
-// ceres-* residual √(2 (E + shift)) smooth at rest, where E = 0 (as AddBendingFriction's).
-void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, const Mesh& mesh, int p,
-                 const Neighbours& nb, const double* reference, Model* model) {
+// With `finite_volume.cell_shear`, a quarter in a whole cell leaves its shear to the cell's
+// FvCellShear (AddCellShear) and keeps its stretch. The friction's least-squares shift, HG A_q, its
+// energy at a shear angle of 1 rad, keeps the ceres-* residual √(2 (E + shift)) smooth at rest,
+// where E = 0 (as AddBendingFriction's).
+void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, const Lattice& lattice,
+                 const Mesh& mesh, int p, const Neighbours& nb, const double* reference,
+                 Model* model) {
   for (int a : {nb.e, nb.w}) {
     for (int b : {nb.n, nb.s}) {
       if (a < 0 || b < 0) continue;
       const double rest_a = RestDistance(mesh, p, a), rest_b = RestDistance(mesh, p, b);
+      const double g = spec.cell_shear && InWholeCell(lattice, mesh, a, b) ? 0.0 : e.g;
       model->terms.push_back(MakeTerm("fv_membrane", {p, a, b},
-                                      FvMembrane::Create(e.e1, e.e2, e.e12, e.g, rest_a, rest_b)));
+                                      FvMembrane::Create(e.e1, e.e2, e.e12, g, rest_a, rest_b)));
       if (!(spec.shear_friction > 0.0)) continue;
       double previous = 0.0;  // the rest state's, or the reference's (0 where it has none)
       if (reference && spec.friction_load_steps > 0) {
@@ -283,6 +294,20 @@ void AddTwist(const NodeSpecs& of_node, const Lattice& lattice, const Mesh& mesh
   }
 }
 
+// With `finite_volume.cell_shear`, the shear of every whole cell at its centre
+// (costs/fv_cell_shear.h): each corner's quarter of the cell carries the G of its own node's
+// material, so the cell's G_c A_c = Σ_corners G_k A_c / 4.
+void AddCellShear(const NodeSpecs& of_node, const Lattice& lattice, const Mesh& mesh,
+                  Model* model) {
+  for (const auto& [p, e, n, c] : LatticeCells(lattice, mesh)) {
+    double g = 0.0;
+    for (int node : {p, e, n, c}) g += of_node[node]->G / 4.0;
+    if (!(g > 0.0)) continue;
+    const double area = RestDistance(mesh, p, e) * RestDistance(mesh, p, n);
+    model->terms.push_back(MakeTerm("fv_cell_shear", {p, e, n, c}, FvCellShear::Create(g, area)));
+  }
+}
+
 }  // namespace
 
 void AddFiniteVolumeTerms(const FiniteVolumeSpec& spec, const Mesh& mesh, Model* model,
@@ -308,9 +333,11 @@ void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, c
   for (int p = 0; p < n; ++p) {  // a full grid's ids run row by row: p = j*nu + i
     const Neighbours nb = NeighboursOf(lattice, mesh.grid_index[p][0], mesh.grid_index[p][1]);
     AddBending(*of_node[p], mesh, p, nb, friction_reference, model);
-    AddMembrane(rigidities.at(of_node[p]), *of_node[p], mesh, p, nb, friction_reference, model);
+    AddMembrane(rigidities.at(of_node[p]), *of_node[p], lattice, mesh, p, nb, friction_reference,
+                model);
   }
   AddTwist(of_node, lattice, mesh, model);
+  if (of_node[0]->cell_shear) AddCellShear(of_node, lattice, mesh, model);
 }
 
 }  // namespace drape

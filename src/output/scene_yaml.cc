@@ -221,6 +221,8 @@ void WriteFiniteVolume(const FiniteVolumeSpec& fv, YAML::Emitter& out) {
     Key(out, setting.key);
     Number(out, setting.value);
   }
+  Key(out, "cell_shear");
+  out << YAML::Value << fv.cell_shear;
   out << YAML::EndMap;
 }
 

@@ -629,6 +629,13 @@ std::vector<SchemaRow> FiniteVolume() {
           .Doc("N ≥ 1: the frictions' incremental form, the loads ramped in N steps (below); 0: "
                "the loads at once")
           .Example(set("friction_load_steps", "3")),
+      row("cell_shear")
+          .Bool()
+          .Field(&FiniteVolumeSpec::cell_shear)
+          .Doc("`true`: the in-plane shear taken once per lattice cell, at its centre, instead "
+               "of at the corners of each control volume (Hu/Teng's); it frees folds oblique to "
+               "the lattice from the shear the corners charge them (below)")
+          .Example(set("cell_shear", "true")),
   };
 }
 
