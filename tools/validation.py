@@ -9,7 +9,10 @@ docs/validation.md from the fabrics.csv files it writes:
   no twist   --set material.finite_volume.D_66=0 and no friction: the bending of the grid lines
              alone (Hu/Teng's assumption 2, drape before the twist term);
   twist      no friction: D_66 by the default rule (docs/reference.md, "Twist"), the model as it is;
-  + friction the table as it is, with the row's bending friction (shown only where it gives one).
+  + friction the table as it is, with the row's bending friction (shown only where it gives one);
+  cell shear no friction, the twist, and --set material.finite_volume.cell_shear=true: the
+             in-plane shear at the lattice cells' centres (docs/reference.md, "Shear at the
+             cells' centres"), not the default.
 
 `drape fabrics` solves each fabric with the drape test's two levels (the spacing and twice it), so
 every prediction carries drape's error bar, and keeps what it solved: a run that was stopped goes
@@ -34,7 +37,8 @@ NO_FRICTION = ["material.finite_volume.bending_friction_warp=0",
                "material.finite_volume.bending_friction_weft=0"]
 VARIANTS = [("no twist", ["material.finite_volume.D_66=0"] + NO_FRICTION),
             ("twist", NO_FRICTION),
-            ("twist + friction", [])]
+            ("twist + friction", []),
+            ("cell shear", NO_FRICTION + ["material.finite_volume.cell_shear=true"])]
 
 
 def run_fabrics(drape, spacing, name, overrides, out, dry_run):
@@ -77,9 +81,9 @@ def cell(row):
 def tables(spacing, results):
     text = [f"**Spacing {spacing * 1000:g} mm** (the drape test's error bar from the "
             f"{spacing * 2000:g} mm level and the mesh rule; Δ = predicted − measured):", "",
-            "| fabric | source | description | measured | no twist: DC (folds), Δ "
-            "| twist: DC (folds), Δ | twist + friction: DC (folds), Δ |",
-            "|---|---|---|---|---|---|---|"]
+            "| fabric | source | description | measured | "
+            + " | ".join(f"{variant}: DC (folds), Δ" for variant, _ in VARIANTS) + " |",
+            "|---|---|---|---|" + "---|" * len(VARIANTS)]
     for name, row in results["twist"].items():
         cells = [name, row["source"], row["description"], f"{float(row['measured_dc']):.3f}"]
         for variant, _ in VARIANTS:
