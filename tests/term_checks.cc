@@ -189,6 +189,19 @@ void ExpectZeroForce(const Term& term, const std::vector<double>& positions, dou
   for (double g : gradient) EXPECT_NEAR(g, 0.0, tolerance);
 }
 
+void ExpectZeroForceInAnyOrientation(const Term& term, const std::vector<double>& positions,
+                                     double tolerance) {
+  ExpectZeroForce(term, positions, tolerance);
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -0.5).normalized()).toRotationMatrix();
+  std::vector<double> moved = positions;
+  for (size_t a = 0; a + 2 < moved.size(); a += 3) {
+    Eigen::Map<Eigen::Vector3d> x(moved.data() + a);
+    x = turn * x + Eigen::Vector3d(0.3, -0.1, 2.0);
+  }
+  ExpectZeroForce(term, moved, tolerance);
+}
+
 std::vector<double> RandomPositions(int count, double size, unsigned seed) {
   std::mt19937 generator(seed);
   std::uniform_real_distribution<double> uniform(-0.5 * size, 0.5 * size);

@@ -56,6 +56,11 @@ void ExpectForcesBalance(const Term& term, const std::vector<double>& positions)
 void ExpectZeroForce(const Term& term, const std::vector<double>& positions,
                      double tolerance = 1e-12);
 
+// The forces vanish at `positions` and at the same nodes turned and shifted as a rigid body (a
+// rest state in any orientation).
+void ExpectZeroForceInAnyOrientation(const Term& term, const std::vector<double>& positions,
+                                     double tolerance);
+
 // Positions of `count` nodes drawn uniformly in a box of side `size`.
 std::vector<double> RandomPositions(int count, double size, unsigned seed);
 
