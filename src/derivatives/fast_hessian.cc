@@ -424,14 +424,15 @@ bool FastHessian<FvCellShear>::Evaluate(const FvCellShear& functor, const double
   s.block<3, 3>(3, 6) = half;   //      C
   const Eigen::Matrix<double, 9, 1> g_relative = s.transpose() * stage.gradient;
   FourNodesFromRelative(g_relative, gradient);
-  FourNodesFromRelative(SymmetricCongruence(s, stage.hessian), hessian);
+  const Eigen::Matrix<double, 9, 9> h_relative = SymmetricCongruence(s, stage.hessian);
+  FourNodesFromRelative(h_relative, hessian);
   *energy = stage.energy;
   if (projection) {
     projection->changed = !IsSemidefinite(stage.hessian);
-    FourNodesFromRelative(
-        SymmetricCongruence(
-            s, projection->changed ? stage.StandIn(projection->filter) : stage.hessian),
-        projection->hessian);
+    FourNodesFromRelative(projection->changed
+                              ? SymmetricCongruence(s, stage.StandIn(projection->filter)).eval()
+                              : h_relative,
+                          projection->hessian);
   }
   return true;
 }
