@@ -15,7 +15,8 @@ namespace drape {
 //   u_c = ((E − P) + (C − N))/2,   v_c = ((N − P) + (C − E))/2,
 // the bilinear cell's tangents at its centre, A_c = l_PE l_PN its area at rest. It replaces the
 // shear of the four corner quarters of FvMembrane (Hu/Teng eqs. 9.3–9.6, the angle between a
-// node's two arms) where `finite_volume.cell_shear` asks for it; the quarters keep their stretch.
+// node's two arms) in every whole cell, unless `finite_volume.cell_shear: false` keeps Hu/Teng's
+// corners; the quarters keep their stretch.
 // Why (docs/drape-tester.md, "Where the first-order error comes from"): a fold oblique to the
 // lattice bends each cell about a diagonal, which keeps the cell's four sides (an isometry of its
 // two triangles) but closes the arm angles at the two corners off the fold, by

@@ -100,7 +100,8 @@ TEST_F(DrapeTestBlock, DefaultsAreTheStandardTest) {
   // No mesh.spacing: the spacing the default accuracy needs (the next test).
   EXPECT_TRUE(scene.drape_test->spacing_chosen);
   EXPECT_DOUBLE_EQ(scene.mesh.spacing,
-                   SpacingForDrapeError(kDefaultDrapeAccuracy, *LimperBendingLength(scene)));
+                   SpacingForDrapeError(kDefaultDrapeAccuracy, *LimperBendingLength(scene),
+                                        DrapeErrorPerSpacing(scene)));
   EXPECT_DOUBLE_EQ(scene.mesh.origin.z(), scene.contact.thickness);
   ASSERT_EQ(scene.obstacles.size(), 1u);
   EXPECT_EQ(scene.obstacles[0].kind, "disk");
@@ -174,11 +175,12 @@ TEST_F(DrapeTestBlock, TheAccuracyChoosesTheLattice) {
     const double h = scene.mesh.spacing;
     EXPECT_TRUE(scene.drape_test->spacing_chosen);
     EXPECT_LE(h, kCoarsestChosenSpacing);
-    EXPECT_LE(kDrapeErrorPerSpacing * h / c, accuracy * (1 + 1e-12)) << accuracy;
+    const double k = DrapeErrorPerSpacing(scene);
+    EXPECT_LE(k * h / c, accuracy * (1 + 1e-12)) << accuracy;
     // The largest such spacing of two digits, unless the 1 cm cap holds it.
     const double unit = std::pow(10.0, std::floor(std::log10(h)) - 1.0);
     if (h < kCoarsestChosenSpacing) {
-      EXPECT_GT(kDrapeErrorPerSpacing * (h + unit) / c, accuracy) << accuracy;
+      EXPECT_GT(k * (h + unit) / c, accuracy) << accuracy;
     }
     EXPECT_LE(h, coarser) << accuracy;
     coarser = h;

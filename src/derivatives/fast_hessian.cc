@@ -353,16 +353,15 @@ class GramStage {
 // nodes (12×12, row-major): node P's rows and columns are minus the sums of the others'.
 void FourNodesFromRelative(const Eigen::Matrix<double, 9, 9>& relative, double* out) {
   Eigen::Map<NodeDerivatives<4>::Hessian> h(out);
-  h.setZero();
+  // The sum of the relative Hessian's three block rows: P's row (negated), and by symmetry its
+  // column; P's own block is the sum of that row's three blocks.
+  const Eigen::Matrix<double, 3, 9> row_sum =
+      relative.middleRows<3>(0) + relative.middleRows<3>(3) + relative.middleRows<3>(6);
   h.bottomRightCorner<9, 9>() = relative;
-  for (int node = 0; node < 3; ++node) {
-    const Eigen::Matrix<double, 3, 9> rows = relative.middleRows<3>(3 * node);
-    h.block<3, 9>(0, 3).noalias() -= rows;
-    h.block<9, 3>(3, 0).noalias() -= rows.transpose();
-  }
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) h.block<3, 3>(0, 0) += relative.block<3, 3>(3 * i, 3 * j);
-  }
+  h.block<3, 9>(0, 3) = -row_sum;
+  h.block<9, 3>(3, 0) = -row_sum.transpose();
+  h.block<3, 3>(0, 0) =
+      row_sum.middleCols<3>(0) + row_sum.middleCols<3>(3) + row_sum.middleCols<3>(6);
 }
 
 // A 4-node term's gradient over the relative positions mapped to its nodes.

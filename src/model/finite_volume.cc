@@ -236,14 +236,14 @@ bool InWholeCell(const Lattice& lattice, const Mesh& mesh, int a, int b) {
 // FvCellShear (AddCellShear) and keeps its stretch. The friction's least-squares shift, HG A_q, its
 // energy at a shear angle of 1 rad, keeps the ceres-* residual √(2 (E + shift)) smooth at rest,
 // where E = 0 (as AddBendingFriction's).
-void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, const Lattice& lattice,
-                 const Mesh& mesh, int p, const Neighbours& nb, const double* reference,
-                 Model* model) {
+void AddMembrane(const MembraneRigidities& e, const FiniteVolumeSpec& spec, bool cell_shear,
+                 const Lattice& lattice, const Mesh& mesh, int p, const Neighbours& nb,
+                 const double* reference, Model* model) {
   for (int a : {nb.e, nb.w}) {
     for (int b : {nb.n, nb.s}) {
       if (a < 0 || b < 0) continue;
       const double rest_a = RestDistance(mesh, p, a), rest_b = RestDistance(mesh, p, b);
-      const double g = spec.cell_shear && InWholeCell(lattice, mesh, a, b) ? 0.0 : e.g;
+      const double g = cell_shear && InWholeCell(lattice, mesh, a, b) ? 0.0 : e.g;
       model->terms.push_back(MakeTerm("fv_membrane", {p, a, b},
                                       FvMembrane::Create(e.e1, e.e2, e.e12, g, rest_a, rest_b)));
       if (!(spec.shear_friction > 0.0)) continue;
@@ -325,6 +325,8 @@ void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, c
     rigidities[spec] = PlaneStressRigidities(*spec);
   }
   const Lattice lattice = CheckedLattice(*of_node[0], mesh, *model);
+  // One choice for the whole fabric: a region copies the base material and cannot set it.
+  const bool cell_shear = of_node[0]->cell_shear;
   const int n = static_cast<int>(mesh.nodes.size());
   if ((mesh.nu == 1 || mesh.nv == 1) && mesh.nu * mesh.nv == n) {
     AddStrip(of_node, mesh, model);
@@ -333,11 +335,11 @@ void AddFiniteVolumeTerms(const std::vector<const FiniteVolumeSpec*>& of_node, c
   for (int p = 0; p < n; ++p) {  // a full grid's ids run row by row: p = j*nu + i
     const Neighbours nb = NeighboursOf(lattice, mesh.grid_index[p][0], mesh.grid_index[p][1]);
     AddBending(*of_node[p], mesh, p, nb, friction_reference, model);
-    AddMembrane(rigidities.at(of_node[p]), *of_node[p], lattice, mesh, p, nb, friction_reference,
-                model);
+    AddMembrane(rigidities.at(of_node[p]), *of_node[p], cell_shear, lattice, mesh, p, nb,
+                friction_reference, model);
   }
   AddTwist(of_node, lattice, mesh, model);
-  if (of_node[0]->cell_shear) AddCellShear(of_node, lattice, mesh, model);
+  if (cell_shear) AddCellShear(of_node, lattice, mesh, model);
 }
 
 }  // namespace drape

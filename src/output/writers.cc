@@ -171,6 +171,7 @@ void AddLevelsMembers(const LevelsReport& report,
 std::string MeshRuleJson(const MeshAdvice& advice) {
   return JsonObject({{"spacing_m", JsonNumber(advice.spacing)},
                      {"bending_length_m", JsonNumber(advice.bending_length)},
+                     {"error_per_spacing", JsonNumber(advice.error_per_spacing)},
                      {"expected_drape_coefficient_error", JsonNumber(advice.expected_error)},
                      {"accuracy", JsonNumber(advice.accuracy)},
                      {"spacing_needed_m", JsonNumber(advice.spacing_needed)},

@@ -75,7 +75,8 @@ std::optional<AccuracyOutcome> AccuracyOf(const Scene& scene, const SolveReport&
       if (!level.converged || !level.drape_coefficient || level.edges_through_disk > 0) continue;
       outcome.best_converged = AccuracyOutcome::Level{
           level.spacing, *level.drape_coefficient,
-          ExpectedDrapeError(level.spacing, report.mesh_advice->bending_length)};
+          ExpectedDrapeError(level.spacing, report.mesh_advice->bending_length,
+                             report.mesh_advice->error_per_spacing)};
     }
   }
   return outcome;

@@ -22,12 +22,17 @@ std::optional<double> LimperBendingLength(const Scene& scene) {
   return std::cbrt(rigidity / weight);
 }
 
-double ExpectedDrapeError(double spacing, double bending_length) {
-  return std::min(kDrapeErrorPerSpacing * spacing / bending_length, kMostDrapeError);
+double DrapeErrorPerSpacing(const Scene& scene) {
+  return scene.material.finite_volume.cell_shear ? kCellShearErrorPerSpacing
+                                                 : kCornerShearErrorPerSpacing;
 }
 
-double SpacingForDrapeError(double error, double bending_length) {
-  const double spacing = error * bending_length / kDrapeErrorPerSpacing;
+double ExpectedDrapeError(double spacing, double bending_length, double error_per_spacing) {
+  return std::min(error_per_spacing * spacing / bending_length, kMostDrapeError);
+}
+
+double SpacingForDrapeError(double error, double bending_length, double error_per_spacing) {
+  const double spacing = error * bending_length / error_per_spacing;
   const double unit = std::pow(10.0, std::floor(std::log10(spacing)) - 1.0);
   return std::floor(spacing / unit) * unit;
 }

@@ -39,9 +39,11 @@ std::string Metres(double metres) {
 }
 
 // The circle lattice the loader chooses for `accuracy` (src/scene/drape_mesh_rule.h).
-MeshSpec LatticeForAccuracy(const MeshSpec& mesh, double accuracy, double bending_length) {
-  MeshSpec chosen = mesh;
-  chosen.spacing = std::min(SpacingForDrapeError(accuracy, bending_length), kCoarsestChosenSpacing);
+MeshSpec LatticeForAccuracy(const Scene& scene, double accuracy, double bending_length) {
+  MeshSpec chosen = scene.mesh;
+  chosen.spacing =
+      std::min(SpacingForDrapeError(accuracy, bending_length, DrapeErrorPerSpacing(scene)),
+               kCoarsestChosenSpacing);
   return chosen;
 }
 
@@ -132,14 +134,14 @@ void ChooseDrapeTestSpacing(Scene* scene) {
   const std::optional<double> bending_length = LimperBendingLength(*scene);
   if (!bending_length) return;  // no rule for this fabric: the mesh's own default spacing
   const double accuracy = AskedDrapeAccuracy(*scene);
-  const MeshSpec chosen = LatticeForAccuracy(scene->mesh, accuracy, *bending_length);
+  const MeshSpec chosen = LatticeForAccuracy(*scene, accuracy, *bending_length);
   const double nodes = EstimatedNodes(chosen);
   if (nodes > chosen.max_nodes) {
     // The finest accuracy of two decimals whose lattice is within the limit, if one is.
     std::optional<double> reachable;
     for (int hundredths = static_cast<int>(std::ceil(accuracy * 100.0 - 1e-9));
          hundredths <= 100 * kMostDrapeError; ++hundredths) {
-      const MeshSpec coarser = LatticeForAccuracy(scene->mesh, hundredths / 100.0, *bending_length);
+      const MeshSpec coarser = LatticeForAccuracy(*scene, hundredths / 100.0, *bending_length);
       if (EstimatedNodes(coarser) <= chosen.max_nodes) {
         reachable = hundredths / 100.0;
         break;

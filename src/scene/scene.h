@@ -150,9 +150,10 @@ struct FiniteVolumeSpec {
   // once; N ≥ 1, the incremental form, loads ramped in N equal steps, each a minimisation with the
   // frictions' kinks at the previous step's state (costs/fv_bending_friction_step.h).
   int friction_load_steps = 0;
-  // The in-plane shear taken once per lattice cell, at its centre (costs/fv_cell_shear.h), instead
-  // of at each control volume's corners (Hu/Teng's quarters); the same for the whole fabric.
-  bool cell_shear = false;
+  // The in-plane shear taken once per whole lattice cell, at its centre (costs/fv_cell_shear.h),
+  // or, false, at each control volume's corners (Hu/Teng's quarters); the same for the whole
+  // fabric.
+  bool cell_shear = true;
   std::vector<GivenMeasurement> measured;  // the kes, fast and bending_length keys given
   Location where;
 };
