@@ -24,8 +24,8 @@ solved each variant's rows, from fabrics.csv's drape_version column).
 Run from the repository root after building drape (Release):
     python3 tools/validation.py [--drape build/drape] [--spacings 0.005,0.0026] [--out DIR]
                                 [--dry-run]
---dry-run prints the commands and writes nothing. About 15 minutes on the 2-core development
-machine at the default spacings.
+--dry-run prints the commands and writes nothing. About 35 minutes on the 2-core development
+machine at the default spacings (session 38, sharing it with other runs).
 """
 import argparse
 import csv

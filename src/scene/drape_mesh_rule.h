@@ -18,7 +18,7 @@
 //   4,000–4,400 for M1 and M6, 7,600 for M2), the weight of the lattice's shear against the
 //   bending; a K by that ratio would fit these nine fabrics, but not yet with evidence enough to
 //   narrow anyone's error bar by it.
-// - At the corners (Hu/Teng's, cell_shear: false; session 29 and 38): the tester fabrics 0.30,
+// - At the corners (Hu/Teng's, cell_shear: false; sessions 29 and 38): the tester fabrics 0.30,
 //   0.24, 0.21 (limp, 1 cm to 2.6 mm, against its Richardson limit), 0.19, 0.17, 0.06 (polyester),
 //   0.08, 0.05, 0.04 (cotton); the published fabrics M1–M6 0.31, 0.42, 0.41, 0.27, 0.31, 0.35.
 //   kCornerShearErrorPerSpacing is M2's, the largest.
