@@ -369,6 +369,10 @@ SparseCholesky::SparseCholesky(const FreeHessian& hessian) : hessian_(hessian) {
             static_cast<int*>(matrix_->p));
   std::copy(hessian.rows().begin(), hessian.rows().end(), static_cast<int*>(matrix_->i));
   std::fill_n(static_cast<double*>(matrix_->x), hessian.num_nonzeros(), 0.0);
+  // Both orderings, the cheaper kept (src/numerics/sparse_hessian.h).
+  common_.nmethods = 2;
+  common_.method[0].ordering = CHOLMOD_AMD;
+  common_.method[1].ordering = CHOLMOD_METIS;
   factor_ = cholmod_analyze(matrix_, &common_);
   rhs_ = cholmod_zeros(n, 1, CHOLMOD_REAL, &common_);
   if (!factor_ || !rhs_) ReleaseAndThrowOutOfMemory();

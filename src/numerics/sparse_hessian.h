@@ -22,7 +22,12 @@
 //
 // SparseCholesky factorises a matrix of that pattern with CHOLMOD's supernodal Cholesky: the
 // symbolic analysis (fill-reducing ordering, supernodes) once, the numeric factorisation per
-// call. Used by the newton solver and by the stability certificate.
+// call. Used by the newton solver and by the stability certificate. The analysis orders the
+// pattern both by AMD and by METIS's nested dissection and keeps the one whose factorisation
+// takes fewer flops. CHOLMOD's default tries METIS only where AMD's fill is large (flops over
+// nnz(L) above 500), which the drape lattices' stay just below (439 at 41,825 nodes), though
+// nested dissection, which suits a 2-D lattice, halves the flops there (7.8e9 → 4.1e9, nnz(L)
+// 17.7M → 14.2M) and takes a third off them at 10,445 nodes (docs/benchmarks.md, session 39).
 #ifndef DRAPE_SRC_NUMERICS_SPARSE_HESSIAN_H_
 #define DRAPE_SRC_NUMERICS_SPARSE_HESSIAN_H_
 
