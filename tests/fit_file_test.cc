@@ -120,12 +120,12 @@ TEST(FitFileTest, WarnsOfAMeshWhoseErrorExceedsTheMeasurementsSigma) {
                          "mesh of "),
             std::string::npos)
       << warning;
-  EXPECT_NE(warning.find("about 0.15 (mesh rule for a 1.9 cm bending length"), std::string::npos)
+  EXPECT_NE(warning.find("about 0.11 (mesh rule for a 1.9 cm bending length"), std::string::npos)
       << warning;
   EXPECT_NE(warning.find("times the measurement's sigma 0.02"), std::string::npos) << warning;
   EXPECT_TRUE(
       LoadFitFile(WriteFitFolder("mesh_covered", fit_text("0.2")), at_1cm).warnings.empty());
-  // The shipped cotton's own 3.3 mm expects 0.049: a sigma of 0.05 covers it, not 1 cm (0.15).
+  // The shipped cotton's own 4.7 mm expects 0.050: a sigma of 0.05 covers it, not 1 cm (0.11).
   EXPECT_TRUE(LoadFitFile(WriteFitFolder("mesh_fine", fit_text("0.05"))).warnings.empty());
   EXPECT_EQ(LoadFitFile(WriteFitFolder("mesh_fine_1cm", fit_text("0.05")), at_1cm).warnings.size(),
             1u);

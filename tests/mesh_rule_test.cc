@@ -30,10 +30,10 @@ TEST(MeshRule, AdviceForTheCottonFollowsFromItsBendingLength) {
   EXPECT_NEAR(advice->spacing, 0.01, 1e-15);
   EXPECT_EQ(advice->error_per_spacing, kCellShearErrorPerSpacing);  // the default cell_shear
   EXPECT_NEAR(advice->expected_error, kCellShearErrorPerSpacing * 0.01 / c, 1e-12);
-  const double needed = kDefaultDrapeAccuracy * c / kCellShearErrorPerSpacing;  // 3.35 mm
+  const double needed = kDefaultDrapeAccuracy * c / kCellShearErrorPerSpacing;  // 4.70 mm
   EXPECT_LE(advice->spacing_needed, needed);
   EXPECT_GE(advice->spacing_needed, 0.9 * needed);
-  EXPECT_NEAR(advice->spacing_needed, 0.0033, 1e-15);
+  EXPECT_NEAR(advice->spacing_needed, 0.0047, 1e-15);
   EXPECT_TRUE(advice->coarse);
   const std::string warning = CoarseMeshWarning(*advice);
   EXPECT_NE(warning.find("mesh.spacing 1 cm is coarse"), std::string::npos) << warning;
