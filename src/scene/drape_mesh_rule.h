@@ -13,7 +13,7 @@
 //   limp fabric (c = 9.6 mm) 0.10, 0.01, 0.02, 0.01, the cotton (18.8 mm) 0.05, 0.05, 0.08, 0.07,
 //   the light polyester (13 mm) 0.06, 0.01, 0.10, 0.12 (from 5 mm down, the fold pattern's
 //   scatter, |e| ≤ 0.026); the published fabrics of docs/validation.md (session 39) M1 0.13, 0.11,
-//   0.09, 0.03, M2 0.19, 0.16, 0.16, 0.05, M3 0.14, 0.09, 0.12, 0.02, M4 0.09, 0.03, 0.04, 0.02, M5
+//   0.09, 0.03, M2 0.19, 0.16, 0.16, 0.05, M3 0.14, 0.08, 0.12, 0.02, M4 0.09, 0.03, 0.04, 0.02, M5
 //   0.08, 0.02, 0.03, 0.00, M6 0.11, 0.09, 0.03, 0.01 (1 cm, 5, 5.2 and 2.6 mm).
 //   kCellShearErrorPerSpacing is the largest, M2's at 1 cm (h/c = 1.35), rounded up. The published
 //   fabrics' DCs fall faster than first order from 5 to 2.6 mm (the error of M1, M2, M3 and M6 by 6
