@@ -25,9 +25,10 @@
 // call. Used by the newton solver and by the stability certificate. The analysis orders the
 // pattern both by AMD and by METIS's nested dissection and keeps the one whose factorisation
 // takes fewer flops. CHOLMOD's default tries METIS only where AMD's fill is large (flops over
-// nnz(L) above 500), which the drape lattices' stay just below (439 at 41,825 nodes), though
-// nested dissection, which suits a 2-D lattice, halves the flops there (7.8e9 → 4.1e9, nnz(L)
-// 17.7M → 14.2M) and takes a third off them at 10,445 nodes (docs/benchmarks.md, session 39).
+// nnz(L) of 500 or more); the drape lattices stay just below that (439 at 41,825 nodes), yet
+// nested dissection, which suits a 2-D lattice, halves their flops there (7.8e9 → 4.1e9, nnz(L)
+// 17.7M → 14.2M) and takes a third off them at 10,445 nodes (docs/benchmarks.md, "What limits
+// newton").
 #ifndef DRAPE_SRC_NUMERICS_SPARSE_HESSIAN_H_
 #define DRAPE_SRC_NUMERICS_SPARSE_HESSIAN_H_
 
