@@ -270,7 +270,8 @@ py::dict ResultFigures(const PySolved& solved) {
   const RunResult& result = solved.report.result;
   py::dict figures;
   figures["converged"] = result.converged;
-  figures["stable"] = result.converged && result.stability.computed && result.stability.stable;
+  figures["stable"] = result.converged && result.stability.computed && result.stability.stable &&
+                      !result.PassesThrough();
   figures["state"] = StateText(result);
   figures["termination"] = result.summary.termination;
   figures["iterations"] = result.summary.iterations;

@@ -121,9 +121,9 @@ TEST(OutputKinds, EveryFileAWriterWritesIsCleanedUp) {
 TEST(OutputKinds, TheDefaultsAreTheRowsSoMarked) {
   EXPECT_EQ(OutputSpec{}.write,
             (std::vector<std::string>{"summary", "nodes", "history", "vtk", "obj"}));
-  EXPECT_EQ(
-      DefaultOutputWrite(true),
-      (std::vector<std::string>{"summary", "nodes", "history", "vtk", "obj", "profile", "shadow"}));
+  EXPECT_EQ(DefaultOutputWrite(true),
+            (std::vector<std::string>{"summary", "nodes", "history", "vtk", "obj", "gltf",
+                                      "profile", "shadow"}));
 }
 
 TEST(OutputKinds, TheReferenceTableIsTheRegistry) {

@@ -1,7 +1,7 @@
 // StateText: what drape solve's result line and drape sweep's rows say of the final state. A run
 // that stopped short of the tolerance (an iteration or time limit) is not an equilibrium, whatever
 // its Hessian: it used to be called a "stable minimum" there. Nor is a state with the fabric
-// through a support disk.
+// through a support disk or through itself.
 #include "src/run/state_text.h"
 
 #include <gtest/gtest.h>
@@ -54,6 +54,29 @@ TEST(StateText, FabricThroughASupportDiskIsNeverAStableMinimum) {
 // the rim's radius): the state is what its certificate says.
 TEST(StateText, FabricHangingUnderADiskRoundItsRimIsNoFault) {
   EXPECT_EQ(StateText(ThroughDisk(true, 80, 0, 0.0)), "stable minimum");
+}
+
+// A state with the fabric through itself (a triangle's side across another triangle:
+// src/model/self_intersection.h) is no drape either, whatever its Hessian; the message names the
+// first crossing, and both faults are said where both are there.
+TEST(StateText, FabricThroughItselfIsNeverAStableMinimum) {
+  RunResult result = Result(true, true, 0.25);
+  result.self_intersections.checked = true;
+  result.self_intersections.crossings = 3;
+  result.self_intersections.side = {12, 13};
+  result.self_intersections.triangle = {40, 41, 52};
+  EXPECT_TRUE(result.PassesThrough());
+  EXPECT_EQ(StateText(result),
+            "fabric through itself (3 crossings of a triangle's side and a triangle; the first: "
+            "side 12–13 through triangle 40 41 52)");
+  result.self_intersections.crossings = 1;
+  result.contact.edges_through_disk = 2;
+  result.contact.under_disk_inside = 0.001;
+  result.converged = false;
+  EXPECT_EQ(StateText(result),
+            "fabric through the support disk (2 edges through it, up to 1 mm inside its rim); "
+            "fabric through itself (1 crossing of a triangle's side and a triangle; side 12–13 "
+            "through triangle 40 41 52), not an equilibrium");
 }
 
 TEST(StateText, NoVerdictWhereTheStateIsUnsoundOrStabilityWasNotComputed) {

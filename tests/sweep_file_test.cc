@@ -50,7 +50,7 @@ TEST(SweepFile, GridTimesZipTimesRepeatLastAxisFastest) {
             (std::vector<std::string>{
                 "material.finite_volume.kes.W=12", "loads.gravity=[0, 0, -9.81]",
                 "material.finite_volume.kes.B_warp=0.06", "material.finite_volume.kes.B_weft=0.04",
-                "mesh.spacing=0.05", "output.write=[summary,nodes,vtk,obj]"}));
+                "mesh.spacing=0.05", "output.write=[summary,nodes,vtk,obj,gltf]"}));
   // Chains along W: 3 tasks each, one per (gravity, zip, repeat): 8 chains.
   ASSERT_EQ(spec.chains.size(), 8u);
   std::set<int> seen;

@@ -462,6 +462,10 @@ struct AssemblyProbe {
   // CPU s of the terms' local derivatives alone, one thread: EnergyHessian (the fast path where a
   // functor has one) and ReferenceHessian (nested Jets over every whole functor, as before).
   double derivatives_cpu = 0, reference_cpu = 0;
+  // Wall s of the certificate's self-intersection check (src/model/self_intersection.h) at the
+  // probe state, and the crossings it found there.
+  double self_intersection = 0;
+  int self_crossings = 0;
 };
 
 double CpuSeconds(clockid_t clock) {
@@ -512,8 +516,12 @@ AssemblyProbe ProbeAssembly(const BenchScene& scene, int repeats) {
   FreeHessian::Assembly assembly;
   std::vector<double> gradient;
   std::vector<double> assembly_times, factorization_times, assembly_cpu, factorization_cpu;
-  std::vector<double> derivatives_cpu, reference_cpu, exact_only_cpu;
+  std::vector<double> derivatives_cpu, reference_cpu, exact_only_cpu, self_intersection;
   for (int r = 0; r < repeats; ++r) {
+    const auto check_start = std::chrono::steady_clock::now();
+    probe.self_crossings = FindSelfIntersections(model, model.positions).crossings;
+    self_intersection.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count());
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
     if (!hessian.Assemble(model.positions.data(), true, &assembly, &gradient)) {
@@ -546,6 +554,7 @@ AssemblyProbe ProbeAssembly(const BenchScene& scene, int repeats) {
   probe.exact_only_cpu = Median(exact_only_cpu);
   probe.derivatives_cpu = Median(derivatives_cpu);
   probe.reference_cpu = Median(reference_cpu);
+  probe.self_intersection = Median(self_intersection);
   return probe;
 }
 
@@ -663,19 +672,23 @@ int ScenesMain(int argc, char** argv) {
       "| scene | nodes | terms | assembly wall s | factorisation wall s | assembly ÷ "
       "factorisation, wall | same, CPU | assembly CPU µs per node | without H₊: CPU µs per node "
       "| ÷ factorisation, CPU | local derivatives CPU µs per node: this path | nested Jets "
-      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "| self-intersection check wall s (crossings) | ÷ factorisation, wall "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& scene : scenes) {
     const AssemblyProbe probe = ProbeAssemblyInChild(scene, repeats);
     if (probe.nodes == 0 || !(probe.factorization > 0.0)) {
-      std::printf("| %s | failed | | | | | | | | | | |\n", scene.name.c_str());
+      std::printf("| %s | failed | | | | | | | | | | | | |\n", scene.name.c_str());
       continue;
     }
-    std::printf("| %s | %d | %d | %.4f | %.4f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n",
-                scene.name.c_str(), probe.nodes, probe.terms, probe.assembly, probe.factorization,
-                probe.assembly / probe.factorization, probe.assembly_cpu / probe.factorization_cpu,
-                1e6 * probe.assembly_cpu / probe.nodes, 1e6 * probe.exact_only_cpu / probe.nodes,
-                probe.exact_only_cpu / probe.factorization_cpu,
-                1e6 * probe.derivatives_cpu / probe.nodes, 1e6 * probe.reference_cpu / probe.nodes);
+    std::printf(
+        "| %s | %d | %d | %.4f | %.4f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f "
+        "| %.4f (%d) | %.3f |\n",
+        scene.name.c_str(), probe.nodes, probe.terms, probe.assembly, probe.factorization,
+        probe.assembly / probe.factorization, probe.assembly_cpu / probe.factorization_cpu,
+        1e6 * probe.assembly_cpu / probe.nodes, 1e6 * probe.exact_only_cpu / probe.nodes,
+        probe.exact_only_cpu / probe.factorization_cpu, 1e6 * probe.derivatives_cpu / probe.nodes,
+        1e6 * probe.reference_cpu / probe.nodes, probe.self_intersection, probe.self_crossings,
+        probe.self_intersection / probe.factorization);
     std::fflush(stdout);
   }
   if (probe_only) return 0;
@@ -947,6 +960,7 @@ void WithNoise(const std::vector<double>& answer, double noise, Model* start) {
 const char* Verdict(const RunResult& result) {
   if (!result.converged) return "no: not converged";
   if (result.contact.ThroughDisk()) return "no: through a support disc";
+  if (result.self_intersections.Any()) return "no: through itself";
   return result.Saddle() ? "no: a saddle" : "yes";
 }
 

@@ -245,7 +245,8 @@ class Result:
 
     @property
     def stable(self):
-        """Whether the final state is a stable minimum (the free Hessian positive definite)."""
+        """Whether the final state is a stable minimum: converged, the free Hessian positive
+        definite, and the fabric through neither a support disk nor itself."""
         return self._figures["stable"]
 
     @property

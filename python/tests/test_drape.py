@@ -155,6 +155,32 @@ def test_a_scene_from_a_dict_is_the_files():
     assert np.array_equal(from_dict.positions, from_file.positions)
 
 
+def test_a_fabric_through_itself_is_no_stable_minimum(tmp_path):
+    """Two 3 x 3 squares of one mesh file held by their borders, one standing across the other:
+    the solve converges with the fabric through itself, which is no stable minimum."""
+    vertices = [(0.5 * i, 0.5 * j, 0.0) for i in range(3) for j in range(3)]
+    vertices += [(0.7, 0.1 + 0.25 * i, -0.5 + 0.5 * j) for i in range(3) for j in range(3)]
+    faces = []
+    for base in (1, 10):  # OBJ counts from 1
+        for i in range(2):
+            for j in range(2):
+                a = base + 3 * i + j
+                faces += [(a, a + 3, a + 4), (a, a + 4, a + 1)]
+    path = tmp_path / "crossed.obj"
+    path.write_text("".join("v %g %g %g\n" % v for v in vertices) +
+                    "".join("f %d %d %d\n" % f for f in faces))
+    borders = [k for k in range(18) if k not in (4, 13)]
+    result = drape.solve(drape.from_dict({
+        "name": "crossed", "mesh": {"kind": "file", "path": str(path)},
+        "material": {"model": "springs", "density": 0.2, "springs": {"structural": 1000}},
+        "fixed": [{"nodes": {"ids": borders}}], "loads": {"gravity": [0, 0, -9.81]},
+        "solver": {"method": "newton", "tolerance": 1.0e-9}}))
+    assert result.converged
+    assert not result.stable
+    assert result.state.startswith("fabric through itself (")
+    assert result.summary["self_intersections"]["crossings"] > 0
+
+
 def test_check_is_the_scene_as_data():
     data = drape.load(config("fv/drape_tester_cotton_30.yaml"), set={"mesh.spacing": 0.01}).check()
     assert data["nodes"] == 709 and data["model"] == "finite_volume"

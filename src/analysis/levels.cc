@@ -308,7 +308,7 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
     spacing.push_back(level.spacing);
     energy.push_back(level.energy);
     all_converged = all_converged && level.converged;
-    any_through_disk = any_through_disk || level.edges_through_disk > 0;
+    any_through_disk = any_through_disk || level.PassesThrough();
     all_dc = all_dc && level.drape_coefficient.has_value();
     if (level.drape_coefficient) dc.push_back(*level.drape_coefficient);
     if (level.folds) folds.push_back(*level.folds);
@@ -330,7 +330,9 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
     } else if (!all_converged) {
       e.reason = "a level did not converge";
     } else if (any_through_disk) {
-      e.reason = "the fabric passes through the support disk on a level (edges_through_disk)";
+      e.reason =
+          "the fabric passes through the support disk or through itself on a level "
+          "(edges_through_disk, self_crossings)";
     } else if (folds_differ) {
       e.reason = "the fold count differs between the finest levels (" + Joined(last_folds) +
                  "): different fold patterns, not one converging answer";
@@ -538,7 +540,7 @@ std::optional<DrapeErrorBar> DrapeErrorOf(const std::vector<LevelRecord>& levels
   if (n < 2) return std::nullopt;
   const LevelRecord &fine = levels[n - 1], &coarser = levels[n - 2];
   for (const LevelRecord* level : {&fine, &coarser}) {
-    if (!level->drape_coefficient || !level->converged || level->edges_through_disk > 0) {
+    if (!level->drape_coefficient || !level->converged || level->PassesThrough()) {
       return std::nullopt;
     }
   }

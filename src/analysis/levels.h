@@ -37,11 +37,16 @@ struct LevelRecord {
   // The fabric's edges through a support disk (ContactReport::edges_through_disk): the fabric
   // passed through it. Such an answer is not used to start the next level.
   int edges_through_disk = 0;
-  // The coarser level's answer passed through a disk, so this level started flat.
+  // Crossings of a triangle's side and a triangle (SelfIntersections::crossings): the fabric
+  // passed through itself. Neither is such an answer used to start the next level.
+  int self_crossings = 0;
+  // The coarser level's answer passed through a disk or itself, so this level started flat.
   bool started_flat = false;
-  // The interpolated start led through a disk, so the level was solved again from the flat
-  // start (iterations and time count both solves).
+  // The interpolated start led through a disk or through itself, so the level was solved again
+  // from the flat start (iterations and time count both solves).
   bool restarted_flat = false;
+  // The level's answer is no drape: the fabric passes through a disk or through itself.
+  bool PassesThrough() const { return edges_through_disk > 0 || self_crossings > 0; }
 };
 
 // q(h) = q₀ + C h^p fitted through the three finest levels.

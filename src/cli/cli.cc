@@ -135,10 +135,10 @@ std::string ResultLine(const RunResult& result, const std::string& directory) {
 }
 
 // 0 converged to a stable minimum (or stability not computed), 3 converged to a saddle or with
-// the fabric through a support disk, 1 not converged.
+// the fabric through a support disk or through itself, 1 not converged.
 int ExitStatus(const RunResult& result) {
   if (!result.converged) return kExitNotConverged;
-  return result.Saddle() || result.contact.ThroughDisk() ? kExitSaddle : kExitConverged;
+  return result.Saddle() || result.PassesThrough() ? kExitSaddle : kExitConverged;
 }
 
 // "drape coefficient 0.622 ± 0.042 (change from the 5.2 mm level), 8 folds on both finest levels".

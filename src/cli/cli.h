@@ -17,7 +17,7 @@ enum ExitStatus {
   kExitNotConverged = 1,  // ran, results written, but the tolerance was not reached
   kExitBadInput = 2,      // bad scene, bad usage, or results that could not be written
   kExitSaddle = 3,        // converged, results written, but not a stable minimum (a saddle, or
-                          // the fabric through a support disk)
+                          // the fabric through a support disk or through itself)
 };
 
 struct CommandOptions {

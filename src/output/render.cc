@@ -567,6 +567,19 @@ std::array<int, 2> LegendMarkPixel(int index, LegendMark mark, int width) {
   return {x + (mark == LegendMark::kHollowSquare ? 3 : 7), y - 5};
 }
 
+std::vector<std::vector<Eigen::Vector3d>> ObstaclePolygons(const Scene& scene, const Model& model) {
+  Box3 fabric;
+  for (int k = 0; k < model.num_nodes; ++k) fabric.Add(Node(model, k));
+  std::vector<Primitive> obstacles;
+  const double floor_z = FloorHeight(scene.obstacles, fabric);
+  AddObstacles(scene.obstacles, fabric, std::isnan(floor_z) ? fabric.min.z() : floor_z, &obstacles);
+  std::vector<std::vector<Eigen::Vector3d>> polygons;
+  for (const Primitive& primitive : obstacles) {
+    if (primitive.points.size() >= 3) polygons.push_back(primitive.points);
+  }
+  return polygons;
+}
+
 void DrawDrapeView(const Scene& scene, const Model& model, std::ostream& png,
                    const DrapeViewOptions& options) {
   assert(model.num_nodes > 0);

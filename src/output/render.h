@@ -69,6 +69,11 @@ struct DrapeViewOptions {
 void DrawDrapeView(const Scene& scene, const Model& model, std::ostream& png,
                    const DrapeViewOptions& options = {});
 
+// The obstacles' surfaces as drape.png draws them (src/model/obstacle_kinds.h's parts: spheres,
+// cylinders and boxes as facets, a plane as a patch around the fabric at its current positions,
+// a disk as a flat cylinder), each a planar polygon whose corners go round it in order, m.
+std::vector<std::vector<Eigen::Vector3d>> ObstaclePolygons(const Scene& scene, const Model& model);
+
 // The top view of a drape (x to the right, y up, seen from above): the specimen's flat outline
 // (dashed), the support disc (filled grey; without one, the fixed nodes as a pin), the shadow
 // (the union of the projected triangles, translucent blue) with its outline r(θ), the fold crests

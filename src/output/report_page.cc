@@ -99,6 +99,26 @@ ReportBlock Block(ReportBlock::Kind kind, const std::string& text) {
   return block;
 }
 
+// A 3D view: three.js's scripts before the page's first view (or, where they cannot be read, the
+// reason in the view's place, with links to the files), then the view and its caption.
+void WriteHtmlView(const ReportBlock& block, const std::filesystem::path& folder, int index,
+                   std::string* scripts_missing, std::ostream& out) {
+  if (index == 0) out << ViewerScripts(scripts_missing);
+  out << "<figure style=\"display:block\">";
+  if (scripts_missing->empty()) {
+    out << ViewerHtml(block.shapes, folder, index);
+  } else {
+    std::string links;
+    for (const ViewerShape& shape : block.shapes) {
+      links += " " + ReportLink(shape.label, shape.file);
+    }
+    out << "<p>"
+        << Escaped("3D view not drawn: " + *scripts_missing + ". The shapes:" + links, true)
+        << "</p>";
+  }
+  out << "<figcaption>" << Escaped(block.text, true) << "</figcaption></figure>\n";
+}
+
 }  // namespace
 
 ReportBlock HeadingBlock(const std::string& text) {
@@ -118,6 +138,11 @@ ReportBlock ImageBlock(const std::string& path, const std::string& caption) {
 ReportBlock ChartBlock(const std::string& svg, const std::string& caption) {
   ReportBlock block = Block(ReportBlock::Kind::kChart, caption);
   block.svg = svg;
+  return block;
+}
+ReportBlock View3dBlock(std::vector<ViewerShape> shapes, const std::string& caption) {
+  ReportBlock block = Block(ReportBlock::Kind::kView3d, caption);
+  block.shapes = std::move(shapes);
   return block;
 }
 std::string ReportLink(const std::string& text, const std::string& target) {
@@ -152,6 +177,14 @@ void WriteMarkdownReport(const std::vector<ReportBlock>& blocks, std::ostream& o
       case ReportBlock::Kind::kTable:
         WriteMarkdownTable(block.rows, out);
         break;
+      case ReportBlock::Kind::kView3d:
+        out << block.text << " (the 3D view is in report.html; each file opens in Blender or any "
+            << "glTF viewer):";
+        for (const ViewerShape& shape : block.shapes) {
+          out << ' ' << ReportLink(shape.label, shape.file);
+        }
+        out << "\n\n";
+        break;
     }
   }
 }
@@ -171,6 +204,8 @@ void WriteHtmlReport(const std::vector<ReportBlock>& blocks, const std::filesyst
          "6px}td{text-align:right}td:first-child,td:last-child{text-align:left}img{max-width:100%"
          "}figure{display:inline-block;margin:0.5em;vertical-align:top}</style></head><body>\n";
   bool first_heading = true;
+  int views = 0;
+  std::string scripts_missing;
   for (const ReportBlock& block : blocks) {
     switch (block.kind) {
       case ReportBlock::Kind::kHeading:
@@ -193,6 +228,9 @@ void WriteHtmlReport(const std::vector<ReportBlock>& blocks, const std::filesyst
         break;
       case ReportBlock::Kind::kTable:
         WriteHtmlTable(block, out);
+        break;
+      case ReportBlock::Kind::kView3d:
+        WriteHtmlView(block, folder, views++, &scripts_missing, out);
         break;
     }
   }

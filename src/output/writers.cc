@@ -23,10 +23,12 @@
 #include "src/analysis/mesh_rule.h"
 #include "src/model/contact.h"
 #include "src/output/atomic_file.h"
+#include "src/output/gltf.h"
 #include "src/output/json.h"
 #include "src/output/render.h"
 #include "src/output/result_folder.h"
 #include "src/output/scene_yaml.h"
+#include "src/output/surface_fields.h"
 #include "src/run/state_text.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
@@ -112,6 +114,24 @@ void AddContactMembers(const Scene& scene, const RunResult& result,
                  1));
 }
 
+// summary.json's `self_intersections`: whether the fabric's surface was tested (its positions
+// finite), how many triangles, how many crossings of a triangle's side and a triangle, and the
+// first of them (src/model/self_intersection.h).
+std::string SelfIntersectionsJson(const SelfIntersections& found) {
+  std::vector<std::pair<std::string, std::string>> fields = {
+      {"checked", JsonBool(found.checked)},
+      {"triangles", std::to_string(found.triangles)},
+      {"crossings", std::to_string(found.crossings)}};
+  if (found.Any()) {
+    fields.emplace_back("first_side",
+                        JsonList({std::to_string(found.side[0]), std::to_string(found.side[1])}));
+    fields.emplace_back("first_triangle", JsonList({std::to_string(found.triangle[0]),
+                                                    std::to_string(found.triangle[1]),
+                                                    std::to_string(found.triangle[2])}));
+  }
+  return JsonObject(fields, 1);
+}
+
 // summary.json's `levels` (one object per level, coarsest first) and `extrapolation` (per
 // quantity: value, error_estimate, observed_order, or available: false with the reason).
 void AddLevelsMembers(const LevelsReport& report,
@@ -130,6 +150,7 @@ void AddLevelsMembers(const LevelsReport& report,
          level.drape_coefficient ? JsonNumber(*level.drape_coefficient) : "null"},
         {"folds", level.folds ? std::to_string(*level.folds) : "null"},
         {"edges_through_disk", std::to_string(level.edges_through_disk)},
+        {"self_crossings", std::to_string(level.self_crossings)},
         {"started_flat", JsonBool(level.started_flat)},
         {"restarted_flat", JsonBool(level.restarted_flat)}};
     levels.push_back(JsonObject(fields, 2));
@@ -305,6 +326,7 @@ void WriteSummary(const Scene& scene, const Model& model, const SolveReport& rep
   if (report.drape) AddDrapeMembers(*report.drape, &members);
   if (report.mesh_advice) members.emplace_back("mesh_rule", MeshRuleJson(*report.mesh_advice));
   AddContactMembers(scene, result, &members);
+  members.emplace_back("self_intersections", SelfIntersectionsJson(result.self_intersections));
   members.emplace_back("tolerance", JsonNumber(scene.solver.tolerance));
   members.emplace_back("statistics",
                        JsonMap(summary.statistics, 1, [](double v) { return JsonNumber(v); }));
@@ -578,46 +600,6 @@ void WriteVtk(const Scene& scene, const Model& model, const RunResult& result,
   WriteCellScalars("shear_angle", yarns.shear_angle, out);
 }
 
-// Area-weighted vertex normals of the surface at the solved positions (zero where no triangle).
-std::vector<Eigen::Vector3d> VertexNormals(const Model& model) {
-  std::vector<Eigen::Vector3d> normals(model.num_nodes, Eigen::Vector3d::Zero());
-  for (const auto& t : model.triangles) {
-    const Eigen::Vector3d a = model.position(t[0]), b = model.position(t[1]),
-                          c = model.position(t[2]);
-    const Eigen::Vector3d n = (b - a).cross(c - a);  // twice the area, along the normal
-    for (int v : t) normals[v] += n;
-  }
-  for (auto& n : normals) {
-    if (n.norm() > 0.0) n.normalize();
-  }
-  return normals;
-}
-
-// The flat pattern as texture coordinates: the start positions on their two widest axes, scaled
-// by the larger extent into [0, 1] (the aspect ratio kept).
-std::vector<std::array<double, 2>> PatternCoordinates(const Model& model) {
-  const bool known = model.initial.size() == model.positions.size();
-  const std::vector<double>& start = known ? model.initial : model.positions;
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(INFINITY), high = -low;
-  for (int node = 0; node < model.num_nodes; ++node) {
-    const Eigen::Vector3d p = NodeAt(start, node);
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  const Eigen::Vector3d extent = high - low;
-  int narrowest = 0;
-  extent.minCoeff(&narrowest);
-  const int u = narrowest == 0 ? 1 : 0, v = narrowest == 2 ? 1 : 2;
-  const double scale = std::max({extent[u], extent[v], 1e-300});
-  std::vector<std::array<double, 2>> uv;
-  uv.reserve(model.num_nodes);
-  for (int node = 0; node < model.num_nodes; ++node) {
-    const auto p = NodeAt(start, node);
-    uv.push_back({(p[u] - low[u]) / scale, (p[v] - low[v]) / scale});
-  }
-  return uv;
-}
-
 // A vector in the OBJ's axes: as solved for `up` "z"; for "y" a quarter turn about x,
 // (x, y, z) → (x, z, −y), so that drape's +z is the file's +y (a rotation: right-handed, and
 // the normals turn with the positions).
@@ -807,6 +789,12 @@ const std::vector<OutputFileWriter>& OutputFileWriters() {
        nullptr,
        [](const OutputContext& c, std::ostream& out) {
          WriteObj(c.scene, c.model, c.provenance, out);
+       }},
+      {"drape.glb",
+       {Kind::kGltf},
+       [](const OutputContext& c) { return c.model.num_nodes > 0; },
+       [](const OutputContext& c, std::ostream& out) {
+         WriteGlb(c.scene, c.model, c.report, c.provenance, out);
        }},
       {"profile.csv",
        {Kind::kProfile},

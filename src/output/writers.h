@@ -1,8 +1,8 @@
 // Result files: summary.json, nodes.csv, history.csv, kinetic_<method>.csv, mesh.vtk, mesh.obj,
-// profile.csv, drape.png, shadow.png (the pictures drawn by src/output/render.h), scene.yaml: the
-// files of the output kinds of src/scene/output_kinds.h, each written by its row of
-// OutputFileWriters(). Each is written to a temporary name in the output folder and renamed, so
-// no half-written file is ever left.
+// drape.glb (src/output/gltf.h), profile.csv, drape.png, shadow.png (the pictures drawn by
+// src/output/render.h), scene.yaml: the files of the output kinds of src/scene/output_kinds.h, each
+// written by its row of OutputFileWriters(). Each is written to a temporary name in the output
+// folder and renamed, so no half-written file is ever left.
 #ifndef DRAPE_SRC_OUTPUT_WRITERS_H_
 #define DRAPE_SRC_OUTPUT_WRITERS_H_
 

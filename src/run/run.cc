@@ -230,6 +230,7 @@ RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
   ReturnToLastFinite(scene, method, last, model, &result);
   result.contact = MeasureContact(scene.obstacles, scene.contact, model, model.positions.data(),
                                   result.certificate.contact_forces);
+  result.self_intersections = FindSelfIntersections(model, model.positions);
   if (has_free && !workspace) workspace = std::make_unique<HessianWorkspace>(model);
   FreeHessian* hessian = workspace ? &workspace->hessian : nullptr;
   result.residual_floor = RelativeResidualFloor(model, model.positions.data(), hessian);

@@ -10,6 +10,7 @@
 #include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/model.h"
+#include "src/model/self_intersection.h"
 #include "src/numerics/round_off_floor.h"
 #include "src/numerics/stability.h"
 #include "src/scene/scene.h"
@@ -22,7 +23,8 @@ struct RunResult {
   Certificate certificate;  // recomputed at the final positions
   Stability stability;      // stable = false whenever certificate.unsound says why
   ContactReport contact;    // the penetration into the obstacles' clearance (with obstacles)
-  bool converged = false;   // the solver's claim, confirmed by the certificate
+  SelfIntersections self_intersections;  // where the fabric crosses itself at the final positions
+  bool converged = false;                // the solver's claim, confirmed by the certificate
   // The relative residual's round-off floor at the final positions (src/numerics/round_off_floor.h)
   // and whether the solve stopped there above the tolerance (then converged: the tolerance is
   // below what double precision can certify).
@@ -33,6 +35,10 @@ struct RunResult {
   bool non_finite = false;
   // Converged, but not to a stable minimum (a saddle: stability.min_eigenvalue < 0).
   bool Saddle() const { return converged && stability.computed && !stability.stable; }
+  // The final state is no drape at all, whatever its forces: the fabric passes through a support
+  // disk or through itself. Such a state is never a stable minimum (exit status 3) and never
+  // counted among a lab's drops or fabrics.
+  bool PassesThrough() const { return contact.ThroughDisk() || self_intersections.Any(); }
 };
 
 // Solves with scene.solver (method, tolerance, limits, method options). `on_iteration` may be

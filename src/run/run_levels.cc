@@ -26,14 +26,14 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     Model coarse;
     if (!finest) coarse = BuildModel(scenes[k]);
     Model& current = finest ? model : coarse;
-    // The coarser answer starts this level unless it passed through a disk.
+    // The coarser answer starts this level unless it passed through a disk or through itself.
     const bool interpolated =
-        start == LevelStart::kFromCoarser && k > 0 && report->levels.back().edges_through_disk == 0;
+        start == LevelStart::kFromCoarser && k > 0 && !report->levels.back().PassesThrough();
     LevelRecord record;
     record.started_flat = k > 0 && !interpolated;
     if (interpolated) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
     result = RunSolve(scenes[k], current, method, on_iteration);
-    if (interpolated && result.contact.ThroughDisk()) {
+    if (interpolated && result.PassesThrough()) {
       // The interpolated start led the fabric through a support disk: solve from the flat start.
       record.restarted_flat = true;
       record.iterations = result.summary.iterations;
@@ -49,6 +49,7 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     record.converged = result.converged;
     record.stable = result.stability.computed && result.stability.stable;
     record.edges_through_disk = result.contact.edges_through_disk;
+    record.self_crossings = result.self_intersections.crossings;
     if (HasDrapeCoefficient(scenes[k], current)) {
       const DrapeAnalysis drape = AnalyseDrape(scenes[k], current);
       if (drape.disc_radius > 0.0) record.drape_coefficient = drape.coefficient.cusick;

@@ -72,7 +72,7 @@ std::optional<AccuracyOutcome> AccuracyOf(const Scene& scene, const SolveReport&
   outcome.spacing = report.mesh_advice->spacing;
   if (!report.result.converged && report.levels) {
     for (const LevelRecord& level : report.levels->levels) {
-      if (!level.converged || !level.drape_coefficient || level.edges_through_disk > 0) continue;
+      if (!level.converged || !level.drape_coefficient || level.PassesThrough()) continue;
       outcome.best_converged = AccuracyOutcome::Level{
           level.spacing, *level.drape_coefficient,
           ExpectedDrapeError(level.spacing, report.mesh_advice->bending_length,

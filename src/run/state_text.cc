@@ -19,12 +19,33 @@ std::string ThroughDiskText(const ContactReport& contact) {
   return text + inside;
 }
 
+// "fabric through itself (3 crossings of a triangle's side and a triangle; the first: side 12–13
+// through triangle 40 41 52)".
+std::string ThroughItselfText(const SelfIntersections& found) {
+  const int n = found.crossings;
+  return "fabric through itself (" + std::to_string(n) + (n == 1 ? " crossing" : " crossings") +
+         " of a triangle's side and a triangle; " + (n == 1 ? "" : "the first: ") + "side " +
+         std::to_string(found.side[0]) + "–" + std::to_string(found.side[1]) +
+         " through triangle " + std::to_string(found.triangle[0]) + " " +
+         std::to_string(found.triangle[1]) + " " + std::to_string(found.triangle[2]) + ")";
+}
+
+// What makes the state no drape: through a disk, through itself, or both.
+std::string PassesThroughText(const RunResult& result) {
+  std::string text;
+  if (result.contact.ThroughDisk()) text = ThroughDiskText(result.contact);
+  if (result.self_intersections.Any()) {
+    text += (text.empty() ? "" : "; ") + ThroughItselfText(result.self_intersections);
+  }
+  return text;
+}
+
 }  // namespace
 
 std::string StateText(const RunResult& result) {
   if (!result.certificate.unsound.empty()) return "not certified: " + result.certificate.unsound;
-  if (result.contact.ThroughDisk()) {
-    return ThroughDiskText(result.contact) + (result.converged ? "" : ", not an equilibrium");
+  if (result.PassesThrough()) {
+    return PassesThroughText(result) + (result.converged ? "" : ", not an equilibrium");
   }
   const Stability& stability = result.stability;
   if (!stability.computed) return "stability not computed";

@@ -9,8 +9,9 @@
 
 namespace drape {
 
-// "fabric through the support disk (…)" where nodes hang under a support disk or edges pass
-// through one (the state is no drape over it, whatever the Hessian says); otherwise
+// "fabric through the support disk (…)" where edges pass through a support disk, "fabric through
+// itself (…)" where a triangle's side crosses another triangle (src/model/self_intersection.h),
+// or both joined by "; " (the state is no drape, whatever the Hessian says); otherwise
 // "stable minimum" or "saddle: most negative eigenvalue … N/m" for a converged run; for one that
 // did not converge, "not an equilibrium" with what the Hessian shows there (a state whose Hessian
 // is positive definite but whose forces do not balance is no minimum); "not certified: …" or

@@ -17,6 +17,14 @@ const std::vector<OutputKindRow>& OutputKinds() {
        false},
       {OutputKind::kVtk, "vtk", {"mesh.vtk"}, "the final mesh for ParaView", true, false},
       {OutputKind::kObj, "obj", {"mesh.obj"}, "the final mesh for Blender", true, false},
+      {OutputKind::kGltf,
+       "gltf",
+       {"drape.glb"},
+       "the final shape in 3D as binary glTF 2.0, for Blender, three.js or any glTF viewer: the "
+       "fabric with its normals, flat pattern, a colour by height and per-vertex fields, and the "
+       "obstacles",
+       false,
+       true},
       {OutputKind::kPng,
        "png",
        {"drape.png", "shadow.png"},

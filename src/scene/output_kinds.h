@@ -17,7 +17,18 @@
 
 namespace drape {
 
-enum class OutputKind { kSummary, kNodes, kHistory, kVtk, kObj, kPng, kKinetic, kProfile, kShadow };
+enum class OutputKind {
+  kSummary,
+  kNodes,
+  kHistory,
+  kVtk,
+  kObj,
+  kGltf,
+  kPng,
+  kKinetic,
+  kProfile,
+  kShadow
+};
 
 // In a file name, the solver method's name: the trace's columns differ between methods.
 constexpr const char* kMethodPlaceholder = "<method>";

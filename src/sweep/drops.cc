@@ -117,7 +117,10 @@ DropOutline OutlineOf(const FarmRecord& record) {
 std::string SolveDrop(const Scene& scene, const DropsOptions& options, int drop) {
   DropRecord record;
   record.drop = drop;
-  const Scene drop_scene = DropScene(scene, drop, &record.offset);
+  Scene drop_scene = DropScene(scene, drop, &record.offset);
+  // Each drop's drape.glb, whatever the scene asks, for the report's 3D view.
+  std::vector<std::string>& write = drop_scene.output.write;
+  if (std::find(write.begin(), write.end(), "gltf") == write.end()) write.push_back("gltf");
   record.waviness = drop_scene.drape_test->waviness;
   Model model = BuildModel(drop_scene);
   AddDropWaviness(drop_scene, drop, &model);
@@ -138,8 +141,8 @@ std::string SolveDrop(const Scene& scene, const DropsOptions& options, int drop)
   record.folds = report.drape ? report.drape->folds.count : 0;
   record.energy = result.certificate.energy;
   record.state = result.converged ? StateText(result) : "not converged: " + StateText(result);
-  record.counted = result.converged && !result.Saddle() && !result.contact.ThroughDisk() &&
-                   report.drape.has_value();
+  record.counted =
+      result.converged && !result.Saddle() && !result.PassesThrough() && report.drape.has_value();
   DropOutline outline;
   if (report.drape) {
     outline.centre =
@@ -350,7 +353,8 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   WriteAtomically(directory / "summary.json",
                   [&](std::ostream& out) { WriteDropsSummary(scene, options, summary, out); });
   WriteAtomically(directory / "report.html", [&](std::ostream& out) {
-    WriteDropsReport(scene, summary, Provenance{options.command_line, options.overrides}, out);
+    WriteDropsReport(scene, summary, Provenance{options.command_line, options.overrides}, out,
+                     directory);
   });
   return summary;
 }

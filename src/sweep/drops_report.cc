@@ -199,6 +199,23 @@ ReportBlock MaterialTable(const Scene& scene) {
   return table;
 }
 
+// The drops whose folders hold a drape.glb (output kind `gltf`, a drape test's default), for the
+// 3D view: "drop 3: DC 0.671, 9 folds".
+std::vector<ViewerShape> DropShapes(const DropsSummary& summary,
+                                    const std::filesystem::path& directory) {
+  std::vector<ViewerShape> shapes;
+  const int drops = static_cast<int>(summary.drops.size());
+  for (const DropRecord& drop : summary.drops) {
+    const std::string file = DropFolderName(drop.drop, drops) + "/drape.glb";
+    if (!std::filesystem::exists(directory / file)) continue;
+    shapes.push_back({"drop " + std::to_string(drop.drop) + ": DC " +
+                          FixedText(drop.drape_coefficient, 3) + ", " + std::to_string(drop.folds) +
+                          " folds" + (drop.counted ? "" : " (not counted)"),
+                      file});
+  }
+  return shapes;
+}
+
 }  // namespace
 
 std::optional<std::string> SpecimenSizeAdvice(double specimen_diameter, double dc) {
@@ -215,7 +232,7 @@ std::optional<std::string> SpecimenSizeAdvice(double specimen_diameter, double d
 }
 
 void WriteDropsReport(const Scene& scene, const DropsSummary& summary, const Provenance& provenance,
-                      std::ostream& html) {
+                      std::ostream& html, const std::filesystem::path& directory) {
   const DropStatistics& s = summary.statistics;
   std::vector<ReportBlock> blocks = {HeadingBlock("Drape test: " + scene.name),
                                      TextBlock(DropsLine(s, summary.mesh_advice))};
@@ -231,6 +248,11 @@ void WriteDropsReport(const Scene& scene, const DropsSummary& summary, const Pro
     blocks.push_back(ChartBlock(FoldsHistogram(summary), "Fold count"));
   }
   blocks.push_back(ChartBlock(ProfilesFigure(scene, summary), "Radial profiles of the shadows"));
+  if (std::vector<ViewerShape> shapes = DropShapes(summary, directory); !shapes.empty()) {
+    blocks.push_back(View3dBlock(std::move(shapes),
+                                 "The drops in 3D (each drop's drape.glb): the fabric, the disc, "
+                                 "the shadow and the fold crests in red"));
+  }
   blocks.push_back(HeadingBlock("The drops"));
   blocks.push_back(DropsTable(summary));
   blocks.push_back(HeadingBlock("The test and the fabric"));
@@ -239,7 +261,7 @@ void WriteDropsReport(const Scene& scene, const DropsSummary& summary, const Pro
   blocks.push_back(TextBlock(ProvenanceLine(provenance) +
                              ". drops.csv and summary.json hold these figures; each drop's folder "
                              "holds its solve."));
-  WriteHtmlReport(blocks, "", html);
+  WriteHtmlReport(blocks, directory, html);
 }
 
 }  // namespace drape

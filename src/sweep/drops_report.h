@@ -6,6 +6,7 @@
 #ifndef DRAPE_SRC_SWEEP_DROPS_REPORT_H_
 #define DRAPE_SRC_SWEEP_DROPS_REPORT_H_
 
+#include <filesystem>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -21,9 +22,10 @@ namespace drape {
 // `specimen_diameter` (m) with mean drape coefficient `dc`, or nothing.
 std::optional<std::string> SpecimenSizeAdvice(double specimen_diameter, double dc);
 
-// report.html: the statistics, figures and table of a drops run, `provenance` at its foot.
+// report.html: the statistics, figures and table of a drops run, the 3D view of the drops whose
+// folders under `directory` (the report's own) hold a drape.glb, `provenance` at its foot.
 void WriteDropsReport(const Scene& scene, const DropsSummary& summary, const Provenance& provenance,
-                      std::ostream& html);
+                      std::ostream& html, const std::filesystem::path& directory = {});
 
 }  // namespace drape
 

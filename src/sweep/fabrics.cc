@@ -80,10 +80,10 @@ InputError Relocated(const InputError& error, const FabricRow& row,
                     error.problem());
 }
 
-// The outputs every fabric writes whatever the base scene asks: summary.json and shadow.png (the
-// report's pictures).
+// The outputs every fabric writes whatever the base scene asks: summary.json, shadow.png and
+// drape.glb (the report's pictures and 3D view).
 void AddNeededOutputs(Scene* scene) {
-  for (const char* kind : {"summary", "shadow"}) {
+  for (const char* kind : {"summary", "shadow", "gltf"}) {
     auto& write = scene->output.write;
     if (std::find(write.begin(), write.end(), kind) == write.end()) write.push_back(kind);
   }
@@ -194,8 +194,8 @@ FabricTaskRecord SolveFabricTask(const FabricsContext& context, int task) {
       scene, model, report, folder,
       Provenance{context.options.command_line + " (fabric " + what + ")", fabric.overrides});
   record.solved = true;
-  record.counted = result.converged && !result.Saddle() && !result.contact.ThroughDisk() &&
-                   report.drape.has_value();
+  record.counted =
+      result.converged && !result.Saddle() && !result.PassesThrough() && report.drape.has_value();
   if (report.drape) {
     record.drape_coefficient = ReportedDrapeCoefficient(report);
     record.folds = report.drape->folds.count;

@@ -72,6 +72,21 @@ std::vector<ReportBlock> Shadows(const FabricsSpec& spec) {
                    "The shadow of " + fabric.row.name +
                        (spec.drops > 1 ? " (drop 1 of " + std::to_string(spec.drops) + ")" : "")));
   }
+  std::vector<ViewerShape> shapes;
+  for (const FabricCase& fabric : spec.fabrics) {
+    const fs::path glb = spec.drops > 1
+                             ? fs::path(fabric.folder) / DropFolderName(1, spec.drops) / "drape.glb"
+                             : fs::path(fabric.folder) / "drape.glb";
+    if (fs::exists(fs::path(spec.directory) / glb))
+      shapes.push_back({fabric.row.name, glb.string()});
+  }
+  if (!shapes.empty()) {
+    blocks.push_back(View3dBlock(std::move(shapes),
+                                 "The fabrics in 3D (each one's drape.glb" +
+                                     std::string(spec.drops > 1 ? ", drop 1" : "") +
+                                     "): the fabric, the disc, the shadow and the fold crests in "
+                                     "red"));
+  }
   return blocks;
 }
 

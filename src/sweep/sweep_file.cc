@@ -401,7 +401,7 @@ std::vector<std::string> OutputKindsOf(const std::vector<std::string>& keep) {
   std::vector<std::string> kinds;
   for (const std::string& kind : keep) {
     if (kind == "summary") kinds.push_back("summary");
-    if (kind == "shape") kinds.insert(kinds.end(), {"nodes", "vtk", "obj"});
+    if (kind == "shape") kinds.insert(kinds.end(), {"nodes", "vtk", "obj", "gltf"});
     if (kind == "pictures") kinds.push_back("png");
     if (kind == "history") kinds.push_back("history");
     if (kind == "profile") kinds.push_back("profile");

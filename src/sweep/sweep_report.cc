@@ -179,8 +179,23 @@ std::vector<ReportBlock> HeatMap(const SweepSpec& spec, const Table& table) {
   return {};
 }
 
+// The tasks whose folders hold a drape.glb (`keep: [shape]`), for the 3D view: "task 7:
+// mesh.spacing=0.005".
+std::vector<ViewerShape> TaskShapes(const SweepSpec& spec, const std::string& directory) {
+  std::vector<ViewerShape> shapes;
+  for (int task = 0; task < static_cast<int>(spec.tasks.size()); ++task) {
+    const std::string file =
+        fs::relative(fs::path(TaskFolder(directory, spec, task)) / "drape.glb", directory).string();
+    if (!fs::exists(fs::path(directory) / file)) continue;
+    std::string label = "task " + std::to_string(task);
+    for (const std::string& value : TaskOverrides(spec, task)) label += " " + value;
+    shapes.push_back({label, file});
+  }
+  return shapes;
+}
+
 std::vector<ReportBlock> Page(const SweepSpec& spec, const Table& table,
-                              const Provenance& provenance) {
+                              const Provenance& provenance, const std::string& directory) {
   std::vector<ReportBlock> blocks = {
       HeadingBlock("drape sweep: " + spec.file),
       TextBlock("base scene " + spec.scene_file + "; design " + spec.design + ", " +
@@ -189,6 +204,10 @@ std::vector<ReportBlock> Page(const SweepSpec& spec, const Table& table,
       TextBlock(ProvenanceLine(provenance) + " (sweep.json)")};
   for (ReportBlock& chart : HeatMap(spec, table)) blocks.push_back(std::move(chart));
   for (ReportBlock& chart : ScalarCharts(spec, table)) blocks.push_back(std::move(chart));
+  if (std::vector<ViewerShape> shapes = TaskShapes(spec, directory); !shapes.empty()) {
+    blocks.push_back(
+        View3dBlock(std::move(shapes), "The tasks' shapes in 3D (each one's drape.glb)"));
+  }
   blocks.push_back(HeadingBlock("Tasks"));
   std::vector<std::vector<std::string>> rows = {table.header};
   for (const auto& row : table.rows) {
@@ -210,7 +229,7 @@ void WriteSweepReport(const SweepSpec& spec, const std::string& directory,
                       const Provenance& provenance) {
   const Table table = ReadTable(fs::path(directory) / "sweep.csv");
   WriteAtomically(fs::path(directory) / "sweep.html", [&](std::ostream& out) {
-    WriteHtmlReport(Page(spec, table, provenance), directory, out);
+    WriteHtmlReport(Page(spec, table, provenance, directory), directory, out);
   });
 }
 
