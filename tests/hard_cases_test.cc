@@ -1,11 +1,13 @@
 // The hard cases of configs/hard/: newton must reach a relative residual of 1e-8 from the start
 // each scene describes, with finite positions, and report a stable equilibrium where the physics
-// has one (all of these do: a sheet turning freely about one support is neutral, not unstable).
+// has one (a sheet turning freely about one support is neutral, not unstable); and the sheet
+// lifted by its centre, which the model lets pass through itself, is never called one.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
+#include "src/run/state_text.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -40,6 +42,19 @@ TEST(HardCases, SheetHungByOneCorner) { ExpectConvergedAndStable("one_corner_she
 TEST(HardCases, LargeLoad) { ExpectConvergedAndStable("large_load.yaml"); }
 TEST(HardCases, TinyLoad) { ExpectConvergedAndStable("tiny_load.yaml"); }
 TEST(HardCases, ThreeByThreeMesh) { ExpectConvergedAndStable("small_mesh.yaml"); }
+
+// A limp square lifted by its centre: the flaps fall into one another and, with no fabric–fabric
+// contact in the model, the equilibrium passes through itself. The certificate must find it and
+// never call it a stable minimum (src/model/self_intersection.h), whatever the Hessian says.
+TEST(HardCases, ASheetLiftedByItsCentreIsNoStableMinimumWhileItPassesThroughItself) {
+  const auto solved = SolveConfig("configs/hard/lifted_by_centre.yaml", "newton");
+  const RunResult& result = solved.result;
+  EXPECT_TRUE(result.converged) << result.summary.termination;
+  EXPECT_TRUE(result.self_intersections.checked);
+  EXPECT_GT(result.self_intersections.crossings, 0);
+  EXPECT_TRUE(result.PassesThrough());
+  EXPECT_EQ(StateText(result).rfind("fabric through itself (", 0), 0u) << StateText(result);
+}
 
 TEST(HardCases, TautCableSagsOnlyByItsElasticStretch) {
   const auto solved = SolveConfig("configs/hard/taut_cable.yaml", "newton");

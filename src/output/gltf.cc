@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "src/output/render.h"
 #include "src/output/surface_fields.h"
@@ -108,6 +109,28 @@ void AddMeshNode(const std::string& name, const tinygltf::Primitive& primitive,
   node.mesh = static_cast<int>(model->meshes.size()) - 1;
   model->nodes.push_back(node);
   model->scenes[0].nodes.push_back(static_cast<int>(model->nodes.size()) - 1);
+}
+
+void AppendPoint(const Eigen::Vector3d& point, std::vector<float>* positions) {
+  const Eigen::Vector3f p = GltfAxes(point);
+  positions->insert(positions->end(), p.data(), p.data() + 3);
+}
+
+// A node of one primitive in one colour: `positions` (glTF's axes, 3 per vertex), `normals`
+// (the same, or empty) and `indices` drawn as `mode` (TINYGLTF_MODE_*).
+void AddShapeNode(const std::string& name, const std::vector<float>& positions,
+                  const std::vector<float>& normals, const std::vector<std::uint32_t>& indices,
+                  int mode, const std::vector<double>& colour, GltfArrays* arrays,
+                  tinygltf::Model* gltf) {
+  tinygltf::Primitive primitive;
+  primitive.attributes["POSITION"] = arrays->Floats(positions, 3, TINYGLTF_TYPE_VEC3, true);
+  if (!normals.empty()) {
+    primitive.attributes["NORMAL"] = arrays->Floats(normals, 3, TINYGLTF_TYPE_VEC3, false);
+  }
+  primitive.indices = arrays->Indices(indices);
+  primitive.mode = mode;
+  primitive.material = AddMaterial(name, colour, gltf);
+  AddMeshNode(name, primitive, gltf);
 }
 
 // The fields of GltfFields(), one value per node each, in its order.
@@ -221,13 +244,8 @@ void AddObstacles(const Scene& scene, const Model& model, GltfArrays* arrays,
     }
   }
   if (indices.empty()) return;
-  tinygltf::Primitive primitive;
-  primitive.attributes["POSITION"] = arrays->Floats(positions, 3, TINYGLTF_TYPE_VEC3, true);
-  primitive.attributes["NORMAL"] = arrays->Floats(normals, 3, TINYGLTF_TYPE_VEC3, false);
-  primitive.indices = arrays->Indices(indices);
-  primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  primitive.material = AddMaterial("obstacles", {0.62, 0.62, 0.60}, gltf);
-  AddMeshNode("obstacles", primitive, gltf);
+  AddShapeNode("obstacles", positions, normals, indices, TINYGLTF_MODE_TRIANGLES,
+               {0.62, 0.62, 0.60}, arrays, gltf);
 }
 
 // The shadow's outline r(θ) at height `z`, drape's axes.
@@ -236,52 +254,61 @@ Eigen::Vector3d OutlinePoint(const RadialProfile& profile, int k, double radius,
           profile.centre[1] + radius * std::sin(profile.theta[k]), z};
 }
 
-void AddShadowAndCrests(const Model& model, const DrapeAnalysis& drape, GltfArrays* arrays,
-                        tinygltf::Model* gltf) {
-  const RadialProfile& profile = drape.profile;
-  const int rays = static_cast<int>(profile.radius.size());
-  if (rays < 3 || profile.theta.size() != profile.radius.size()) return;
-  double low = INFINITY, high = -INFINITY, extent = 0.0;
+// The height of the shadow and the crests: a hundredth of the drape's extent below its lowest
+// node; and that extent.
+std::pair<double, double> ShadowHeightAndExtent(const Model& model, const DrapeAnalysis& drape) {
+  double low = INFINITY, high = -INFINITY;
   for (int k = 0; k < model.num_nodes; ++k) {
     low = std::min(low, model.position(k).z());
     high = std::max(high, model.position(k).z());
   }
-  extent = std::max(high - low, 2.0 * drape.radius_max);
-  const double z = low - 0.01 * extent;
+  const double extent = std::max(high - low, 2.0 * drape.radius_max);
+  return {low - 0.01 * extent, extent};
+}
+
+// The shadow: a fan about the profile's centre, counter-clockwise seen from above (its face
+// looks up).
+void AddShadow(const DrapeAnalysis& drape, double z, GltfArrays* arrays, tinygltf::Model* gltf) {
+  const RadialProfile& profile = drape.profile;
+  const int rays = static_cast<int>(profile.radius.size());
   std::vector<float> positions;
-  auto add = [&](const Eigen::Vector3d& point) {
-    const Eigen::Vector3f p = GltfAxes(point);
-    positions.insert(positions.end(), p.data(), p.data() + 3);
-  };
-  add({profile.centre[0], profile.centre[1], z});
-  for (int k = 0; k < rays; ++k) add(OutlinePoint(profile, k, profile.radius[k], z));
+  AppendPoint({profile.centre[0], profile.centre[1], z}, &positions);
+  for (int k = 0; k < rays; ++k) {
+    AppendPoint(OutlinePoint(profile, k, profile.radius[k], z), &positions);
+  }
   std::vector<std::uint32_t> fan;
-  for (int k = 0; k < rays; ++k) {  // counter-clockwise seen from above: the face looks up
+  for (int k = 0; k < rays; ++k) {
     fan.insert(fan.end(), {0u, static_cast<std::uint32_t>(1 + k),
                            static_cast<std::uint32_t>(1 + (k + 1) % rays)});
   }
-  tinygltf::Primitive shadow;
-  shadow.attributes["POSITION"] = arrays->Floats(positions, 3, TINYGLTF_TYPE_VEC3, true);
-  shadow.indices = arrays->Indices(fan);
-  shadow.mode = TINYGLTF_MODE_TRIANGLES;
-  shadow.material = AddMaterial("shadow", {0.80, 0.80, 0.80}, gltf);
-  AddMeshNode("shadow", shadow, gltf);
-  if (drape.folds.angles_deg.empty()) return;
-  positions.clear();
-  const double lift = 0.002 * extent;  // above the shadow, so that the lines are not hidden in it
+  AddShapeNode("shadow", positions, {}, fan, TINYGLTF_MODE_TRIANGLES, {0.80, 0.80, 0.80}, arrays,
+               gltf);
+}
+
+// A line at each fold crest's angle from the disc's rim (or the centre) to the outline, just
+// above the shadow so that it is not hidden in it.
+void AddCrests(const DrapeAnalysis& drape, double z, GltfArrays* arrays, tinygltf::Model* gltf) {
+  const RadialProfile& profile = drape.profile;
+  const int rays = static_cast<int>(profile.radius.size());
+  std::vector<float> positions;
   for (double angle : drape.folds.angles_deg) {
     const int k = static_cast<int>(std::lround(angle / 360.0 * rays)) % rays;
-    add(OutlinePoint(profile, k, drape.disc_radius, z + lift));
-    add(OutlinePoint(profile, k, profile.radius[k], z + lift));
+    AppendPoint(OutlinePoint(profile, k, drape.disc_radius, z), &positions);
+    AppendPoint(OutlinePoint(profile, k, profile.radius[k], z), &positions);
   }
   std::vector<std::uint32_t> lines(positions.size() / 3);
   for (std::uint32_t k = 0; k < lines.size(); ++k) lines[k] = k;
-  tinygltf::Primitive crests;
-  crests.attributes["POSITION"] = arrays->Floats(positions, 3, TINYGLTF_TYPE_VEC3, true);
-  crests.indices = arrays->Indices(lines);
-  crests.mode = TINYGLTF_MODE_LINE;
-  crests.material = AddMaterial("fold crests", {0.85, 0.10, 0.10}, gltf);
-  AddMeshNode("fold crests", crests, gltf);
+  AddShapeNode("fold crests", positions, {}, lines, TINYGLTF_MODE_LINE, {0.85, 0.10, 0.10}, arrays,
+               gltf);
+}
+
+void AddShadowAndCrests(const Model& model, const DrapeAnalysis& drape, GltfArrays* arrays,
+                        tinygltf::Model* gltf) {
+  const RadialProfile& profile = drape.profile;
+  if (profile.radius.size() < 3 || profile.theta.size() != profile.radius.size()) return;
+  const auto [z, extent] = ShadowHeightAndExtent(model, drape);
+  AddShadow(drape, z, arrays, gltf);
+  if (!drape.folds.angles_deg.empty()) AddCrests(drape, z + 0.002 * extent, arrays, gltf);
 }
 
 tinygltf::Value SceneExtras(const Scene& scene, const Provenance& provenance) {
