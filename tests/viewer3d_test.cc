@@ -72,6 +72,23 @@ TEST(Viewer3d, ThePageEmbedsThreeJsOnceAndEachReadableShape) {
   EXPECT_EQ(html.find(">gone<"), std::string::npos);
 }
 
+// A view holds the first kViewerMaxShapes shapes and says how many of how many.
+TEST(Viewer3d, AViewHoldsAtMostItsShareOfShapesAndSaysSo) {
+  testing::ScratchFolder folder("viewer3d_test");
+  std::vector<ViewerShape> shapes;
+  for (size_t k = 0; k < kViewerMaxShapes + 6; ++k) {
+    const std::string file = std::to_string(k) + ".glb";
+    std::ofstream(folder / file) << "glTF";
+    shapes.push_back({"shape " + std::to_string(k), file});
+  }
+  const std::string html = ViewerHtml(shapes, folder.path(), 0);
+  EXPECT_NE(html.find(">shape " + std::to_string(kViewerMaxShapes - 1) + "<"), std::string::npos);
+  EXPECT_EQ(html.find(">shape " + std::to_string(kViewerMaxShapes) + "<"), std::string::npos);
+  EXPECT_NE(html.find("(the first " + std::to_string(kViewerMaxShapes) + " of " +
+                      std::to_string(kViewerMaxShapes + 6) + " shapes;"),
+            std::string::npos);
+}
+
 // The browser the test drives; empty where it is not installed.
 std::string Browser() {
   for (const char* path : {"/usr/bin/chromium-headless-shell", "/usr/bin/chromium"}) {

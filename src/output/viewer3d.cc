@@ -188,6 +188,7 @@ std::string ViewerHtml(const std::vector<ViewerShape>& shapes, const std::filesy
   std::string options;
   for (const ViewerShape& shape : shapes) {
     std::string glb;
+    if (embedded.size() == kViewerMaxShapes) break;
     if (!ReadWhole(folder / shape.file, &glb)) continue;
     options += "<option value=\"" + std::to_string(embedded.size()) + "\">" +
                HtmlText(shape.label) + "</option>";
@@ -196,12 +197,18 @@ std::string ViewerHtml(const std::vector<ViewerShape>& shapes, const std::filesy
   }
   if (embedded.empty()) return "<p>3D view not drawn: no drape.glb could be read.</p>\n";
   const std::string id = "drape-view-" + std::to_string(index);
+  const std::string more = shapes.size() > kViewerMaxShapes
+                               ? " (the first " + std::to_string(kViewerMaxShapes) + " of " +
+                                     std::to_string(shapes.size()) +
+                                     " shapes; every drape.glb is in its folder)"
+                               : "";
   return "<div class=\"drape-view\" id=\"" + id +
          "\"><canvas style=\"width:100%;height:520px;border:1px solid #bbb;touch-action:none\">"
          "</canvas><div>shape <select class=\"shape\">" +
-         options + "</select> colour by <select class=\"field\">" + FieldOptions() +
-         "</select> <span class=\"legend\"></span> · drag to turn, scroll to zoom, right-drag "
-         "to move</div><script type=\"application/json\" class=\"shapes\">" +
+         options + "</select> colour by <select class=\"field\">" + FieldOptions() + "</select>" +
+         HtmlText(more) +
+         " <span class=\"legend\"></span> · drag to turn, scroll to zoom, right-drag to "
+         "move</div><script type=\"application/json\" class=\"shapes\">" +
          ScriptSafe(JsonList(embedded)) + "</script><script>drapeViewer('" + id +
          "');</script></div>\n";
 }

@@ -10,6 +10,7 @@
 #ifndef DRAPE_SRC_OUTPUT_VIEWER3D_H_
 #define DRAPE_SRC_OUTPUT_VIEWER3D_H_
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -30,6 +31,11 @@ std::filesystem::path ThreeJsFolder();
 // drape's viewer), as one <script> element; empty with `*missing` saying why where a file of
 // three.js cannot be read.
 std::string ViewerScripts(std::string* missing);
+
+// At most this many shapes are embedded in one view (the first ones; a 5 mm drape's drape.glb is
+// about 0.3 MB, a third more in base64): a table of a hundred fabrics or a sweep of a thousand
+// tasks keeps a page a browser opens; the view says how many it holds of how many.
+constexpr size_t kViewerMaxShapes = 24;
 
 // A view's HTML: a canvas, the lists, and the shapes embedded (base64); `index` tells the page's
 // views apart. The shapes that cannot be read are left out (none left: a paragraph saying so).
