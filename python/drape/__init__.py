@@ -109,7 +109,10 @@ def _mesh(mesh):
 
 
 def _loaded(scene, set, mesh=None):
-    """A Scene as given, or the scene file at a path loaded with `set` overrides (and `mesh`)."""
+    """A Scene as given; a scene as a dict (as `from_dict` takes it, relative paths from the
+    current folder) or the scene file at a path, loaded with `set` overrides (and `mesh`)."""
+    if isinstance(scene, dict):
+        return from_dict(scene, set=set, mesh=mesh)
     if not isinstance(scene, Scene):
         return load(scene, set=set, mesh=mesh)
     if set is not None or mesh is not None:
@@ -304,7 +307,8 @@ class Result:
 
 
 def solve(scene, solver=None, set=None, start=None, mesh=None, progress=_print_to_stderr):
-    """Solves a Scene, or the scene file at a path, as `drape solve` does; returns a Result.
+    """Solves a Scene, a scene file's path or a scene as a dict, as `drape solve` does; returns
+    a Result.
 
     solver: a method name (`drape solvers`); set, mesh: as `load` takes them (for a path); start:
     an earlier Result or an (n, 3) array of positions, a warm start (the free nodes start there);
@@ -331,7 +335,8 @@ def sensitivities(scene, keys, set=None, solver=None, mesh=None, progress=_print
     one linear solve (the implicit function theorem: H dx/dp = -dg/dp, dg/dp by central
     differences of the forces at the equilibrium). A key is a number of the scene as solved
     (`drape check --json`), in SI. Raises InputError where the equilibrium is not a converged,
-    stable minimum, or a key is not such a number.
+    stable minimum, or a key is not such a number. scene: a Scene, a scene file's path or a scene
+    as a dict.
     """
     scene = _loaded(scene, set, mesh)
     if isinstance(keys, str):
@@ -439,7 +444,8 @@ def drops(scene, drops=None, set=None, out=None, threads=0, progress=_print_to_s
           directory=None):
     """Repeated drops of a drape test, as `drape solve --drops N` runs them; returns a DropsResult.
 
-    scene: a Scene, or a scene file's path (with `set` overrides); it needs a drape_test block.
+    scene: a Scene, a scene file's path or a scene as a dict (with `set` overrides); it needs a
+    drape_test block.
     drops: how many (default: the scene's drape_test.drops); threads: 0 for the machine's cores;
     out: where the files go (drops.csv, summary.json, report.html, drops/NN/), else a temporary
     folder, removed after reading; progress: a callable given a line per finished drop.

@@ -89,7 +89,7 @@ class Result:
     def interrupted(self) -> bool: ...
     def write(self, directory: _Path) -> None: ...
 
-def solve(scene: Scene | _Path, solver: str | None = None, set: _Overrides = None,
+def solve(scene: Scene | _Path | dict[str, Any], solver: str | None = None, set: _Overrides = None,
           start: Result | ArrayLike | None = None, mesh: _Mesh = None,
           progress: _Progress = ...) -> Result: ...
 
@@ -118,7 +118,7 @@ class DropsResult:
     def mesh_rule(self) -> dict[str, Any] | None: ...
 
 # directory= (in drops, fit and sweep) is the former name of out=: a DeprecationWarning.
-def drops(scene: Scene | _Path, drops: int | None = None, set: _Overrides = None,
+def drops(scene: Scene | _Path | dict[str, Any], drops: int | None = None, set: _Overrides = None,
           out: _Path | None = None, threads: int = 0, progress: _Progress = ...,
           directory: _Path | None = None) -> DropsResult: ...
 
@@ -167,6 +167,6 @@ def fabrics(table: _Path, scene: _Path | None = None, set: _Overrides = None,
             progress: _Progress = ...) -> FabricsResult: ...
 
 # d positions / d key for each key: shape (nodes, 3, len(keys)).
-def sensitivities(scene: Scene | _Path, keys: str | Sequence[str], set: _Overrides = None,
+def sensitivities(scene: Scene | _Path | dict[str, Any], keys: str | Sequence[str], set: _Overrides = None,
                   solver: str | None = None, mesh: _Mesh = None,
                   progress: _Progress = ...) -> NDArray[np.float64]: ...

@@ -153,6 +153,10 @@ def test_a_scene_from_a_dict_is_the_files():
     from_dict = drape.solve(drape.from_dict(chain))
     from_file = drape.solve(config("examples/chain.yaml"))
     assert np.array_equal(from_dict.positions, from_file.positions)
+    # Every entry point takes the dict itself, as drape.fit does.
+    assert np.array_equal(drape.solve(chain).positions, from_file.positions)
+    derivatives = drape.sensitivities(chain, "material.springs.structural")
+    assert derivatives.shape == (11, 3, 1) and np.all(np.isfinite(derivatives))
 
 
 def test_a_fabric_through_itself_is_no_stable_minimum(tmp_path):
