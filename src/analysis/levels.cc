@@ -303,12 +303,12 @@ std::string Joined(const std::vector<int>& values) {
 void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* report) {
   std::vector<double> spacing, energy, dc;
   std::vector<int> folds;
-  bool all_converged = true, all_dc = true, any_through_disk = false;
+  bool all_converged = true, all_dc = true, any_passes_through = false;
   for (const LevelRecord& level : levels) {
     spacing.push_back(level.spacing);
     energy.push_back(level.energy);
     all_converged = all_converged && level.converged;
-    any_through_disk = any_through_disk || level.PassesThrough();
+    any_passes_through = any_passes_through || level.PassesThrough();
     all_dc = all_dc && level.drape_coefficient.has_value();
     if (level.drape_coefficient) dc.push_back(*level.drape_coefficient);
     if (level.folds) folds.push_back(*level.folds);
@@ -329,7 +329,7 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
       e.reason = "needs 3 levels (solver.levels: 3 or more)";
     } else if (!all_converged) {
       e.reason = "a level did not converge";
-    } else if (any_through_disk) {
+    } else if (any_passes_through) {
       e.reason =
           "the fabric passes through the support disk or through itself on a level "
           "(edges_through_disk, self_crossings)";

@@ -6,15 +6,11 @@
 
 namespace drape {
 
-namespace {
-
-double TriangleAreaAt(const std::vector<double>& positions, const std::array<int, 3>& t) {
+double TriangleArea(const std::vector<double>& positions, const std::array<int, 3>& t) {
   const Eigen::Vector3d a = NodeAt(positions, t[0]), b = NodeAt(positions, t[1]),
                         c = NodeAt(positions, t[2]);
   return 0.5 * (b - a).cross(c - a).norm();
 }
-
-}  // namespace
 
 std::vector<Eigen::Vector3d> VertexNormals(const Model& model) {
   std::vector<Eigen::Vector3d> normals(model.num_nodes, Eigen::Vector3d::Zero());
@@ -57,7 +53,7 @@ std::vector<double> VertexAreaStretch(const Model& model) {
   std::vector<double> now(model.num_nodes, 0.0), start(model.num_nodes, 0.0);
   if (model.initial.size() != model.positions.size()) return now;
   for (const auto& t : model.triangles) {
-    const double area = TriangleAreaAt(model.positions, t), rest = TriangleAreaAt(model.initial, t);
+    const double area = TriangleArea(model.positions, t), rest = TriangleArea(model.initial, t);
     for (int v : t) {
       now[v] += area;
       start[v] += rest;

@@ -1,5 +1,5 @@
-// The fabric's surface as the mesh files draw it (mesh.obj, drape.glb): vertex normals, the flat
-// pattern as texture coordinates, and a per-vertex stretch.
+// The fabric's surface as the result files draw it (mesh.vtk, mesh.obj, drape.glb): triangle
+// areas, vertex normals, the flat pattern as texture coordinates, and a per-vertex stretch.
 #ifndef DRAPE_SRC_OUTPUT_SURFACE_FIELDS_H_
 #define DRAPE_SRC_OUTPUT_SURFACE_FIELDS_H_
 
@@ -10,6 +10,9 @@
 #include "src/model/model.h"
 
 namespace drape {
+
+// The area of triangle `t` at `positions` (3 doubles per node), m².
+double TriangleArea(const std::vector<double>& positions, const std::array<int, 3>& t);
 
 // Area-weighted vertex normals of the surface at the solved positions (zero where no triangle).
 std::vector<Eigen::Vector3d> VertexNormals(const Model& model);

@@ -456,11 +456,6 @@ double Distance(const std::vector<double>& x, int a, int b) {
   return (NodeAt(x, a) - NodeAt(x, b)).norm();
 }
 
-double TriangleArea(const std::vector<double>& x, const std::array<int, 3>& t) {
-  const Eigen::Vector3d a = NodeAt(x, t[0]), b = NodeAt(x, t[1]), c = NodeAt(x, t[2]);
-  return 0.5 * (b - a).cross(c - a).norm();
-}
-
 // The cells' strain from the start (model.initial): A/A₀ − 1 for a triangle, L/L₀ − 1 for a line
 // element; 0 where the start is degenerate.
 std::vector<double> CellStrains(const Model& model) {

@@ -34,7 +34,8 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     if (interpolated) ProlongPositions(scenes[k - 1], previous, scenes[k], &current);
     result = RunSolve(scenes[k], current, method, on_iteration);
     if (interpolated && result.PassesThrough()) {
-      // The interpolated start led the fabric through a support disk: solve from the flat start.
+      // The interpolated start led the fabric through a support disk or through itself: solve
+      // from the flat start.
       record.restarted_flat = true;
       record.iterations = result.summary.iterations;
       record.wall_time_s = result.summary.wall_time_s;
