@@ -156,14 +156,20 @@ std::vector<std::vector<float>> FieldValues(const Model& model, const RunResult&
   return fields;
 }
 
-// COLOR_0 of the fabric: its height from blue (lowest) to sand (highest), as drape.png's two
-// faces are coloured.
-std::vector<float> HeightColours(const Model& model) {
+// The lowest and the highest node's height z, m.
+std::pair<double, double> HeightRange(const Model& model) {
   double low = INFINITY, high = -INFINITY;
   for (int k = 0; k < model.num_nodes; ++k) {
     low = std::min(low, model.position(k).z());
     high = std::max(high, model.position(k).z());
   }
+  return {low, high};
+}
+
+// COLOR_0 of the fabric: its height from blue (lowest) to sand (highest), as drape.png's two
+// faces are coloured.
+std::vector<float> HeightColours(const Model& model) {
+  const auto [low, high] = HeightRange(model);
   const Eigen::Vector3f blue(0.29f, 0.53f, 0.86f), sand(0.87f, 0.75f, 0.55f);
   std::vector<float> colours;
   colours.reserve(3 * model.num_nodes);
@@ -179,10 +185,7 @@ std::vector<float> HeightColours(const Model& model) {
 void AddFabric(const Model& model, const RunResult& result, GltfArrays* arrays,
                tinygltf::Model* gltf) {
   std::vector<float> positions, normals, pattern;
-  for (int k = 0; k < model.num_nodes; ++k) {
-    const Eigen::Vector3f p = GltfAxes(model.position(k));
-    positions.insert(positions.end(), p.data(), p.data() + 3);
-  }
+  for (int k = 0; k < model.num_nodes; ++k) AppendPoint(model.position(k), &positions);
   tinygltf::Primitive primitive;
   primitive.attributes["POSITION"] = arrays->Floats(positions, 3, TINYGLTF_TYPE_VEC3, true);
   std::vector<std::uint32_t> indices;
@@ -257,11 +260,7 @@ Eigen::Vector3d OutlinePoint(const RadialProfile& profile, int k, double radius,
 // The height of the shadow and the crests: a hundredth of the drape's extent below its lowest
 // node; and that extent.
 std::pair<double, double> ShadowHeightAndExtent(const Model& model, const DrapeAnalysis& drape) {
-  double low = INFINITY, high = -INFINITY;
-  for (int k = 0; k < model.num_nodes; ++k) {
-    low = std::min(low, model.position(k).z());
-    high = std::max(high, model.position(k).z());
-  }
+  const auto [low, high] = HeightRange(model);
   const double extent = std::max(high - low, 2.0 * drape.radius_max);
   return {low - 0.01 * extent, extent};
 }

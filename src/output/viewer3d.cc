@@ -2,9 +2,8 @@
 
 #include <cctype>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
+#include "src/output/atomic_file.h"
 #include "src/output/gltf.h"
 #include "src/output/html_text.h"
 #include "src/output/json.h"
@@ -124,16 +123,6 @@ window.drapeViewer = function (id) {
 };
 )js";
 
-// The file's whole text; false where it cannot be read.
-bool ReadWhole(const std::filesystem::path& path, std::string* text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream whole;
-  whole << in.rdbuf();
-  *text = whole.str();
-  return static_cast<bool>(in) || in.eof();
-}
-
 // Text put inside a <script> element: "</" written "<\/" so that nothing in it ends the element.
 std::string ScriptSafe(const std::string& text) {
   std::string safe;
@@ -171,8 +160,8 @@ std::filesystem::path ThreeJsFolder() {
 std::string ViewerScripts(std::string* missing) {
   std::string scripts;
   for (const char* file : kThreeJsFiles) {
-    std::string text;
-    if (!ReadWhole(ThreeJsFolder() / file, &text)) {
+    const std::string text = ReadWholeFile(ThreeJsFolder() / file);
+    if (text.empty()) {  // none of three.js's files is empty
       *missing = "three.js not found: cannot read " + (ThreeJsFolder() / file).string() +
                  " (Debian's libjs-three; or set DRAPE_THREE_JS_DIR)";
       return "";
@@ -187,9 +176,9 @@ std::string ViewerHtml(const std::vector<ViewerShape>& shapes, const std::filesy
   std::vector<std::string> embedded;
   std::string options;
   for (const ViewerShape& shape : shapes) {
-    std::string glb;
     if (embedded.size() == kViewerMaxShapes) break;
-    if (!ReadWhole(folder / shape.file, &glb)) continue;
+    const std::string glb = ReadWholeFile(folder / shape.file);
+    if (glb.empty()) continue;  // unreadable (a drape.glb is never empty)
     options += "<option value=\"" + std::to_string(embedded.size()) + "\">" +
                HtmlText(shape.label) + "</option>";
     embedded.push_back(
