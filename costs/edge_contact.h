@@ -1,6 +1,10 @@
 #ifndef DRAPE_COSTS_EDGE_CONTACT_H_
 #define DRAPE_COSTS_EDGE_CONTACT_H_
 
+#include <cmath>
+#include <type_traits>
+#include <utility>
+
 #include "costs/contact_penalty.h"
 #include "costs/energy_form.h"
 #include "costs/nested_jet.h"
@@ -24,6 +28,15 @@ namespace drape {
 // fixed in space). Units: m, N/m², J. Source: the surface-contact idea of continuous contact
 // formulations (e.g. Li et al., Incremental Potential Contact, SIGGRAPH 2020, which puts the
 // barrier on edge–edge distances); here the edge is sampled instead.
+// Whether a contact offers Reaches(centre, radius): whether any point within `radius` of `centre`
+// can be inside its clearance layer, answered by one query (a mesh obstacle's, whose distance
+// queries are costly: one for the whole edge instead of one per point).
+template <typename Contact, typename = void>
+struct HasReaches : std::false_type {};
+template <typename Contact>
+struct HasReaches<Contact, std::void_t<decltype(std::declval<const Contact&>().Reaches(
+                               static_cast<const double*>(nullptr), 0.0))>> : std::true_type {};
+
 template <typename Contact>
 struct EdgeContact {
   static constexpr int kNumNodes = 2;
@@ -41,9 +54,25 @@ struct EdgeContact {
     for (int c = 0; c < 3; ++c) point[c] = a[c] + s * (b[c] - a[c]);
   }
 
+  // Whether some point of the edge a–b (values) may be inside the clearance layer: true unless the
+  // contact offers Reaches (HasReaches) and the ball around the edge's middle that holds the edge
+  // cannot reach the layer.
+  bool MayTouch(const double* a, const double* b) const {
+    if constexpr (HasReaches<Contact>::value) {
+      double middle[3], half_squared = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        middle[c] = 0.5 * (a[c] + b[c]);
+        half_squared += 0.25 * (b[c] - a[c]) * (b[c] - a[c]);
+      }
+      return contact.Reaches(middle, std::sqrt(half_squared));
+    }
+    return true;
+  }
+
   // Whether the energy can be nonzero: some point inside the clearance layer (the test the
   // operator makes point by point).
   bool Touches(const double* a, const double* b) const {
+    if (!MayTouch(a, b)) return false;
     for (int j = 1; j <= points; ++j) {
       double point[3];
       PointAt(a, b, j, point);
@@ -57,10 +86,16 @@ struct EdgeContact {
     energy[0] = T();
     const double a_value[3] = {ScalarPart(a[0]), ScalarPart(a[1]), ScalarPart(a[2])};
     const double b_value[3] = {ScalarPart(b[0]), ScalarPart(b[1]), ScalarPart(b[2])};
+    if (!MayTouch(a_value, b_value)) return true;
     for (int j = 1; j <= points; ++j) {
       double value[3];
       PointAt(a_value, b_value, j, value);
-      if (!InClearanceLayer(contact, value)) continue;  // no energy, no derivative
+      const double distance = contact.Distance(value);
+      if (!(distance < contact.clearance)) continue;  // no energy, no derivative
+      if constexpr (std::is_same_v<T, double>) {      // the value's distance is the point's
+        energy[0] += ContactPenalty(distance, contact.clearance, contact.stiffness);
+        continue;
+      }
       const double s = Fraction(j);
       const T point[3] = {a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]),
                           a[2] + s * (b[2] - a[2])};

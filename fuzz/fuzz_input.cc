@@ -23,7 +23,7 @@ namespace {
 constexpr long kMaxBuiltNodes = 20000;
 
 constexpr char kMeshMarker[] = "\n---mesh---\n";
-// The bytes after the marker, under each name a scene can give (src/model/mesh_file.h).
+// The bytes after the marker, under each name a scene can give (src/scene/mesh_file.h).
 constexpr const char* kMeshFiles[] = {"mesh.obj", "mesh.ply", "mesh.stl"};
 
 // A folder of this process's own for the scene and its mesh files (InputFolder): removed by the

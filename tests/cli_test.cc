@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <regex>
 #include <sstream>
@@ -579,6 +580,25 @@ TEST_F(CliTest, AFabricThroughItselfExitsThreeAndSaysWhere) {
   EXPECT_GT(summary["self_intersections"]["crossings"].as<int>(), 0);
   EXPECT_EQ(summary["self_intersections"]["first_side"].size(), 2u);
   EXPECT_NE(summary["state"].as<std::string>().find("fabric through itself"), std::string::npos);
+}
+
+// A mesh obstacle whose file is no closed surface (here a hole: the octahedron without its last
+// face): exit 2, the error at the scene's `file` key naming the line of the mesh file, nothing
+// written.
+TEST_F(CliTest, AMeshObstacleWithAHoleExitsTwoAndWritesNothing) {
+  std::ifstream in(std::string(drape_tests::kSourceDir) + "/tests/data/meshes/octahedron.obj");
+  std::string obj((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  obj = obj.substr(0, obj.rfind("f "));
+  std::ofstream(directory_ / "holed.obj") << obj;
+  const ProgramOutcome outcome =
+      Drape({"solve", WriteScene(), "--out", out_.string(), "--set",
+             "obstacles=[{mesh: {file: " + (directory_ / "holed.obj").string() +
+                 ", translation: [0, 0, -3]}}]"});
+  EXPECT_EQ(outcome.exit_status, 2) << outcome.out << outcome.err;
+  EXPECT_NE(outcome.err.find("obstacles[0].mesh.file"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("holed.obj:"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("has a hole"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(fs::exists(out_));
 }
 
 // solver.levels: one summary entry per level (coarsest first), the extrapolation, and the

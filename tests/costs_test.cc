@@ -30,6 +30,7 @@
 #include "costs/fv_membrane.h"
 #include "costs/fv_shear_friction.h"
 #include "costs/fv_twist.h"
+#include "costs/mesh_contact.h"
 #include "costs/plane_contact.h"
 #include "costs/pressure_potential.h"
 #include "costs/sphere_contact.h"
@@ -37,6 +38,7 @@
 #include "costs/stretch_limit_barrier.h"
 #include "costs/tension_only_spring.h"
 #include "costs/zero_length_spring.h"
+#include "src/geometry/triangle_surface.h"
 #include "src/model/term.h"
 #include "tests/term_checks.h"
 #include "tests/test_scenes.h"
@@ -189,6 +191,36 @@ struct Sample<BoxContact> {
   }
 };
 
+// The box of Sample<BoxContact> as 12 triangles (each face split along a diagonal, normals
+// outward): over its top away from the diagonals, near a corner.
+template <>
+struct Sample<MeshContact<TriangleSurface>> {
+  static constexpr const char* kName = "MeshContact";
+  static MeshContact<TriangleSurface> Make() {
+    std::vector<Eigen::Vector3d> corners;
+    corners.reserve(8);
+    for (int k = 0; k < 8; ++k) {
+      corners.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 0 : -1);
+    }
+    return MeshContact<TriangleSurface>(TriangleSurface::Make(corners, {{0, 2, 3},
+                                                                        {0, 3, 1},
+                                                                        {4, 5, 7},
+                                                                        {4, 7, 6},
+                                                                        {0, 1, 5},
+                                                                        {0, 5, 4},
+                                                                        {2, 6, 7},
+                                                                        {2, 7, 3},
+                                                                        {0, 4, 6},
+                                                                        {0, 6, 2},
+                                                                        {1, 3, 7},
+                                                                        {1, 7, 5}}),
+                                        kClearance, kContactStiffness);
+  }
+  static std::vector<std::vector<double>> States() {
+    return {{0.3, -0.4, 0.006}, {1.002, 1.003, 0.004}};
+  }
+};
+
 template <>
 struct Sample<FvMembrane> {
   static constexpr const char* kName = "FvMembrane";
@@ -294,12 +326,11 @@ std::unique_ptr<Term> SampleTerm() {
 template <typename Functor>
 class CostsTest : public ::testing::Test {};
 
-using Functors =
-    ::testing::Types<SpringStretch, TensionOnlySpring, ZeroLengthSpring, StretchLimitBarrier,
-                     ConstantForcePotential, PressurePotential, SphereContact, PlaneContact,
-                     DiskContact, EdgeContact<DiskContact>, CylinderContact, BoxContact, FvMembrane,
-                     FvBendingEdge, FvBending, FvBendingFriction, FvBendingFrictionStep,
-                     FvShearFriction, FvTwist, FvCellShear>;
+using Functors = ::testing::Types<
+    SpringStretch, TensionOnlySpring, ZeroLengthSpring, StretchLimitBarrier, ConstantForcePotential,
+    PressurePotential, SphereContact, PlaneContact, DiskContact, EdgeContact<DiskContact>,
+    CylinderContact, BoxContact, MeshContact<TriangleSurface>, FvMembrane, FvBendingEdge, FvBending,
+    FvBendingFriction, FvBendingFrictionStep, FvShearFriction, FvTwist, FvCellShear>;
 
 class FunctorNames {
  public:

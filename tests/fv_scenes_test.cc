@@ -35,6 +35,7 @@ std::vector<CoarseScene> CoarseScenes() {
                                      {"drape_tester_cotton_30_hem.yaml", {"mesh.spacing=0.025"}},
                                      {"drape_tester_limp_30.yaml", {"mesh.spacing=0.025"}},
                                      {"sphere.yaml", square},
+                                     {"sphere_mesh.yaml", square},
                                      {"corner_plate.yaml", square}};
   for (const char* fabric : {"cotton", "polyester"}) {
     for (const auto& [size, spacing] :

@@ -1,8 +1,8 @@
-// The mesh-file reader (src/model/mesh_file.h): one sheet written as OBJ, ASCII PLY, binary PLY
+// The mesh-file reader (src/scene/mesh_file.h): one sheet written as OBJ, ASCII PLY, binary PLY
 // (both byte orders, several value types) and STL (ASCII and binary), by hand here and by Python's
 // meshio where it is installed, reads back as the same vertices and triangles, and builds the
 // same mesh; truncated and garbage files are refused with the file and the line or byte offset.
-#include "src/model/mesh_file.h"
+#include "src/scene/mesh_file.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

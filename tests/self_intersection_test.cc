@@ -11,7 +11,7 @@
 #include <fstream>
 #include <random>
 
-#include "src/model/mesh_file.h"
+#include "src/scene/mesh_file.h"
 #include "tests/scratch_folder.h"
 
 namespace drape {

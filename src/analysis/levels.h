@@ -37,6 +37,8 @@ struct LevelRecord {
   // The fabric's edges through a support disk (ContactReport::edges_through_disk): the fabric
   // passed through it. Such an answer is not used to start the next level.
   int edges_through_disk = 0;
+  // The fabric's edges through a mesh obstacle's surface (ContactReport::edges_through_body).
+  int edges_through_body = 0;
   // Crossings of a triangle's side and a triangle (SelfIntersections::crossings): the fabric
   // passed through itself. Neither is such an answer used to start the next level.
   int self_crossings = 0;
@@ -45,8 +47,10 @@ struct LevelRecord {
   // The interpolated start led through a disk or through itself, so the level was solved again
   // from the flat start (iterations and time count both solves).
   bool restarted_flat = false;
-  // The level's answer is no drape: the fabric passes through a disk or through itself.
-  bool PassesThrough() const { return edges_through_disk > 0 || self_crossings > 0; }
+  // The level's answer is no drape: the fabric passes through a disk, a mesh obstacle or itself.
+  bool PassesThrough() const {
+    return edges_through_disk > 0 || edges_through_body > 0 || self_crossings > 0;
+  }
 };
 
 // q(h) = q₀ + C h^p fitted through the three finest levels.

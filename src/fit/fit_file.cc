@@ -17,13 +17,13 @@
 #include "src/analysis/levels.h"
 #include "src/analysis/mesh_rule.h"
 #include "src/fit/fit_methods.h"
-#include "src/model/mesh_file.h"
 #include "src/model/model.h"
 #include "src/output/json.h"
 #include "src/output/writers.h"
 #include "src/run/load_steps.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_models.h"
+#include "src/scene/mesh_file.h"
 #include "src/scene/number_text.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/yaml_reader.h"
@@ -151,7 +151,7 @@ int RowId(const Rows& rows, size_t row, const std::string& path) {
   return static_cast<int>(id);
 }
 
-// The vertices of a mesh file (PLY, STL or OBJ; src/model/mesh_file.h) as a point cloud; the
+// The vertices of a mesh file (PLY, STL or OBJ; src/scene/mesh_file.h) as a point cloud; the
 // faces are not needed. `lines` is 0 for each point: a cloud's errors never name a point.
 PositionData ReadMeshVertices(const std::string& path, const Location& where) {
   MeshFileData mesh;

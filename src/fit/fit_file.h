@@ -1,6 +1,6 @@
 // The fit file of `drape fit`: which scene keys to fit, to which measurements, by which
 // method. Read with located errors ("file:line:column: key.path: what is wrong"); measurement
-// data files (csv, xyz, and ply/stl/obj through src/model/mesh_file.h) are read here too, so that
+// data files (csv, xyz, and ply/stl/obj through src/scene/mesh_file.h) are read here too, so that
 // every bad input is reported before a single equilibrium is solved.
 #ifndef DRAPE_SRC_FIT_FIT_FILE_H_
 #define DRAPE_SRC_FIT_FIT_FILE_H_

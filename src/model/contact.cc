@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <set>
 #include <string>
 #include <utility>
 
 #include "src/model/obstacle_kinds.h"
+#include "src/model/self_intersection.h"
 
 namespace drape {
 
@@ -146,6 +148,7 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
   report.nodes_under_disk = under.nodes;
   report.edges_through_disk = under.edges;
   report.under_disk_inside = under.inside;
+  report.edges_through_body = EdgesThroughBodies(obstacles, model, positions);
   return report;
 }
 
@@ -183,6 +186,30 @@ void CountEdgesThroughDisks(const std::vector<ObstacleSpec>& obstacles, const Mo
 
 }  // namespace
 
+int EdgesThroughBodies(const std::vector<ObstacleSpec>& obstacles, const Model& model,
+                       const double* positions) {
+  int crossing = 0;
+  for (const ObstacleSpec& body : obstacles) {
+    if (body.surface == nullptr) continue;
+    const TriangleSurface& surface = *body.surface;
+    for (const auto& [a, b] : FabricEdges(model)) {
+      const Eigen::Vector3d p = NodeAt(positions, a), q = NodeAt(positions, b);
+      Box box;
+      box.Add(p);
+      box.Add(q);
+      for (int f : surface.FacesNear(box, 0.0)) {
+        const auto& corner = surface.faces()[f];
+        const auto& v = surface.vertices();
+        if (SegmentCrossesTriangle(p, q, v[corner[0]], v[corner[1]], v[corner[2]])) {
+          ++crossing;
+          break;
+        }
+      }
+    }
+  }
+  return crossing;
+}
+
 DiscPlace PlaceOnDisc(const ObstacleSpec& disc, double clearance, const double* x) {
   const double h = x[2] - disc.center.z();
   const double rho = DistanceFromAxis(disc, x);
@@ -213,6 +240,13 @@ UnderDisks NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double cl
 
 namespace {
 
+// Signed distance to `obstacle` at x where its magnitude is below `within`, else `within`.
+double DistanceWithin(const ObstacleSpec& obstacle, const double* x, double within) {
+  const ObstacleKind& kind = ObstacleKindOf(obstacle);
+  if (kind.bounded_distance) return kind.bounded_distance(obstacle, x, within);
+  return std::min(kind.distance(obstacle, x), within);
+}
+
 // Signed distance to `obstacle` at from + s (to − from).
 double DistanceAlong(const ObstacleSpec& obstacle, const double* from, const double* to, double s) {
   const double x[3] = {from[0] + s * (to[0] - from[0]), from[1] + s * (to[1] - from[1]),
@@ -220,18 +254,53 @@ double DistanceAlong(const ObstacleSpec& obstacle, const double* from, const dou
   return ObstacleDistance(obstacle, x);
 }
 
+// For a body that is not convex (a mesh obstacle's surface): conservative advancement. The distance
+// is 1-Lipschitz, so from s the point cannot come within `floor` before s + (d(s) − floor) /
+// length; each step goes that far, and stops where the point comes within 1 % of the floor's
+// margin of it (or after kMaxAdvances steps, where it stays: a grazing move is cut short, never
+// let through). d(s) is bounded below by the distance to the faces near the move (within 2 floor
+// of its box): exact where it is below 2 floor, which is all the advancement needs, and cheap.
+double AdvanceToFloor(const TriangleSurface& surface, const double* from, const double* to,
+                      double start, double floor, double length) {
+  constexpr int kMaxAdvances = 100;
+  Box swept;
+  swept.Add(Eigen::Vector3d(from[0], from[1], from[2]));
+  swept.Add(Eigen::Vector3d(to[0], to[1], to[2]));
+  const double reach = 2.0 * floor;
+  const std::vector<int> faces = surface.FacesNear(swept, reach);
+  if (faces.empty()) return 1.0;
+  double s = 0.0, distance = start;
+  for (int k = 0; k < kMaxAdvances; ++k) {
+    const double margin = distance - floor;
+    if (margin <= 0.01 * floor) return s;
+    s += margin / length;
+    if (s >= 1.0) return 1.0;
+    const double x[3] = {from[0] + s * (to[0] - from[0]), from[1] + s * (to[1] - from[1]),
+                         from[2] + s * (to[2] - from[2])};
+    distance = std::min(surface.DistanceToFaces(faces, x), reach);
+  }
+  return s;
+}
+
 // The step-limit rule for one node and obstacle (see NodeSafeFraction).
 double SafeFractionFor(const ObstacleSpec& obstacle, double thickness, const double* from,
                        const double* to) {
-  const double start = ObstacleDistance(obstacle, from);
-  if (!(start > 0.0)) return 1.0;  // already inside (or on) the body: nothing to guard
-  const double floor = 0.5 * std::min(start, thickness);
   const double length =
       std::sqrt((to[0] - from[0]) * (to[0] - from[0]) + (to[1] - from[1]) * (to[1] - from[1]) +
                 (to[2] - from[2]) * (to[2] - from[2]));
+  // Farther than the move and the clearance: the move cannot come within the floor.
+  const double within = length + 2.0 * thickness;
+  const double start = DistanceWithin(obstacle, from, within);
+  if (start >= within) return 1.0;
+  if (!(start > 0.0)) return 1.0;  // already inside (or on) the body: nothing to guard
+  const double floor = 0.5 * std::min(start, thickness);
   if (start - length >= floor) return 1.0;  // the distance is 1-Lipschitz: cannot get there
   if (!std::isfinite(length)) return 0.0;
-  // d(s) is convex along the segment (every obstacle is a convex body): golden-section search
+  if (!ObstacleKindOf(obstacle).convex) {
+    assert(obstacle.surface != nullptr && "a body that is not convex is a mesh obstacle's");
+    return AdvanceToFloor(*obstacle.surface, from, to, start, floor, length);
+  }
+  // d(s) is convex along the segment (the body is): golden-section search
   // for its minimum, then bisection for where it first falls to the floor.
   constexpr double kGolden = 0.6180339887498949;
   double low = 0.0, high = 1.0;
@@ -254,6 +323,22 @@ double SafeFractionFor(const ObstacleSpec& obstacle, double thickness, const dou
   return safe;
 }
 
+// Whether every point of the edge a–b moving to a'–b' stays farther than the clearance from the
+// obstacle: each point starts within half the edge's length of its middle and moves no farther
+// than the farther-moving end, so all stay in the ball around the middle of that radius.
+bool EdgeStaysClear(const ObstacleSpec& obstacle, double thickness, const double* a,
+                    const double* b, const double* a_to, const double* b_to) {
+  double middle[3], half = 0.0, move_a = 0.0, move_b = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    middle[c] = 0.5 * (a[c] + b[c]);
+    half += 0.25 * (b[c] - a[c]) * (b[c] - a[c]);
+    move_a += (a_to[c] - a[c]) * (a_to[c] - a[c]);
+    move_b += (b_to[c] - b[c]) * (b_to[c] - b[c]);
+  }
+  const double within = std::sqrt(half) + std::sqrt(std::max(move_a, move_b)) + 2.0 * thickness;
+  return std::isfinite(within) && DistanceWithin(obstacle, middle, within) >= within;
+}
+
 }  // namespace
 
 double NodeSafeFraction(const Model& model, const double* from, const double* to) {
@@ -274,6 +359,10 @@ double ObstacleSafeFraction(const Model& model, const double* from, const double
     if (term.edge_points == 0) continue;
     const std::vector<int>& ends = model.terms[term.term]->nodes();
     const ObstacleSpec& obstacle = model.obstacles[term.obstacle];
+    if (EdgeStaysClear(obstacle, model.contact.thickness, from + 3 * ends[0], from + 3 * ends[1],
+                       to + 3 * ends[0], to + 3 * ends[1])) {
+      continue;
+    }
     for (int j = 1; j <= term.edge_points; ++j) {
       const double s = static_cast<double>(j) / (term.edge_points + 1);
       double point_from[3], point_to[3];

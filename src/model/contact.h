@@ -40,8 +40,13 @@ struct ContactReport {
   int nodes_under_disk = 0;                       // UnderDisks: nodes hanging under a disk
   int edges_through_disk = 0;                     // UnderDisks: edges through a disk
   double under_disk_inside = 0.0;                 // UnderDisks: those edges' farthest inside, m
+  int edges_through_body = 0;                     // fabric edges crossing a mesh obstacle's surface
   // Whether the fabric has passed through a support disk (the state is no drape over it).
   bool ThroughDisk() const { return edges_through_disk > 0; }
+  // Whether the fabric has passed through a mesh obstacle's surface (no edge crosses an analytic
+  // body's without a node inside it, which the certificate refuses; a mesh's thin parts can be
+  // crossed by an edge whose nodes are both outside).
+  bool ThroughBody() const { return edges_through_body > 0; }
 };
 
 // k = F_ref / (f t)² (see above), N/m².
@@ -94,6 +99,12 @@ struct UnderDisks {
 };
 UnderDisks NodesUnderDisks(const std::vector<ObstacleSpec>& obstacles, double clearance,
                            const Model& model, const double* positions);
+
+// The fabric's edges (triangle sides and line elements) at `positions` that cross the surface of a
+// mesh obstacle (src/geometry/triangle_surface.h): SegmentCrossesTriangle
+// (src/model/self_intersection.h) against the faces whose boxes the edge's box meets.
+int EdgesThroughBodies(const std::vector<ObstacleSpec>& obstacles, const Model& model,
+                       const double* positions);
 
 // Whether an obstacle pushes on `node`: its force in `contact_forces` (3 per node, N: −∇ of the
 // contact terms, Certificate::contact_forces, empty without obstacles) is finite and not zero. The

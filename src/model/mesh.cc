@@ -15,7 +15,7 @@
 //   specimen's mass is πR²ρ at every spacing. The triangles cover the staircase polygon; the
 //   fringe (struct Fringe) covers the rest of the disc for the drape coefficient's shadow.
 // - arc: node 0 is the centre, then ring r = 1..rings, spoke k: id 1 + (r-1)*spokes + k.
-// - file: OBJ, PLY (ASCII or binary) or STL (ASCII or binary), read by src/model/mesh_file.h;
+// - file: OBJ, PLY (ASCII or binary) or STL (ASCII or binary), read by src/scene/mesh_file.h;
 //   node ids are the vertex order, from 0 (OBJ counts from 1; STL: in order of first appearance,
 //   exactly equal vertices merged).
 #include "src/model/mesh.h"
@@ -30,7 +30,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "src/model/mesh_file.h"
+#include "src/scene/mesh_file.h"
 
 namespace drape {
 

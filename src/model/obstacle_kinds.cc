@@ -8,6 +8,7 @@
 #include "costs/cylinder_contact.h"
 #include "costs/disk_contact.h"
 #include "costs/edge_contact.h"
+#include "costs/mesh_contact.h"
 #include "costs/plane_contact.h"
 #include "costs/sphere_contact.h"
 
@@ -164,6 +165,39 @@ ObstacleKind PinRow() {
   return row;
 }
 
+// A rigid body bounded by a closed triangle surface read from a file (src/scene/obstacle_mesh.h).
+ObstacleKind MeshRow() {
+  ObstacleKind row =
+      Row("mesh", {"file"},
+          "`file` (OBJ, PLY or STL: a closed surface, outward normals), `scale` > 0, `rotation` "
+          "[3] (degrees), `translation` [3]",
+          false, [](const ObstacleSpec& o, double t, double k) {
+            assert(o.surface != nullptr && "the scene loader reads a mesh obstacle's file");
+            return MeshContact<TriangleSurface>(o.surface, t, k);
+          });
+  // The exact distance everywhere (the functor's looks no farther than 2t).
+  row.distance = [](const ObstacleSpec& o, const double* x) {
+    return o.surface->SignedDistance(x);
+  };
+  row.bounded_distance = [](const ObstacleSpec& o, const double* x, double within) {
+    return o.surface->Nearest(x, within).distance;
+  };
+  row.optional_keys = {"scale", "rotation", "translation"};
+  row.convex = false;
+  row.draw = [](const ObstacleSpec& o, const DrawingFrame&) {
+    ObstaclePart part;
+    part.shape = ObstaclePart::Shape::kSurface;
+    part.surface = o.surface;
+    return std::vector<ObstaclePart>{part};
+  };
+  row.lowest_z = [](const ObstacleSpec& o) { return o.surface->bounds().low.z(); };
+  return row;
+}
+
+bool Contains(const std::vector<std::string>& keys, const std::string& key) {
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
 std::string KindNames() {
   std::string names;
   for (const ObstacleKind& kind : ObstacleKinds()) names += (names.empty() ? "" : ", ") + kind.name;
@@ -180,8 +214,8 @@ const ObstacleKind* FindKind(const std::string& name) {
 }  // namespace
 
 const std::vector<ObstacleKind>& ObstacleKinds() {
-  static const std::vector<ObstacleKind> kinds = {SphereRow(), DiskRow(),  CylinderRow(),
-                                                  BoxRow(),    PlaneRow(), PinRow()};
+  static const std::vector<ObstacleKind> kinds = {SphereRow(), DiskRow(), CylinderRow(), BoxRow(),
+                                                  PlaneRow(),  PinRow(),  MeshRow()};
   return kinds;
 }
 
@@ -192,10 +226,10 @@ const ObstacleKind& CheckedObstacleKind(const ObstacleSpec& obstacle) {
                                          "' (expected one of: " + KindNames() + ")");
   }
   for (const auto& [key, where] : obstacle.given) {
-    if (key != "friction" &&
-        std::find(kind->keys.begin(), kind->keys.end(), key) == kind->keys.end()) {
+    if (key != "friction" && !Contains(kind->keys, key) && !Contains(kind->optional_keys, key)) {
       std::string keys;
       for (const std::string& name : kind->keys) keys += name + ", ";
+      for (const std::string& name : kind->optional_keys) keys += name + ", ";
       throw InputError(
           where, "a " + kind->name + " takes no '" + key + "' (its keys: " + keys + "friction)");
     }

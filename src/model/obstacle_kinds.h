@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "src/geometry/triangle_surface.h"
 #include "src/model/term.h"
 #include "src/scene/scene.h"
 
@@ -29,11 +30,13 @@ struct ObstaclePart {
     kCylinder,  // vertical, top centre `a`, `radius`, `height` downward, `capped` top
     kBox,       // corners `a` (min) and `b` (max)
     kPlane,     // point `a`, unit normal `b`: a patch around the fabric
+    kSurface,   // the triangles of `surface`
   };
   Shape shape = Shape::kSphere;
   Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();
   double radius = 0.0, height = 0.0;
   bool capped = true;
+  std::shared_ptr<const TriangleSurface> surface;
 };
 
 // What the picture knows of the scene when it draws an obstacle.
@@ -43,14 +46,21 @@ struct DrawingFrame {
 };
 
 struct ObstacleKind {
-  std::string name;               // the key in the scene file: "sphere"
-  std::vector<std::string> keys;  // all required; `friction` is accepted by every kind
-  std::string doc;                // docs/reference.md's obstacle table: the keys' meaning
+  std::string name;                        // the key in the scene file: "sphere"
+  std::vector<std::string> keys;           // all required; `friction` is accepted by every kind
+  std::vector<std::string> optional_keys;  // keys with a default
+  std::string doc;                         // docs/reference.md's obstacle table: the keys' meaning
   // A drape tester's support (disk, pin): the drape profile is centred on it, and its radius is
   // the Cusick coefficient's disc radius.
   bool support = false;
+  // Whether the body is convex: the distance along a straight move is then convex, which the step
+  // limit's search uses (src/model/contact.h, ObstacleSafeFraction).
+  bool convex = true;
   // Signed distance from x (3 doubles) to the surface, m, positive outside.
   std::function<double(const ObstacleSpec&, const double* x)> distance;
+  // The same where its magnitude is below `within`, else `within` (a point that far on either
+  // side); null where `distance` is as cheap.
+  std::function<double(const ObstacleSpec&, const double* x, double within)> bounded_distance;
   // The contact term of `node` (costs/contact_penalty.h: clearance t, stiffness k, the least-
   // squares shift of src/model/term.h).
   std::function<std::unique_ptr<Term>(const ObstacleSpec&, int node, double clearance,

@@ -7,6 +7,8 @@
 #include <limits>
 #include <utility>
 
+#include "src/geometry/box_tree.h"
+
 namespace drape {
 
 namespace {
@@ -19,92 +21,6 @@ int TripleProductSign(const Vector3d& u, const Vector3d& v, const Vector3d& w) {
   const double zero = kCrossingTolerance * u.norm() * v.norm() * w.norm();
   return product > zero ? 1 : (product < -zero ? -1 : 0);
 }
-
-struct Box {
-  Vector3d low = Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Vector3d high = Vector3d::Constant(-std::numeric_limits<double>::infinity());
-  void Add(const Vector3d& point) {
-    low = low.cwiseMin(point);
-    high = high.cwiseMax(point);
-  }
-  void Add(const Box& box) {
-    low = low.cwiseMin(box.low);
-    high = high.cwiseMax(box.high);
-  }
-  bool Overlaps(const Box& box) const {
-    return (low.array() <= box.high.array()).all() && (box.low.array() <= high.array()).all();
-  }
-  Vector3d Centre() const { return 0.5 * (low + high); }
-};
-
-// A bounding-box tree: each node holds the box around its items; a leaf holds at most kLeafSize.
-// Built by splitting the items at the median of their boxes' centres along the longest side of
-// the centres' box.
-class BoxTree {
- public:
-  explicit BoxTree(std::vector<Box> boxes) : boxes_(std::move(boxes)), order_(boxes_.size()) {
-    for (int i = 0; i < static_cast<int>(order_.size()); ++i) order_[i] = i;
-    if (!order_.empty()) Build(0, static_cast<int>(order_.size()));
-  }
-
-  // Calls visit(item) for every item whose box overlaps `query`.
-  template <typename Visit>
-  void ForEachOverlap(const Box& query, Visit visit) const {
-    if (nodes_.empty()) return;
-    std::vector<int> stack = {0};
-    while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      stack.pop_back();
-      if (!node.box.Overlaps(query)) continue;
-      if (node.left < 0) {
-        for (int k = node.first; k < node.first + node.count; ++k) {
-          if (boxes_[order_[k]].Overlaps(query)) visit(order_[k]);
-        }
-      } else {
-        stack.push_back(node.left);
-        stack.push_back(node.right);
-      }
-    }
-  }
-
- private:
-  static constexpr int kLeafSize = 4;
-  struct Node {
-    Box box;
-    int first = 0, count = 0;
-    int left = -1, right = -1;  // its children's indices; -1 for a leaf
-  };
-
-  // The node of order_[first, first + count): returns its index.
-  int Build(int first, int count) {
-    const int index = static_cast<int>(nodes_.size());
-    nodes_.emplace_back();
-    Box box, centres;
-    for (int k = first; k < first + count; ++k) {
-      box.Add(boxes_[order_[k]]);
-      centres.Add(boxes_[order_[k]].Centre());
-    }
-    nodes_[index].box = box;
-    nodes_[index].first = first;
-    nodes_[index].count = count;
-    if (count <= kLeafSize) return index;
-    int axis = 0;
-    (centres.high - centres.low).maxCoeff(&axis);
-    const int half = count / 2;
-    std::nth_element(
-        order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count,
-        [&](int a, int b) { return boxes_[a].Centre()[axis] < boxes_[b].Centre()[axis]; });
-    const int left = Build(first, half);
-    const int right = Build(first + half, count - half);
-    nodes_[index].left = left;
-    nodes_[index].right = right;
-    return index;
-  }
-
-  std::vector<Box> boxes_;
-  std::vector<int> order_;
-  std::vector<Node> nodes_;
-};
 
 Vector3d Point(const std::vector<double>& positions, int node) {
   return Vector3d(positions[3 * node], positions[3 * node + 1], positions[3 * node + 2]);

@@ -243,6 +243,12 @@ void AddPart(const ObstaclePart& part, const Box3& fabric, std::vector<Primitive
     case ObstaclePart::Shape::kPlane:
       AddPlanePatch(part.a, part.b, fabric, out);
       break;
+    case ObstaclePart::Shape::kSurface:
+      for (const auto& face : part.surface->faces()) {
+        const auto& v = part.surface->vertices();
+        out->push_back({{v[face[0]], v[face[1]], v[face[2]]}, kObstacle});
+      }
+      break;
   }
 }
 

@@ -368,6 +368,10 @@ void WriteObstacle(const ObstacleSpec& obstacle, YAML::Emitter& out) {
   out << YAML::BeginMap;
   Key(out, obstacle.kind);
   out << YAML::Value << YAML::BeginMap;
+  if (!obstacle.file.empty()) {
+    Key(out, "file");
+    out << YAML::Value << Absolute(obstacle.file);
+  }
   WriteFields(out, "obstacles", obstacle, obstacle.kind);
   out << YAML::EndMap << YAML::EndMap;
 }

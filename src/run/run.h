@@ -38,7 +38,9 @@ struct RunResult {
   // The final state is no drape at all, whatever its forces: the fabric passes through a support
   // disk or through itself. Such a state is never a stable minimum (exit status 3) and never
   // counted among a lab's drops or fabrics.
-  bool PassesThrough() const { return contact.ThroughDisk() || self_intersections.Any(); }
+  bool PassesThrough() const {
+    return contact.ThroughDisk() || contact.ThroughBody() || self_intersections.Any();
+  }
 };
 
 // Solves with scene.solver (method, tolerance, limits, method options). `on_iteration` may be

@@ -50,6 +50,7 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     record.converged = result.converged;
     record.stable = result.stability.computed && result.stability.stable;
     record.edges_through_disk = result.contact.edges_through_disk;
+    record.edges_through_body = result.contact.edges_through_body;
     record.self_crossings = result.self_intersections.crossings;
     if (HasDrapeCoefficient(scenes[k], current)) {
       const DrapeAnalysis drape = AnalyseDrape(scenes[k], current);

@@ -30,10 +30,20 @@ std::string ThroughItselfText(const SelfIntersections& found) {
          std::to_string(found.triangle[1]) + " " + std::to_string(found.triangle[2]) + ")";
 }
 
-// What makes the state no drape: through a disk, through itself, or both.
+// "fabric through a mesh obstacle (3 edges cross its surface)".
+std::string ThroughBodyText(const ContactReport& contact) {
+  const int edges = contact.edges_through_body;
+  return "fabric through a mesh obstacle (" + std::to_string(edges) +
+         (edges == 1 ? " edge crosses" : " edges cross") + " its surface)";
+}
+
+// What makes the state no drape: through a disk, a mesh obstacle, itself, or several.
 std::string PassesThroughText(const RunResult& result) {
   std::string text;
   if (result.contact.ThroughDisk()) text = ThroughDiskText(result.contact);
+  if (result.contact.ThroughBody()) {
+    text += (text.empty() ? "" : "; ") + ThroughBodyText(result.contact);
+  }
   if (result.self_intersections.Any()) {
     text += (text.empty() ? "" : "; ") + ThroughItselfText(result.self_intersections);
   }

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "src/geometry/triangle_surface.h"
 #include "src/scene/material_models.h"
 #include "src/scene/output_kinds.h"
 
@@ -238,6 +239,13 @@ struct ObstacleSpec {
   double height = 0.0;                                                           // cylinder
   Eigen::Vector3d min = Eigen::Vector3d::Zero(), max = Eigen::Vector3d::Zero();  // box
   Eigen::Vector3d normal{0.0, 0.0, 1.0};  // plane (its `point` in `center`), normalised
+  // mesh: the file (resolved against the scene file's folder) and its placement, x' = R (s x) + t
+  // (src/geometry/triangle_surface.h, PlaceVertex); the loader reads the file into `surface`.
+  std::string file;
+  double scale = 1.0;
+  Eigen::Vector3d rotation = Eigen::Vector3d::Zero();     // degrees about x, then y, then z
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();  // m
+  std::shared_ptr<const TriangleSurface> surface;
   double friction = 0.0;
   std::map<std::string, Location> given;  // the keys written, with where each value is
   Location where;

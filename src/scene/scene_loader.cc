@@ -22,6 +22,7 @@
 #include "src/scene/file_paths.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
+#include "src/scene/obstacle_mesh.h"
 #include "src/scene/output_kinds.h"
 #include "src/scene/scene_schema.h"
 #include "src/scene/scene_size.h"
@@ -914,7 +915,7 @@ const std::vector<std::string>& ObstacleKeys() {
   return keys;
 }
 
-ObstacleSpec ReadObstacle(const YamlValue& item) {
+ObstacleSpec ReadObstacle(const YamlValue& item, const std::string& scene_directory) {
   const YamlMap outer(item);
   const auto kinds = outer.Keys();
   if (kinds.empty()) Fail(item, "expected one obstacle (- sphere: {...})");
@@ -930,15 +931,20 @@ ObstacleSpec ReadObstacle(const YamlValue& item) {
   for (const std::string& key : map.Keys()) obstacle.given[key] = map.Get(key).where;
   ReadFields(map, "obstacles", &obstacle);
   Normalise(map, "normal", &obstacle.normal);
+  if (map.Has("file")) obstacle.file = ReadString(map.Get("file"));
+  if (obstacle.kind == "mesh") LoadObstacleMesh(scene_directory, &obstacle);
   return obstacle;
 }
 
-std::vector<ObstacleSpec> ReadObstacles(const YamlValue& value) {
+std::vector<ObstacleSpec> ReadObstacles(const YamlValue& value,
+                                        const std::string& scene_directory) {
   if (!value.get().IsSequence() && !value.get().IsNull()) {
     Fail(value, "expected a list of obstacles (- sphere: {...}), got " + Describe(value.get()));
   }
   std::vector<ObstacleSpec> obstacles;
-  for (const auto& item : ReadList(value)) obstacles.push_back(ReadObstacle(item));
+  for (const auto& item : ReadList(value)) {
+    obstacles.push_back(ReadObstacle(item, scene_directory));
+  }
   return obstacles;
 }
 
@@ -1151,7 +1157,7 @@ void ReadScene(const YamlValue& root, Scene* scene) {
   if (const auto v = top.Find("fixed")) scene->fixed = ReadFixed(*v);
   if (const auto v = top.Find("loads")) scene->loads = ReadLoads(*v);
   ResolveRegionReferences(scene);
-  if (const auto v = top.Find("obstacles")) scene->obstacles = ReadObstacles(*v);
+  if (const auto v = top.Find("obstacles")) scene->obstacles = ReadObstacles(*v, scene->directory);
   scene->contact = ReadContact(OptionalSection(top, "contact"));
   if (scene->drape_test) {
     ExpandDrapeTest(scene);

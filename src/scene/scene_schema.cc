@@ -1031,6 +1031,10 @@ std::vector<SchemaRow> Obstacles() {
   const std::string box = "{min: [0, 0, -2], max: [1, 1, -1]}";
   const std::string plane = "{point: [0, 0, -1], normal: [0, 0, 2]}";
   const std::vector<std::string> round = {"sphere", "disk", "cylinder"};
+  const std::string file = "file: tests/data/meshes/octahedron.obj";
+  const std::string mesh = "{" + file + ", translation: [0, 0, -2]}";
+  const std::string mesh_scaled = "{" + file + ", scale: 2, translation: [0, 0, -3]}";
+  const std::string mesh_turned = "{" + file + ", rotation: [90, 0, 0], translation: [0, 0, -2]}";
   return {
       row("center", round, "the centre (of a cylinder's top face)", sphere, "[0, 0, -1]")
           .Point("m")
@@ -1060,6 +1064,31 @@ std::vector<SchemaRow> Obstacles() {
       row("position", {"pin"}, "the tip", "{position: [0, 0, -1]}", "[0, 0, -1]")
           .Point("m")
           .Field(&ObstacleSpec::center),
+      row("file", {"mesh"},
+          "a closed triangle surface, outward normals: OBJ, PLY or STL "
+          "([Mesh files](#mesh-files)); polygons are split into fans",
+          mesh, "")  // written as an absolute path
+          .Text(),
+      Row(t, "scale")
+          .For({"mesh"})
+          .Number("1", Above(0))
+          .Field(&ObstacleSpec::scale)
+          .Doc("multiplies the file's coordinates (0.001 for a file in mm)")
+          .Example({"obstacles=[{mesh: " + mesh_scaled + "}]"}, "obstacles[0].mesh.scale", "2"),
+      Row(t, "rotation")
+          .For({"mesh"})
+          .Point("°")
+          .Field(&ObstacleSpec::rotation)
+          .Doc("turns the scaled file about the axes x, then y, then z (fixed axes), in degrees")
+          .Example({"obstacles=[{mesh: " + mesh_turned + "}]"}, "obstacles[0].mesh.rotation",
+                   "[90, 0, 0]"),
+      Row(t, "translation")
+          .For({"mesh"})
+          .Point("m")
+          .Field(&ObstacleSpec::translation)
+          .Doc("then moves it by this vector")
+          .Example({"obstacles=[{mesh: " + mesh + "}]"}, "obstacles[0].mesh.translation",
+                   "[0, 0, -2]"),
       Row(t, "friction")
           .Number("1", AtLeast(0))
           .Field(&ObstacleSpec::friction)

@@ -7,7 +7,7 @@
 // Systems' stereolithography format: ASCII `solid … facet normal … outer loop vertex ×3 endloop
 // endfacet … endsolid`, or binary: an 80-byte header, a little-endian uint32 triangle count,
 // then per triangle 12 little-endian float32 — normal and three vertices — and a uint16).
-#include "src/model/mesh_file.h"
+#include "src/scene/mesh_file.h"
 
 #include <algorithm>
 #include <array>

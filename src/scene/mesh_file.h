@@ -1,8 +1,8 @@
 // Surface mesh files: Wavefront OBJ, PLY (ASCII, binary little- and big-endian) and STL (ASCII
 // and binary). The one reader of mesh files: `mesh: {kind: file}` (src/model/mesh.cc) and the
 // point clouds of `drape fit` (src/fit/fit_file.cc) both read through it.
-#ifndef DRAPE_SRC_MODEL_MESH_FILE_H_
-#define DRAPE_SRC_MODEL_MESH_FILE_H_
+#ifndef DRAPE_SRC_SCENE_MESH_FILE_H_
+#define DRAPE_SRC_SCENE_MESH_FILE_H_
 
 #include <Eigen/Core>
 #include <stdexcept>
@@ -44,4 +44,4 @@ MeshFileData ReadMeshFile(const std::string& path);
 
 }  // namespace drape
 
-#endif  // DRAPE_SRC_MODEL_MESH_FILE_H_
+#endif  // DRAPE_SRC_SCENE_MESH_FILE_H_

@@ -1,0 +1,70 @@
+// Closed surfaces the mesh-obstacle tests build: an icosphere, and its OBJ file.
+#ifndef DRAPE_TESTS_TEST_MESHES_H_
+#define DRAPE_TESTS_TEST_MESHES_H_
+
+#include <Eigen/Core>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "src/geometry/triangle_surface.h"
+
+namespace drape::testing {
+
+// A sphere of `radius` about the origin: an icosahedron whose faces are split in four `level`
+// times (20 · 4^level triangles), every vertex on the sphere; faces outward.
+inline std::pair<std::vector<Eigen::Vector3d>, std::vector<std::array<int, 3>>> IcosphereMesh(
+    double radius, int level) {
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Eigen::Vector3d> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                                    {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                                    {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  for (auto& p : v) p.normalize();
+  std::vector<std::array<int, 3>> faces = {
+      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (int l = 0; l < level; ++l) {
+    std::map<std::pair<int, int>, int> middle;
+    auto midpoint = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      auto [at, inserted] = middle.insert({{key.first, key.second}, 0});
+      if (inserted) {
+        v.push_back((v[a] + v[b]).normalized());
+        at->second = static_cast<int>(v.size()) - 1;
+      }
+      return at->second;
+    };
+    std::vector<std::array<int, 3>> split;
+    for (const auto& [a, b, c] : faces) {
+      const int ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+      split.insert(split.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});
+    }
+    faces = std::move(split);
+  }
+  for (auto& p : v) p *= radius;
+  return {v, faces};
+}
+
+inline std::shared_ptr<const TriangleSurface> Icosphere(double radius, int level) {
+  auto [vertices, faces] = IcosphereMesh(radius, level);
+  return TriangleSurface::Make(std::move(vertices), std::move(faces));
+}
+
+// Writes the icosphere as an OBJ file at `path`.
+inline void WriteIcosphereObj(const std::string& path, double radius, int level) {
+  const auto [vertices, faces] = IcosphereMesh(radius, level);
+  std::ofstream out(path);
+  out.precision(17);
+  for (const auto& p : vertices) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (const auto& f : faces) out << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
+}
+
+}  // namespace drape::testing
+
+#endif  // DRAPE_TESTS_TEST_MESHES_H_
