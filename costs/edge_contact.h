@@ -11,6 +11,15 @@
 
 namespace drape {
 
+// Whether a contact offers Reaches(centre, radius): whether any point within `radius` of `centre`
+// can be inside its clearance layer, answered by one query (a mesh obstacle's, whose distance
+// queries are costly: one for the whole edge instead of one per point).
+template <typename Contact, typename = void>
+struct HasReaches : std::false_type {};
+template <typename Contact>
+struct HasReaches<Contact, std::void_t<decltype(std::declval<const Contact&>().Reaches(
+                               static_cast<const double*>(nullptr), 0.0))>> : std::true_type {};
+
 // Contact of the inside of one fabric edge a–b with an obstacle: the obstacle's node contact
 // (Contact, costs/*_contact.h: its signed Distance φ, clearance t and stiffness k) at m points
 // evenly inside the edge,
@@ -28,15 +37,6 @@ namespace drape {
 // fixed in space). Units: m, N/m², J. Source: the surface-contact idea of continuous contact
 // formulations (e.g. Li et al., Incremental Potential Contact, SIGGRAPH 2020, which puts the
 // barrier on edge–edge distances); here the edge is sampled instead.
-// Whether a contact offers Reaches(centre, radius): whether any point within `radius` of `centre`
-// can be inside its clearance layer, answered by one query (a mesh obstacle's, whose distance
-// queries are costly: one for the whole edge instead of one per point).
-template <typename Contact, typename = void>
-struct HasReaches : std::false_type {};
-template <typename Contact>
-struct HasReaches<Contact, std::void_t<decltype(std::declval<const Contact&>().Reaches(
-                               static_cast<const double*>(nullptr), 0.0))>> : std::true_type {};
-
 template <typename Contact>
 struct EdgeContact {
   static constexpr int kNumNodes = 2;

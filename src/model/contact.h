@@ -52,7 +52,7 @@ struct ContactReport {
 // k = F_ref / (f t)² (see above), N/m².
 double ContactStiffness(const ContactSpec& contact, const Model& model);
 
-// Adds one "<kind>_contact" term (sphere, disk, cylinder, box, plane, pin) per obstacle and
+// Adds one "<kind>_contact" term (sphere, disk, cylinder, box, plane, pin, mesh) per obstacle and
 // reachable node, and one "<kind>_edge_contact" term per obstacle (but a plane or a pin) and edge
 // (triangle side or chain link) with a reachable, not fully fixed end and EdgeContactPoints > 0.
 // Call after the loads are in the model (the stiffness depends on them).
@@ -129,7 +129,8 @@ ContactReport MeasureContact(const std::vector<ObstacleSpec>& obstacles, const C
 // s ∈ [0, 1] such that the move of one node from `from` to from + s (to − from) (3 doubles each)
 // keeps that for every obstacle of the model; ObstacleSafeFraction: the same for all nodes at once
 // (3 per node) and for the points of every edge contact term (costs/edge_contact.h) against its
-// obstacle. 1 when the model has no obstacles.
+// obstacle. 1 when the model has no obstacles. Against a mesh body (not convex) the fraction is
+// found by conservative advancement, which may stop a little short of the largest: a safe one.
 double NodeSafeFraction(const Model& model, const double* from, const double* to);
 double ObstacleSafeFraction(const Model& model, const double* from, const double* to);
 
