@@ -41,6 +41,7 @@
 #include "src/geometry/triangle_surface.h"
 #include "src/model/term.h"
 #include "tests/term_checks.h"
+#include "tests/test_meshes.h"
 #include "tests/test_scenes.h"
 
 namespace drape {
@@ -197,24 +198,9 @@ template <>
 struct Sample<MeshContact<TriangleSurface>> {
   static constexpr const char* kName = "MeshContact";
   static MeshContact<TriangleSurface> Make() {
-    std::vector<Eigen::Vector3d> corners;
-    corners.reserve(8);
-    for (int k = 0; k < 8; ++k) {
-      corners.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 0 : -1);
-    }
-    return MeshContact<TriangleSurface>(TriangleSurface::Make(corners, {{0, 2, 3},
-                                                                        {0, 3, 1},
-                                                                        {4, 5, 7},
-                                                                        {4, 7, 6},
-                                                                        {0, 1, 5},
-                                                                        {0, 5, 4},
-                                                                        {2, 6, 7},
-                                                                        {2, 7, 3},
-                                                                        {0, 4, 6},
-                                                                        {0, 6, 2},
-                                                                        {1, 3, 7},
-                                                                        {1, 7, 5}}),
-                                        kClearance, kContactStiffness);
+    return MeshContact<TriangleSurface>(
+        testing::Cuboid(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 0)), kClearance,
+        kContactStiffness);
   }
   static std::vector<std::vector<double>> States() {
     return {{0.3, -0.4, 0.006}, {1.002, 1.003, 0.004}};

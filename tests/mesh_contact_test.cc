@@ -12,6 +12,7 @@
 #include "costs/edge_contact.h"
 #include "src/geometry/triangle_surface.h"
 #include "tests/contact_checks.h"
+#include "tests/test_meshes.h"
 
 namespace drape {
 namespace mesh_contact_test {
@@ -20,22 +21,7 @@ constexpr double kClearance = 0.002, kStiffness = 4.0e6, kSide = 0.1;
 
 // The cube [0, 0.1]³, each face split along a diagonal, normals outward.
 std::shared_ptr<const TriangleSurface> Cube() {
-  std::vector<Eigen::Vector3d> corners;
-  corners.reserve(8);
-  for (int k = 0; k < 8; ++k)
-    corners.push_back(kSide * Eigen::Vector3d(k & 1, (k >> 1) & 1, k >> 2));
-  return TriangleSurface::Make(corners, {{0, 2, 3},
-                                         {0, 3, 1},
-                                         {4, 5, 7},
-                                         {4, 7, 6},
-                                         {0, 1, 5},
-                                         {0, 5, 4},
-                                         {2, 6, 7},
-                                         {2, 7, 3},
-                                         {0, 4, 6},
-                                         {0, 6, 2},
-                                         {1, 3, 7},
-                                         {1, 7, 5}});
+  return testing::Cuboid(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(kSide));
 }
 
 MeshContact<TriangleSurface> Obstacle(double clearance = kClearance) {

@@ -56,6 +56,29 @@ inline std::shared_ptr<const TriangleSurface> Icosphere(double radius, int level
   return TriangleSurface::Make(std::move(vertices), std::move(faces));
 }
 
+// The box [low, high] as 12 triangles (each face split along a diagonal), normals outward.
+inline std::shared_ptr<const TriangleSurface> Cuboid(const Eigen::Vector3d& low,
+                                                     const Eigen::Vector3d& high) {
+  std::vector<Eigen::Vector3d> corners;
+  corners.reserve(8);
+  for (int k = 0; k < 8; ++k) {
+    corners.emplace_back(k & 1 ? high.x() : low.x(), k & 2 ? high.y() : low.y(),
+                         k & 4 ? high.z() : low.z());
+  }
+  return TriangleSurface::Make(corners, {{0, 2, 3},
+                                         {0, 3, 1},
+                                         {4, 5, 7},
+                                         {4, 7, 6},
+                                         {0, 1, 5},
+                                         {0, 5, 4},
+                                         {2, 6, 7},
+                                         {2, 7, 3},
+                                         {0, 4, 6},
+                                         {0, 6, 2},
+                                         {1, 3, 7},
+                                         {1, 7, 5}});
+}
+
 // Writes the icosphere as an OBJ file at `path`.
 inline void WriteIcosphereObj(const std::string& path, double radius, int level) {
   const auto [vertices, faces] = IcosphereMesh(radius, level);
