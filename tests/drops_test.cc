@@ -19,6 +19,7 @@
 #include "src/output/writers.h"
 #include "src/scene/scene_loader.h"
 #include "tests/scratch_folder.h"
+#include "tests/test_paths.h"
 
 namespace drape {
 namespace {
@@ -153,6 +154,25 @@ TEST_F(Drops, ACsvRowReadsBackExactly) {
   EXPECT_EQ(back.energy, record.energy);
   EXPECT_EQ(back.counted, record.counted);
   EXPECT_EQ(back.state, record.state);
+}
+
+// docs/reference.md names drops.csv's columns in order: "`OUT/drops.csv` has one row per drop
+// (`drop, offset_x_m, …`)"; they are the header drape writes (one list of columns, drops.cc).
+TEST(DropsCsv, TheReferenceNamesItsColumnsInOrder) {
+  std::ifstream in(std::string(drape_tests::kSourceDir) + "/docs/reference.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string reference = text.str();
+  const size_t at = reference.find("`OUT/drops.csv` has one row per");
+  ASSERT_NE(at, std::string::npos);
+  const size_t open = reference.find("(`", at) + 2;
+  const size_t close = reference.find("`)", open);
+  ASSERT_NE(close, std::string::npos);
+  std::string listed;
+  for (char c : reference.substr(open, close - open)) {
+    if (c != ' ' && c != '\n') listed += c;
+  }
+  EXPECT_EQ(listed, DropsCsvHeader());
 }
 
 TEST_F(Drops, OneThreadAndTwoWriteTheSameDropsAndTheStatisticsAreThoseOfDropsCsv) {

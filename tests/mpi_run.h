@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "src/output/csv_field.h"
 #include "src/sweep/sweep.h"
 #include "tests/run_program.h"
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "src/output/csv_field.h"
 #include "src/sweep/sweep.h"
 #include "tests/scratch_folder.h"
 #include "tests/test_scenes.h"

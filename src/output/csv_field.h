@@ -4,6 +4,7 @@
 #define DRAPE_SRC_OUTPUT_CSV_FIELD_H_
 
 #include <string>
+#include <vector>
 
 namespace drape {
 
@@ -14,6 +15,12 @@ std::string CsvField(const std::string& text);
 // A number in a CSV cell: FormatNumber's text (the shortest that reads back exactly), or an empty
 // cell when it is NaN or infinite (no NaN in any output).
 std::string CsvNumber(double value);
+
+// One CSV line of `cells`, each through CsvField.
+std::string CsvLine(const std::vector<std::string>& cells);
+
+// Splits one CSV line as CsvLine writes them (a quoted field may hold commas and doubled quotes).
+std::vector<std::string> SplitCsvLine(const std::string& line);
 
 }  // namespace drape
 

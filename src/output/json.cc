@@ -67,7 +67,8 @@ std::string Joined(const std::vector<std::string>& items, const char* open, cons
   return text + std::string(2 * depth, ' ') + close;
 }
 
-std::vector<std::string> Members(const std::vector<std::pair<std::string, std::string>>& members) {
+std::vector<std::string> MemberTexts(
+    const std::vector<std::pair<std::string, std::string>>& members) {
   std::vector<std::string> items;
   items.reserve(members.size());
   for (const auto& [key, value] : members) items.push_back(JsonString(key) + ": " + value);
@@ -77,11 +78,11 @@ std::vector<std::string> Members(const std::vector<std::pair<std::string, std::s
 }  // namespace
 
 std::string JsonObject(const std::vector<std::pair<std::string, std::string>>& members, int depth) {
-  return Joined(Members(members), "{", "}", depth);
+  return Joined(MemberTexts(members), "{", "}", depth);
 }
 
 std::string JsonInlineObject(const std::vector<std::pair<std::string, std::string>>& members) {
-  return Joined(Members(members), "{", "}", -1);
+  return Joined(MemberTexts(members), "{", "}", -1);
 }
 
 std::string JsonList(const std::vector<std::string>& items) { return Joined(items, "[", "]", -1); }

@@ -12,6 +12,7 @@
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
 #include "src/output/csv_field.h"
+#include "src/output/csv_record.h"
 #include "src/output/json.h"
 #include "src/output/provenance.h"
 #include "src/output/result_folder.h"
@@ -279,32 +280,40 @@ DropStatistics ComputeDropStatistics(const std::vector<DropRecord>& drops) {
   return s;
 }
 
-std::string DropsCsvHeader() {
-  return "drop,offset_x_m,offset_y_m,waviness_m,drape_coefficient,folds,energy_J,counted,state";
+namespace {
+
+// One coordinate of the drop's offset as a column.
+CsvColumn<DropRecord> OffsetColumn(std::string name, int axis) {
+  return {std::move(name), [axis](const DropRecord& r) { return CsvCellText(r.offset[axis]); },
+          [axis](const std::string& cell, DropRecord& r) { ReadCsvCell(cell, &r.offset[axis]); }};
 }
 
-std::string DropCsvRow(const DropRecord& r) {
-  return std::to_string(r.drop) + "," + CsvNumber(r.offset.x()) + "," + CsvNumber(r.offset.y()) +
-         "," + CsvNumber(r.waviness) + "," + CsvNumber(r.drape_coefficient) + "," +
-         std::to_string(r.folds) + "," + CsvNumber(r.energy) + "," +
-         (r.counted ? "true" : "false") + "," + CsvField(r.state);
+const CsvColumns<DropRecord>& DropColumns() {
+  static const CsvColumns<DropRecord> columns = {
+      MemberColumn("drop", &DropRecord::drop),
+      OffsetColumn("offset_x_m", 0),
+      OffsetColumn("offset_y_m", 1),
+      MemberColumn("waviness_m", &DropRecord::waviness),
+      MemberColumn("drape_coefficient", &DropRecord::drape_coefficient),
+      MemberColumn("folds", &DropRecord::folds),
+      MemberColumn("energy_J", &DropRecord::energy),
+      MemberColumn("counted", &DropRecord::counted),
+      MemberColumn("state", &DropRecord::state),
+  };
+  return columns;
 }
+
+}  // namespace
+
+std::string DropsCsvHeader() { return CsvHeader(DropColumns()); }
+
+std::string DropCsvRow(const DropRecord& record) { return CsvRow(DropColumns(), record); }
 
 DropRecord ParseDropCsvRow(const std::string& row) {
-  const std::vector<std::string> cells = SplitCsvLine(row);
-  if (cells.size() != 9)
-    throw std::runtime_error("a drops.csv row with " + std::to_string(cells.size()) +
-                             " cells: " + row);
-  DropRecord r;
-  r.drop = std::stoi(cells[0]);
-  r.offset = Eigen::Vector2d(std::stod(cells[1]), std::stod(cells[2]));
-  r.waviness = std::stod(cells[3]);
-  r.drape_coefficient = std::stod(cells[4]);
-  r.folds = std::stoi(cells[5]);
-  r.energy = std::stod(cells[6]);
-  r.counted = cells[7] == "true";
-  r.state = cells[8];
-  return r;
+  std::optional<DropRecord> record = ParseCsvRow(DropColumns(), row);
+  if (!record)
+    throw std::runtime_error("a drops.csv row that is not " + DropsCsvHeader() + ": " + row);
+  return *record;
 }
 
 DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostream& log) {

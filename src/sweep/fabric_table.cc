@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "src/output/csv_field.h"
 #include "src/scene/number_text.h"
 #include "src/scene/scene.h"
 #include "src/scene/scene_schema.h"

@@ -12,6 +12,7 @@
 #include "src/numerics/library_threads.h"
 #include "src/output/atomic_file.h"
 #include "src/output/csv_field.h"
+#include "src/output/csv_record.h"
 #include "src/output/json.h"
 #include "src/output/provenance.h"
 #include "src/output/result_folder.h"
@@ -121,34 +122,32 @@ std::vector<std::string> FabricTaskIdentities(const FabricsSpec& spec) {
   return identities;
 }
 
-std::string RecordText(const FabricTaskRecord& r) {
-  return std::to_string(r.fabric) + "," + std::to_string(r.drop) + "," + JsonBool(r.solved) + "," +
-         JsonBool(r.counted) + "," + CsvNumber(r.drape_coefficient) + "," +
-         CsvNumber(r.drape_coefficient_error) + "," + std::to_string(r.folds) + "," +
-         std::to_string(r.iterations) + "," + CsvNumber(r.time_s) + "," + CsvField(r.state) + "," +
-         CsvField(r.drape_version);
+// A finished task's record file: one row of these columns (no header; a record of another
+// layout does not read, and its task is solved again).
+const CsvColumns<FabricTaskRecord>& FabricTaskColumns() {
+  using R = FabricTaskRecord;
+  static const CsvColumns<R> columns = {
+      MemberColumn("fabric", &R::fabric),
+      MemberColumn("drop", &R::drop),
+      MemberColumn("solved", &R::solved),
+      MemberColumn("counted", &R::counted),
+      MemberColumn("drape_coefficient", &R::drape_coefficient),
+      MemberColumn("drape_coefficient_error", &R::drape_coefficient_error),
+      MemberColumn("folds", &R::folds),
+      MemberColumn("iterations", &R::iterations),
+      MemberColumn("time_s", &R::time_s),
+      MemberColumn("state", &R::state),
+      MemberColumn("drape_version", &R::drape_version),
+  };
+  return columns;
+}
+
+std::string RecordText(const FabricTaskRecord& record) {
+  return CsvRow(FabricTaskColumns(), record);
 }
 
 std::optional<FabricTaskRecord> ParseRecord(const std::string& line) {
-  const std::vector<std::string> cells = SplitCsvLine(line);
-  if (cells.size() != 11) return std::nullopt;  // a record of an older layout: solved again
-  FabricTaskRecord r;
-  try {
-    r.fabric = std::stoi(cells[0]);
-    r.drop = std::stoi(cells[1]);
-    r.solved = cells[2] == JsonBool(true);
-    r.counted = cells[3] == JsonBool(true);
-    r.drape_coefficient = std::stod(cells[4]);
-    r.drape_coefficient_error = std::stod(cells[5]);
-    r.folds = std::stoi(cells[6]);
-    r.iterations = std::stoi(cells[7]);
-    r.time_s = std::stod(cells[8]);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  r.state = cells[9];
-  r.drape_version = cells[10];
-  return r;
+  return ParseCsvRow(FabricTaskColumns(), line);
 }
 
 std::optional<FabricTaskRecord> FinishedFabricRecord(const FabricsContext& context, int task) {

@@ -444,37 +444,12 @@ std::vector<std::string> TaskIdentities(const SweepSpec& spec) {
   return identities;
 }
 
-std::string CsvLine(const std::vector<std::string>& cells) {
-  std::string line;
-  for (size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + CsvField(cells[k]);
-  return line;
-}
-
 std::string Fingerprint(const std::string& bytes) {
   std::uint64_t hash = 14695981039346656037ull;
   for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
   char text[20];
   std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
   return text;
-}
-
-std::vector<std::string> SplitCsvLine(const std::string& line) {
-  std::vector<std::string> cells(1);
-  bool quoted = false;
-  for (size_t k = 0; k < line.size(); ++k) {
-    const char c = line[k];
-    if (quoted && c == '"' && k + 1 < line.size() && line[k + 1] == '"') {
-      cells.back() += '"';
-      ++k;
-    } else if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      cells.emplace_back();
-    } else {
-      cells.back() += c;
-    }
-  }
-  return cells;
 }
 
 SweepSummary RunSweep(const SweepSpec& spec, const SweepOptions& options, std::ostream& log) {

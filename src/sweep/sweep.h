@@ -67,15 +67,9 @@ std::optional<std::string> CoarseMeshesLine(const std::vector<std::string>& labe
                                             const std::string& what,
                                             const std::string& error_column);
 
-// One CSV line of `cells` (CsvField: a field with a comma or quote quoted).
-std::string CsvLine(const std::vector<std::string>& cells);
-
 // FNV-1a, 64 bits, as 16 hex digits: the fingerprint of a base scene's text in the identities of
 // a sweep's or a fabric table's tasks.
 std::string Fingerprint(const std::string& bytes);
-
-// Splits one CSV line (as sweep.csv writes them: fields with a comma or quote quoted).
-std::vector<std::string> SplitCsvLine(const std::string& line);
 
 }  // namespace drape
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "src/output/atomic_file.h"
+#include "src/output/csv_field.h"
 #include "src/output/json.h"
 #include "src/output/report_page.h"
 #include "src/output/svg_chart.h"
