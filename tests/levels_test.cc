@@ -90,6 +90,33 @@ TEST(Levels, DrapeErrorBarOnAFirstOrderCase) {
   EXPECT_TRUE(change->folds_differ);
 }
 
+// Three levels the coarsest of which is coarser than the fabric's bending length give no
+// extrapolation, however cleanly they converge: the bar falls back to the change from the next
+// coarser level. A bending length longer than every level keeps Richardson's.
+TEST(Levels, NoExtrapolationFromALevelCoarserThanTheBendingLength) {
+  LevelsReport report;
+  report.levels = FirstOrderLevels({0.02, 0.01, 0.005}, {9, 9, 9});
+  for (LevelRecord& level : report.levels) level.energy = -1e-3 * (1.0 - level.spacing);
+  AnalyseLevels(&report);
+  ASSERT_TRUE(report.drape_error);
+  ASSERT_EQ(report.drape_error->levels_basis, "Richardson, observed order 1.00");
+  const LevelsReport clean = report;
+
+  RefuseExtrapolationsCoarserThan(0.025, &report);  // every level finer than c: kept
+  EXPECT_EQ(report.drape_error->levels_basis, "Richardson, observed order 1.00");
+
+  RefuseExtrapolationsCoarserThan(0.019, &report);  // the cotton tester's c under a 2 cm level
+  ASSERT_EQ(report.extrapolations.size(), clean.extrapolations.size());
+  for (const Extrapolation& e : report.extrapolations) {
+    EXPECT_FALSE(e.available) << e.quantity;
+    EXPECT_NE(e.reason.find("coarser than the fabric's bending length (1.9 cm)"), std::string::npos)
+        << e.reason;
+  }
+  ASSERT_TRUE(report.drape_error);
+  EXPECT_EQ(report.drape_error->levels_basis, "change from the 1 cm level");
+  EXPECT_NEAR(report.drape_error->levels_error, 0.0375, 1e-12);  // 0.3 (1 cm − 5 mm) / 4 cm
+}
+
 // No error bar from levels that cannot give one: an unconverged level, fabric through the disc,
 // a single level, a scene without a drape coefficient.
 TEST(Levels, NoDrapeErrorBarWhereALevelCannotGiveOne) {

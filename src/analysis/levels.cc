@@ -510,6 +510,23 @@ void AnalyseLevels(LevelsReport* report) {
   report->drape_error = DrapeErrorOf(report->levels, report->extrapolations);
 }
 
+void RefuseExtrapolationsCoarserThan(double bending_length, LevelsReport* report) {
+  const int n = static_cast<int>(report->levels.size());
+  if (n < 3) return;
+  const double coarsest = report->levels[n - 3].spacing;
+  if (!(coarsest > bending_length)) return;
+  for (Extrapolation& e : report->extrapolations) {
+    if (!e.available) continue;
+    Extrapolation refused;
+    refused.quantity = e.quantity;
+    refused.reason = "not in the asymptotic range: the " + LengthText(coarsest, 3) +
+                     " level is coarser than the fabric's bending length (" +
+                     LengthText(bending_length, 2) + ") and resolves no fold";
+    e = refused;
+  }
+  report->drape_error = DrapeErrorOf(report->levels, report->extrapolations);
+}
+
 std::string LengthText(double metres, int cm_digits) {
   char text[32];
   if (metres >= 0.01) {

@@ -61,10 +61,9 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     if (!finest) previous = std::move(coarse);
   }
   AnalyseLevels(report);
-  if (report->drape_error) {
-    if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
-      WidenToMeshRule(*advice, &*report->drape_error);
-    }
+  if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
+    RefuseExtrapolationsCoarserThan(advice->bending_length, report);
+    if (report->drape_error) WidenToMeshRule(*advice, &*report->drape_error);
   }
   return result;
 }
