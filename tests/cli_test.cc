@@ -32,6 +32,7 @@
 #include "src/solvers/solver.h"
 #include "tests/run_program.h"
 #include "tests/scratch_folder.h"
+#include "tests/test_meshes.h"
 #include "tests/test_paths.h"
 
 namespace drape {
@@ -539,37 +540,8 @@ TEST_F(CliTest, SolveConvergesAndWritesEveryRequestedFile) {
 // (src/model/self_intersection.h). The solve converges, the state is "fabric through itself",
 // summary.json counts the crossings, and the exit status is 3.
 TEST_F(CliTest, AFabricThroughItselfExitsThreeAndSaysWhere) {
-  std::string obj;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j)
-      obj += "v " + std::to_string(0.5 * i) + " " + std::to_string(0.5 * j) + " 0\n";
-  }
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j)
-      obj +=
-          "v 0.7 " + std::to_string(0.1 + 0.25 * i) + " " + std::to_string(-0.5 + 0.5 * j) + "\n";
-  }
-  for (int base : {1, 10}) {  // OBJ counts from 1; the squares' first nodes
-    for (int i = 0; i < 2; ++i) {
-      for (int j = 0; j < 2; ++j) {
-        const int a = base + 3 * i + j, b = a + 3, c = a + 4, d = a + 1;
-        obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) +
-               "\nf " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(d) +
-               "\n";
-      }
-    }
-  }
-  std::ofstream(directory_ / "crossed.obj") << obj;
-  const std::string scene =
-      "name: crossed\nmesh: {kind: file, path: crossed.obj}\n"
-      "material:\n  model: springs\n  density: 0.2\n"
-      "  springs: {structural: 1000}\n"
-      "fixed:\n  - nodes: {ids: [0, 1, 2, 3, 5, 6, 7, 8, 9, 10, 11, 12, 14, "
-      "15, 16, 17]}\n"
-      "loads: {gravity: [0, 0, -9.81]}\n"
-      "solver: {method: newton, tolerance: 1.0e-9}\n"
-      "output: {directory: out, write: [summary]}\n";
-  std::ofstream(directory_ / "crossed.yaml") << scene;
+  std::ofstream(directory_ / "crossed.obj") << testing::CrossedSquaresObj();
+  std::ofstream(directory_ / "crossed.yaml") << testing::CrossedSquaresScene("crossed.obj");
   const ProgramOutcome outcome = Drape({"solve", (directory_ / "crossed.yaml").string()});
   EXPECT_EQ(outcome.exit_status, 3) << outcome.out << outcome.err;
   EXPECT_NE(outcome.out.find("converged yes"), std::string::npos) << outcome.out;

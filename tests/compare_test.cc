@@ -17,6 +17,8 @@
 #include "src/output/version.h"
 #include "src/scene/scene_loader.h"
 #include "tests/run_program.h"
+#include "tests/scratch_folder.h"
+#include "tests/test_meshes.h"
 #include "tests/test_paths.h"
 
 namespace drape {
@@ -71,6 +73,28 @@ TEST(CompareScene, NewtonAgainstItsOwnReferenceHasNoError) {
   EXPECT_LE(std::abs(run.energy_gap), comparison.reference.energy_tolerance);
   ASSERT_FALSE(run.curve.empty());
   EXPECT_GE(TimeToReach(run, 1e-2), 0.0);
+}
+
+// A run whose converged state passes through itself is no answer: its status says so, and its
+// reason is the certificate's words (the crossed squares of tests/test_meshes.h).
+TEST(CompareScene, ARunThroughItselfPassesThroughWhateverItsSolverSays) {
+  const testing::ScratchFolder folder("compare_crossed");
+  std::ofstream(folder / "crossed.obj") << testing::CrossedSquaresObj();
+  std::ofstream(folder / "crossed.yaml") << testing::CrossedSquaresScene("crossed.obj");
+  CompareOptions options;
+  options.scenes = {(folder / "crossed.yaml").string()};
+  options.solvers = {"newton"};
+  options.time_limit = 30.0;
+  options.plots = false;
+  std::ostringstream log;
+  const SceneComparison comparison = CompareScene(options.scenes[0], options, log);
+  ASSERT_TRUE(comparison.error.empty()) << comparison.error;
+  ASSERT_EQ(comparison.runs.size(), 1u);
+  const RunRecord& run = comparison.runs[0];
+  EXPECT_EQ(run.status, RunStatus::kPassesThrough) << run.reason;
+  EXPECT_STREQ(RunStatusName(run.status), "passes through");
+  EXPECT_NE(run.reason.find("fabric through itself ("), std::string::npos) << run.reason;
+  EXPECT_LT(TimeToReach(run, 1e-2), 0.0);
 }
 
 TEST(CompareScene, RunStoppedEarlyHasTheDirectlyComputedError) {

@@ -1,4 +1,5 @@
-// Closed surfaces the mesh-obstacle tests build: an icosphere, and its OBJ file.
+// Meshes the tests build: closed surfaces for the mesh obstacles (an icosphere, a cuboid, their OBJ
+// files), and two squares that cross each other.
 #ifndef DRAPE_TESTS_TEST_MESHES_H_
 #define DRAPE_TESTS_TEST_MESHES_H_
 
@@ -86,6 +87,47 @@ inline void WriteIcosphereObj(const std::string& path, double radius, int level)
   out.precision(17);
   for (const auto& p : vertices) out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
   for (const auto& f : faces) out << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
+}
+
+// Two 3 × 3-node squares of one OBJ file, each to be held by its border: one flat in z = 0 with
+// 0.5 m cells, one standing across it in x = 0.7 (src/model/self_intersection.h finds them
+// crossing). Their border nodes are every id but 4 and 13.
+inline std::string CrossedSquaresObj() {
+  std::string obj;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j)
+      obj += "v " + std::to_string(0.5 * i) + " " + std::to_string(0.5 * j) + " 0\n";
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j)
+      obj +=
+          "v 0.7 " + std::to_string(0.1 + 0.25 * i) + " " + std::to_string(-0.5 + 0.5 * j) + "\n";
+  }
+  for (int base : {1, 10}) {  // OBJ counts from 1; the squares' first nodes
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) {
+        const int a = base + 3 * i + j, b = a + 3, c = a + 4, d = a + 1;
+        obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) +
+               "\nf " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(d) +
+               "\n";
+      }
+    }
+  }
+  return obj;
+}
+
+// A spring scene of the crossed squares (CrossedSquaresObj in `obj_path`), held by their borders
+// under gravity: it converges to a state that passes through itself.
+inline std::string CrossedSquaresScene(const std::string& obj_path) {
+  return "name: crossed\nmesh: {kind: file, path: " + obj_path +
+         "}\n"
+         "material:\n  model: springs\n  density: 0.2\n"
+         "  springs: {structural: 1000}\n"
+         "fixed:\n  - nodes: {ids: [0, 1, 2, 3, 5, 6, 7, 8, 9, 10, 11, 12, 14, "
+         "15, 16, 17]}\n"
+         "loads: {gravity: [0, 0, -9.81]}\n"
+         "solver: {method: newton, tolerance: 1.0e-9}\n"
+         "output: {directory: out, write: [summary]}\n";
 }
 
 }  // namespace drape::testing

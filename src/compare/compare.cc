@@ -19,6 +19,7 @@
 #include "src/output/writers.h"
 #include "src/run/run.h"
 #include "src/run/solve_report.h"
+#include "src/run/state_text.h"
 #include "src/scene/scene_loader.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solver.h"
@@ -138,6 +139,9 @@ void Classify(const RunResult& result, const SceneReference& reference, RunRecor
   if (!result.certificate.evaluable || !std::isfinite(result.certificate.energy)) {
     run->status = RunStatus::kFailed;
     run->reason = "energy or forces not finite at the end (" + run->reason + ")";
+  } else if (result.PassesThrough()) {
+    run->status = RunStatus::kPassesThrough;
+    run->reason = StateText(result);
   } else if (!result.converged) {
     run->status = RunStatus::kNotConverged;
   } else if (std::abs(run->energy_gap) > reference.energy_tolerance) {
@@ -280,6 +284,8 @@ const char* RunStatusName(RunStatus status) {
       return "refused";
     case RunStatus::kDifferentEquilibrium:
       return "different equilibrium";
+    case RunStatus::kPassesThrough:
+      return "passes through";
   }
   return "?";
 }
@@ -291,7 +297,9 @@ const std::vector<double>& AccuracyLevels() {
 
 double TimeToReach(const RunRecord& run, double level) {
   if (!run.curve_positions_valid) return kTimeUnknown;
-  if (run.status == RunStatus::kDifferentEquilibrium) return -1.0;
+  if (run.status == RunStatus::kDifferentEquilibrium || run.status == RunStatus::kPassesThrough) {
+    return -1.0;
+  }
   for (const CurvePoint& point : run.curve) {
     if (point.error.rms_m / run.size <= level) return std::max(0.0, point.time_s);
   }

@@ -44,7 +44,16 @@ struct CurvePoint {
   PositionError error;
 };
 
-enum class RunStatus { kConverged, kNotConverged, kFailed, kRefused, kDifferentEquilibrium };
+// kPassesThrough: the final state has fabric through a support disk, a mesh obstacle or itself
+// (RunResult::PassesThrough): no drape, converged or not, whatever its Hessian says.
+enum class RunStatus {
+  kConverged,
+  kNotConverged,
+  kFailed,
+  kRefused,
+  kDifferentEquilibrium,
+  kPassesThrough
+};
 const char* RunStatusName(RunStatus status);
 
 struct RunRecord {
