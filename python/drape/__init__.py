@@ -249,7 +249,7 @@ class Result:
     @property
     def stable(self):
         """Whether the final state is a stable minimum: converged, the free Hessian positive
-        definite, and the fabric through neither a support disk nor itself."""
+        definite, and the fabric through no support disk, mesh obstacle or itself."""
         return self._figures["stable"]
 
     @property
