@@ -102,10 +102,10 @@ TEST(Levels, NoExtrapolationFromALevelCoarserThanTheBendingLength) {
   ASSERT_EQ(report.drape_error->levels_basis, "Richardson, observed order 1.00");
   const LevelsReport clean = report;
 
-  RefuseExtrapolationsCoarserThan(0.025, &report);  // every level finer than c: kept
+  AnalyseLevels(&report, 0.025);  // every level finer than c: kept
   EXPECT_EQ(report.drape_error->levels_basis, "Richardson, observed order 1.00");
 
-  RefuseExtrapolationsCoarserThan(0.019, &report);  // the cotton tester's c under a 2 cm level
+  AnalyseLevels(&report, 0.019);  // the cotton tester's c under a 2 cm level
   ASSERT_EQ(report.extrapolations.size(), clean.extrapolations.size());
   for (const Extrapolation& e : report.extrapolations) {
     EXPECT_FALSE(e.available) << e.quantity;

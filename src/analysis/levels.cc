@@ -300,7 +300,19 @@ std::string Joined(const std::vector<int>& values) {
   return text;
 }
 
-void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* report) {
+// The reason no extrapolation is made through levels whose coarsest is coarser than the fabric's
+// bending length, or nothing where none is (or no bending length is known).
+std::optional<std::string> CoarserThanTheFabric(const std::vector<LevelRecord>& levels,
+                                                std::optional<double> bending_length) {
+  const double coarsest = levels[levels.size() - 3].spacing;
+  if (!bending_length || !(coarsest > *bending_length)) return std::nullopt;
+  return "not in the asymptotic range: the " + LengthText(coarsest, 3) +
+         " level is coarser than the fabric's bending length (" + LengthText(*bending_length, 2) +
+         ") and resolves no fold";
+}
+
+void AddExtrapolations(const std::vector<LevelRecord>& levels, std::optional<double> bending_length,
+                       LevelsReport* report) {
   std::vector<double> spacing, energy, dc;
   std::vector<int> folds;
   bool all_converged = true, all_dc = true, any_passes_through = false;
@@ -338,6 +350,12 @@ void AddExtrapolations(const std::vector<LevelRecord>& levels, LevelsReport* rep
                  "): different fold patterns, not one converging answer";
     } else {
       e = Extrapolate(name, spacing, values);
+      if (const std::optional<std::string> coarse = CoarserThanTheFabric(levels, bending_length);
+          e.available && coarse) {
+        e = Extrapolation();
+        e.quantity = name;
+        e.reason = *coarse;
+      }
     }
     report->extrapolations.push_back(e);
   }
@@ -504,26 +522,9 @@ double LevelSpacing(const MeshSpec& mesh) {
   return axes.u.h > 0.0 ? axes.u.h : axes.v.h;
 }
 
-void AnalyseLevels(LevelsReport* report) {
+void AnalyseLevels(LevelsReport* report, std::optional<double> bending_length) {
   report->extrapolations.clear();
-  AddExtrapolations(report->levels, report);
-  report->drape_error = DrapeErrorOf(report->levels, report->extrapolations);
-}
-
-void RefuseExtrapolationsCoarserThan(double bending_length, LevelsReport* report) {
-  const int n = static_cast<int>(report->levels.size());
-  if (n < 3) return;
-  const double coarsest = report->levels[n - 3].spacing;
-  if (!(coarsest > bending_length)) return;
-  for (Extrapolation& e : report->extrapolations) {
-    if (!e.available) continue;
-    Extrapolation refused;
-    refused.quantity = e.quantity;
-    refused.reason = "not in the asymptotic range: the " + LengthText(coarsest, 3) +
-                     " level is coarser than the fabric's bending length (" +
-                     LengthText(bending_length, 2) + ") and resolves no fold";
-    e = refused;
-  }
+  AddExtrapolations(report->levels, bending_length, report);
   report->drape_error = DrapeErrorOf(report->levels, report->extrapolations);
 }
 

@@ -131,15 +131,13 @@ Extrapolation Extrapolate(const std::string& quantity, const std::vector<double>
 double LevelSpacing(const MeshSpec& mesh);
 
 // The extrapolations and the drape coefficient's error bar of `report->levels` (coarsest first).
-void AnalyseLevels(LevelsReport* report);
-
-// Refuses the extrapolations of `report` (made by AnalyseLevels) whose three levels include one
-// coarser than the fabric's bending length (m), and makes the error bar again from what is left.
-// A lattice that coarse cannot carry the folds (their width is a few bending lengths), so the three
-// levels are not in the asymptotic range whatever their observed order says: the cotton tester's
-// 2 cm, 1 cm and 5 mm levels (bending length 1.9 cm) extrapolated its DC to 0.059 from its 1.3 mm
-// solve, with an estimate of 0.046 (docs/benchmarks.md, the Pareto table's Richardson rows).
-void RefuseExtrapolationsCoarserThan(double bending_length, LevelsReport* report);
+// With the fabric's bending length (m; a drape test's, MeshAdvice::bending_length), no
+// extrapolation is made through three levels of which one is coarser than it. A lattice that coarse
+// cannot carry the folds (their width is a few bending lengths), so the three levels are not in the
+// asymptotic range whatever their observed order says: the cotton tester's 2 cm, 1 cm and 5 mm
+// levels (bending length 1.9 cm) extrapolated its DC to 0.059 from its 1.3 mm solve, with an
+// estimate of 0.046 (docs/benchmarks.md, the Pareto table's Richardson rows).
+void AnalyseLevels(LevelsReport* report, std::optional<double> bending_length = std::nullopt);
 
 }  // namespace drape
 

@@ -60,11 +60,9 @@ RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
     report->levels.push_back(record);
     if (!finest) previous = std::move(coarse);
   }
-  AnalyseLevels(report);
-  if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model)) {
-    RefuseExtrapolationsCoarserThan(advice->bending_length, report);
-    if (report->drape_error) WidenToMeshRule(*advice, &*report->drape_error);
-  }
+  const std::optional<MeshAdvice> advice = AdviseMesh(scene, model);
+  AnalyseLevels(report, advice ? std::optional<double>(advice->bending_length) : std::nullopt);
+  if (advice && report->drape_error) WidenToMeshRule(*advice, &*report->drape_error);
   return result;
 }
 

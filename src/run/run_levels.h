@@ -23,7 +23,7 @@ enum class LevelStart { kFromCoarser, kFlat };
 
 // Solves scene.solver.levels levels; the finest is `model` (built from `scene`), whose RunResult
 // is returned. `report` gets the per-level figures, the extrapolations (refused where a level is
-// coarser than the fabric's bending length: RefuseExtrapolationsCoarserThan) and the error bar,
+// coarser than the fabric's bending length: AnalyseLevels) and the error bar,
 // widened to the mesh rule's expected error where that is larger (WidenToMeshRule).
 RunResult RunLevels(const Scene& scene, Model& model, const std::string& method,
                     const std::function<bool(const IterationRecord&)>& on_iteration,
