@@ -23,6 +23,7 @@
 #include "costs/cylinder_contact.h"
 #include "costs/disk_contact.h"
 #include "costs/edge_contact.h"
+#include "costs/edge_edge_contact.h"
 #include "costs/fv_bending.h"
 #include "costs/fv_bending_friction.h"
 #include "costs/fv_bending_friction_step.h"
@@ -32,6 +33,7 @@
 #include "costs/fv_twist.h"
 #include "costs/mesh_contact.h"
 #include "costs/plane_contact.h"
+#include "costs/point_triangle_contact.h"
 #include "costs/pressure_potential.h"
 #include "costs/sphere_contact.h"
 #include "costs/spring_stretch.h"
@@ -302,6 +304,39 @@ struct Sample<FvShearFriction> {
   }
 };
 
+// The fabric's contact with itself (C = 1 cm): a node and a tilted triangle of 2 cm sides, the
+// node 4–6 mm from the triangle's inside, from its side a–b and from its corner a (the three
+// distance types, each away from where the nearest part changes).
+template <>
+struct Sample<PointTriangleContact> {
+  static constexpr const char* kName = "PointTriangleContact";
+  static PointTriangleContact Make() { return PointTriangleContact(kClearance, kContactStiffness); }
+  static std::vector<std::vector<double>> States() {
+    const std::vector<double> triangle = {0.0003,  0.0002, 0.0004, 0.0201, 0.0005,
+                                          -0.0003, 0.0012, 0.0198, 0.0009};
+    std::vector<std::vector<double>> states = {
+        {0.005, 0.004, 0.006}, {0.012, -0.004, 0.003}, {-0.004, -0.003, 0.002}};
+    for (auto& state : states) state.insert(state.end(), triangle.begin(), triangle.end());
+    return states;
+  }
+};
+
+// Two edges of 2 cm with C = 1 cm: crossing 4.5 mm apart (both insides), one's end b 6.5 mm from
+// the other's inside, and the ends b and c 5.8 mm apart.
+template <>
+struct Sample<EdgeEdgeContact> {
+  static constexpr const char* kName = "EdgeEdgeContact";
+  static EdgeEdgeContact Make() { return EdgeEdgeContact(kClearance, kContactStiffness); }
+  static std::vector<std::vector<double>> States() {
+    const std::vector<double> edge = {0.0002, 0.0001, -0.0003, 0.02, 0.0004, 0.0002};
+    std::vector<std::vector<double>> states = {{0.01, -0.01, 0.005, 0.011, 0.01, 0.004},
+                                               {0.025, -0.01, 0.004, 0.026, 0.01, 0.003},
+                                               {0.024, 0.003, 0.003, 0.04, 0.01, 0.004}};
+    for (auto& state : states) state.insert(state.begin(), edge.begin(), edge.end());
+    return states;
+  }
+};
+
 template <typename Functor>
 std::unique_ptr<Term> SampleTerm() {
   std::vector<int> nodes(Functor::kNumNodes);
@@ -312,11 +347,13 @@ std::unique_ptr<Term> SampleTerm() {
 template <typename Functor>
 class CostsTest : public ::testing::Test {};
 
-using Functors = ::testing::Types<
-    SpringStretch, TensionOnlySpring, ZeroLengthSpring, StretchLimitBarrier, ConstantForcePotential,
-    PressurePotential, SphereContact, PlaneContact, DiskContact, EdgeContact<DiskContact>,
-    CylinderContact, BoxContact, MeshContact<TriangleSurface>, FvMembrane, FvBendingEdge, FvBending,
-    FvBendingFriction, FvBendingFrictionStep, FvShearFriction, FvTwist, FvCellShear>;
+using Functors =
+    ::testing::Types<SpringStretch, TensionOnlySpring, ZeroLengthSpring, StretchLimitBarrier,
+                     ConstantForcePotential, PressurePotential, SphereContact, PlaneContact,
+                     DiskContact, EdgeContact<DiskContact>, CylinderContact, BoxContact,
+                     MeshContact<TriangleSurface>, PointTriangleContact, EdgeEdgeContact,
+                     FvMembrane, FvBendingEdge, FvBending, FvBendingFriction, FvBendingFrictionStep,
+                     FvShearFriction, FvTwist, FvCellShear>;
 
 class FunctorNames {
  public:
@@ -337,9 +374,10 @@ TYPED_TEST(CostsTest, DerivativesMatchDifferencesAndTheNestedJetReference) {
 }
 
 // The residual path's Jacobian (Jets through Ceres' AutoDiffCostFunction) against central
-// differences of its residuals, step 1e-8 m, to 1e-6 of the largest entry.
+// differences of its residuals, step `step` m, to 1e-6 of the largest entry.
 void ExpectResidualJacobianMatchesDifferences(const ceres::CostFunction& cost,
-                                              std::vector<double> state, int nodes) {
+                                              std::vector<double> state, int nodes,
+                                              double step = 1e-8) {
   std::vector<double*> blocks(nodes);
   for (int k = 0; k < nodes; ++k) blocks[k] = state.data() + 3 * k;
   double residual = 0.0;
@@ -349,7 +387,6 @@ void ExpectResidualJacobianMatchesDifferences(const ceres::CostFunction& cost,
   ASSERT_TRUE(cost.Evaluate(blocks.data(), &residual, jacobians.data()));
   double largest = 0.0;
   for (double entry : jacobian) largest = std::max(largest, std::abs(entry));
-  const double step = 1e-8;
   for (int i = 0; i < 3 * nodes; ++i) {
     double plus = 0.0, minus = 0.0;
     state[i] += step;
@@ -366,12 +403,20 @@ TYPED_TEST(CostsTest, CeresGradientCheckerAcceptsTheResidualPath) {
   const std::unique_ptr<ceres::CostFunction> cost(term->NewCostFunction());
   if constexpr (std::is_same_v<TypeParam, FvBendingFriction> ||
                 std::is_same_v<TypeParam, FvBendingFrictionStep> ||
-                std::is_same_v<TypeParam, FvShearFriction>) {
+                std::is_same_v<TypeParam, FvShearFriction> ||
+                std::is_same_v<TypeParam, EdgeEdgeContact>) {
     // Ceres' GradientChecker (Ridders' differences) reports some coordinates 1e-4 to 0.8 off for
     // the frictions, whose residual is √(2 (E + shift)), scaling with H, where plain central
-    // differences of the same cost function agree with its Jets to 1e-9: checked that way.
+    // differences of the same cost function agree with its Jets to 1e-9: checked that way. So for
+    // the edge–edge contact's end-to-inside state: Ridders gives 0.02484 for ∂r/∂b_x where the
+    // Jets give 0.0246159, as do central differences of the exact segment distance at steps 2e-6,
+    // 1e-5 and 1e-4 m (0.0246159, 0.0246159, 0.0246170).
+    // The edge contact's Jacobian entries are ~1e-2 of r ≈ 4.5: at 1e-8 m the differences' round-
+    // off (ε r / 1e-8 ≈ 5e-8) is the tolerance itself; at 1e-6 m it is 100 times smaller, and
+    // the truncation error (1e-12 of the third derivative) smaller still.
+    const double step = std::is_same_v<TypeParam, EdgeEdgeContact> ? 1e-6 : 1e-8;
     for (const std::vector<double>& state : Sample<TypeParam>::States()) {
-      ExpectResidualJacobianMatchesDifferences(*cost, state, TypeParam::kNumNodes);
+      ExpectResidualJacobianMatchesDifferences(*cost, state, TypeParam::kNumNodes, step);
     }
     return;
   }

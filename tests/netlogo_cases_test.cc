@@ -53,8 +53,14 @@ class NetlogoCoarse : public ::testing::TestWithParam<Coarse> {};
 TEST_P(NetlogoCoarse, ExplicitEulerAndNewtonAgree) {
   const Coarse& c = GetParam();
   const std::string path = std::string("configs/netlogo/") + c.file;
-  const auto euler = testing::SolveConfig(path, "explicit-euler", c.overrides);
-  const auto newton = testing::SolveConfig(path, "newton", c.overrides);
+  // One energy for both: without the fabric's contact with itself, whose pairs newton updates as
+  // it goes and explicit-euler keeps from its start (src/model/self_contact.h). Both collapse
+  // through themselves then, as the quadrangular disc onto the line below the pin: the shapes of
+  // one energy compared here, not drapes (the certificate says they pass through themselves).
+  std::vector<std::string> overrides = c.overrides;
+  overrides.push_back("contact.self=false");
+  const auto euler = testing::SolveConfig(path, "explicit-euler", overrides);
+  const auto newton = testing::SolveConfig(path, "newton", overrides);
   ASSERT_TRUE(euler.result.converged) << euler.result.summary.termination;
   ASSERT_TRUE(newton.result.converged) << newton.result.summary.termination;
   const double e1 = euler.result.certificate.energy, e2 = newton.result.certificate.energy;

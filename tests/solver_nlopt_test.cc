@@ -62,9 +62,13 @@ TEST(NloptSlsqp, RefusedAboveOneThousandFreeDofs) {
 }
 
 TEST(NloptSlsqp, AcceptedAtOneThousandFreeDofsOrFewer) {
-  // 18 × 18 = 324 nodes, 2 fixed: 966 free coordinates.
-  const Scene scene = testing::LoadConfig("configs/examples/hanging_sheet.yaml",
-                                          {"mesh.nodes=[18, 18]", "solver.max_iterations=3"});
+  // 18 × 18 = 324 nodes, 2 fixed: 966 free coordinates. Without the fabric's contact with itself:
+  // its step filter refuses SLSQP's first long steps, which bring parts of the sheet nearer than
+  // half their distance (each a penalised evaluation), and the run then ends at its evaluation
+  // limit before its third iteration.
+  const Scene scene =
+      testing::LoadConfig("configs/examples/hanging_sheet.yaml",
+                          {"mesh.nodes=[18, 18]", "solver.max_iterations=3", "contact.self=false"});
   Model model = BuildModel(scene);
   ASSERT_LE(model.num_free_dofs(), 1000);
   const RunResult result = RunSolve(scene, model, "nlopt-slsqp");

@@ -8,42 +8,13 @@
 #include <sstream>
 #include <utility>
 
+#include "src/geometry/nearest_feature.h"
+
 namespace drape {
 
 namespace {
 
 using Eigen::Vector3d;
-
-// The nearest point of triangle a b c to p and its feature (Ericson §5.1.5, by Voronoi regions):
-// corners 1 (vertex `first`), 2 (the edge from corner `first` to the next one), 3 (inside).
-struct TrianglePoint {
-  Vector3d point;
-  int corners = 3;
-  int first = 0;
-};
-
-TrianglePoint NearestOnTriangle(const Vector3d& p, const Vector3d& a, const Vector3d& b,
-                                const Vector3d& c) {
-  const Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return {a, 1, 0};
-  const Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return {b, 1, 1};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return {a + d1 / (d1 - d3) * ab, 2, 0};
-  const Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return {c, 1, 2};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return {a + d2 / (d2 - d6) * ac, 2, 2};
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
-    return {b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b), 2, 1};
-  }
-  const double denominator = 1.0 / (va + vb + vc);
-  return {a + ab * (vb * denominator) + ac * (vc * denominator), 3, 0};
-}
 
 std::vector<Box> FaceBoxes(const std::vector<Vector3d>& vertices,
                            const std::vector<std::array<int, 3>>& faces) {

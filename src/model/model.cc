@@ -50,6 +50,7 @@
 #include "src/model/mesh.h"
 #include "src/model/regions.h"
 #include "src/model/selection.h"
+#include "src/model/self_contact.h"
 #include "src/model/stretch_limit.h"
 #include "src/scene/solver_methods.h"
 
@@ -565,6 +566,7 @@ Model BuildModel(const Scene& scene, const std::vector<double>* friction_referen
   clock.Check("the elastic terms of " + nodes);
   AddLoads(scene, mesh, &model);
   if (!scene.obstacles.empty()) AddContactTerms(scene.obstacles, scene.contact, &model);
+  SetUpSelfContact(scene, &model);  // last: its terms are replaced as the fabric moves
   clock.Check("the loads and contact terms of " + nodes);
   CheckNoNodeStartsInside(scene, model);
   CheckHasMinimum(scene, model);

@@ -61,6 +61,25 @@ struct Model {
     int edge_points = 0;  // 0: a node's term; else an edge's, at that many points inside it
   };
   std::vector<ContactTerm> contact_terms;
+  // The fabric's contact with itself (src/model/self_contact.h): its pairs' terms are
+  // terms[self_contact.first_term ..), the last of `terms`, and change as the fabric moves.
+  struct SelfContact {
+    bool enabled = false;
+    double clearance = 0.0;  // C, m: the fabric's thickness, 2 × contact.thickness
+    double stiffness = 0.0;  // k, N/m²
+    int first_term = 0;      // the first self-contact term in `terms`
+    int generation = 0;      // how many times its terms were replaced (a Hessian pattern's stamp)
+    std::vector<std::array<int, 2>> sides;  // the fabric's triangle sides, each once
+    // The rest-shape neighbours, which never have a term: for each node the triangles, for each
+    // side the sides of higher index, nearer than kSelfRestFactor × C in `initial` (sorted, in
+    // compressed rows: those of k are items[start[k] .. start[k + 1])).
+    std::vector<int> neighbour_triangle_start, neighbour_triangles;
+    std::vector<int> neighbour_side_start, neighbour_sides;
+    // The pairs that have terms: (node, triangle index) and (side index, side index), sorted.
+    std::vector<std::array<int, 2>> point_triangle, edge_edge;
+    std::vector<double> built_at;  // the positions the pairs were found at (3 per node)
+  };
+  SelfContact self_contact;
   // For each region of the scene (regions:), how many nodes it selects and how many of those no
   // later region selects too (for drape check).
   struct RegionCount {

@@ -26,21 +26,6 @@ Vector3d Point(const std::vector<double>& positions, int node) {
   return Vector3d(positions[3 * node], positions[3 * node + 1], positions[3 * node + 2]);
 }
 
-// Every side of the triangles once, as (lower, higher) node ids, in increasing order.
-std::vector<std::array<int, 2>> SidesOf(const std::vector<std::array<int, 3>>& triangles) {
-  std::vector<std::array<int, 2>> sides;
-  sides.reserve(3 * triangles.size());
-  for (const auto& triangle : triangles) {
-    for (int k = 0; k < 3; ++k) {
-      const int a = triangle[k], b = triangle[(k + 1) % 3];
-      sides.push_back({std::min(a, b), std::max(a, b)});
-    }
-  }
-  std::sort(sides.begin(), sides.end());
-  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
-  return sides;
-}
-
 bool SharesANode(const std::array<int, 2>& side, const std::array<int, 3>& triangle) {
   for (int node : triangle) {
     if (node == side[0] || node == side[1]) return true;
@@ -59,6 +44,20 @@ bool AllFinite(const std::vector<std::array<int, 3>>& triangles,
 }
 
 }  // namespace
+
+std::vector<std::array<int, 2>> SidesOf(const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<std::array<int, 2>> sides;
+  sides.reserve(3 * triangles.size());
+  for (const auto& triangle : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = triangle[k], b = triangle[(k + 1) % 3];
+      sides.push_back({std::min(a, b), std::max(a, b)});
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+  return sides;
+}
 
 bool SegmentCrossesTriangle(const Vector3d& p, const Vector3d& q, const Vector3d& a,
                             const Vector3d& b, const Vector3d& c) {

@@ -46,6 +46,9 @@ struct SelfIntersections {
   bool Any() const { return crossings > 0; }
 };
 
+// Every side of the triangles once, as (lower, higher) node ids, in increasing order.
+std::vector<std::array<int, 2>> SidesOf(const std::vector<std::array<int, 3>>& triangles);
+
 // Whether the segment p–q crosses the triangle a b c (see above).
 bool SegmentCrossesTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
                             const Eigen::Vector3d& a, const Eigen::Vector3d& b,

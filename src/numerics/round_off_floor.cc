@@ -40,7 +40,7 @@ double ResidualFloorEstimator::At(const double* positions) {
   constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
   std::vector<double> magnitudes;
   if (!ForceMagnitudes(model, positions, &magnitudes)) return INFINITY;
-  if (!hessian_) {
+  if (!hessian_ || (own_hessian_ && own_hessian_->Stale())) {
     own_dofs_ = std::make_unique<const DofMap>(model);
     own_hessian_ = std::make_unique<FreeHessian>(model, *own_dofs_);
     hessian_ = own_hessian_.get();

@@ -30,7 +30,8 @@ double RelativeResidualFloor(const Model& model, const double* positions,
 // The same at successive positions of one model (a solver's stagnation checks): the free Hessian's
 // pattern and scatter map, most of one estimate's cost (three quarters on the 2,821-node drape
 // tester, docs/benchmarks.md, session 15), are built at the first estimate and kept; or, when
-// `hessian` is given, that FreeHessian of the model is used (its values are overwritten).
+// `hessian` is given, that FreeHessian of the model is used (its values are overwritten). Its own
+// is built again where the model's terms have changed (FreeHessian::Stale).
 class ResidualFloorEstimator {
  public:
   explicit ResidualFloorEstimator(const Model& model, FreeHessian* hessian = nullptr)

@@ -49,7 +49,8 @@ bool ProjectToPositiveSemidefinite(EigenvalueFilter filter, int n, double* row_m
 
 }  // namespace
 
-FreeHessian::FreeHessian(const Model& model, const DofMap& dofs) : model_(model), dofs_(dofs) {
+FreeHessian::FreeHessian(const Model& model, const DofMap& dofs)
+    : model_(model), dofs_(dofs), generation_(model.self_contact.generation) {
   BuildPattern();
   BuildDestinations();
   FindConstantTerms();
@@ -252,6 +253,7 @@ int DefaultAssemblyThreads() { return std::max(1u, std::thread::hardware_concurr
 bool FreeHessian::Assemble(const double* positions, bool project, Assembly* assembly,
                            std::vector<double>* gradient) {
   *assembly = Assembly();
+  assert(!Stale() && "the model's terms changed since the pattern was built");
   gradient->assign(model_.num_dofs(), 0.0);
   std::fill(values_.begin(), values_.end(), 0.0);
   if (project) std::fill(projected_.begin(), projected_.end(), 0.0);

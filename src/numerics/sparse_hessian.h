@@ -85,6 +85,11 @@ class FreeHessian {
     constants_stored_ = false;
   }
 
+  // Whether the model's terms have changed since the pattern was built (the fabric's contact with
+  // itself replaces its terms as the fabric moves: src/model/self_contact.h); a stale pattern
+  // must not be assembled.
+  bool Stale() const { return generation_ != model_.self_contact.generation; }
+
   int size() const { return dofs_.num_free(); }
   const DofMap& dofs() const { return dofs_; }
   int num_nonzeros() const { return static_cast<int>(rows_.size()); }
@@ -114,6 +119,7 @@ class FreeHessian {
 
   const Model& model_;
   const DofMap& dofs_;
+  const int generation_;  // model_.self_contact.generation when the pattern was built
   std::vector<int> column_starts_, rows_, diagonal_;
   // A local entry r * size + c of a term's Hessian and its index in the value arrays.
   struct ScatterEntry {

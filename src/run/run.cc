@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "src/model/self_contact.h"
 #include "src/run/load_steps.h"
 #include "src/scene/material_keys.h"
 #include "src/scene/material_models.h"
@@ -215,15 +216,20 @@ RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
 
   // One free Hessian and CHOLMOD analysis for the solve and the certificate after it (built after
   // the solve for a method that does not use it: it would only add to that method's memory).
+  // The fabric's contact with itself where the solve starts (a warm start is not where the model
+  // was built); newton updates it as it goes, and the pattern is built again if it did.
+  UpdateSelfContact(&model, model.positions.data());
   std::unique_ptr<HessianWorkspace> workspace;
   const bool has_free = model.num_free_dofs() > 0;
   if (has_free && found->uses_hessian_workspace) {
     workspace = std::make_unique<HessianWorkspace>(model);
   }
+  const int generation = model.self_contact.generation;
   options.workspace = workspace.get();
   RunResult result;
   result.summary = found->make()->Solve(model, options);
   result.summary.solver = method;
+  if (model.self_contact.generation != generation) workspace.reset();
   const std::vector<double>* constraint =
       result.summary.constraint_forces.empty() ? nullptr : &result.summary.constraint_forces;
   result.certificate = ComputeCertificate(model, model.positions.data(), constraint);
@@ -319,6 +325,7 @@ SolverSummary SolveWithSceneOptions(
   options.on_iteration = [&](const IterationRecord& record) {
     return !on_iteration || on_iteration(record);
   };
+  UpdateSelfContact(&model, model.positions.data());
   std::unique_ptr<HessianWorkspace> workspace;
   if (model.num_free_dofs() > 0 && info->uses_hessian_workspace) {
     workspace = std::make_unique<HessianWorkspace>(model);

@@ -253,6 +253,7 @@ struct ObstacleSpec {
 
 struct ContactSpec {
   double thickness = 0.001;  // m
+  bool self = true;          // the fabric's contact with itself (src/model/self_contact.h)
   Location where;
 };
 

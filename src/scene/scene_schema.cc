@@ -1103,8 +1103,18 @@ std::vector<SchemaRow> ContactSolverOutput() {
       Row("contact", "thickness")
           .Number("m", AtLeast(0))
           .Field(&ContactSpec::thickness)
-          .Doc("fabric half-thickness kept off every obstacle")
+          .Doc("fabric half-thickness kept off every obstacle; twice it is the distance two "
+               "layers of the fabric keep apart (`contact.self`)")
           .Example({"contact.thickness=0.002"}),
+      Row("contact", "self")
+          .Bool()
+          .Field(&ContactSpec::self)
+          .Doc("`true`: the fabric's contact with itself, for a fabric of triangles in 3-D (a "
+               "chain has no surface): a node and a triangle, or two triangle sides, that share "
+               "no node keep twice `contact.thickness` apart, and no solver step passes a piece "
+               "of the fabric through another; `false`: none (the certificate still refuses a "
+               "state through itself)")
+          .Example({"contact.self=false"}),
       Row("solver", "method")
           .Text()
           .Field(&SolverSpec::method)

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "src/derivatives/local_energy.h"
-#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
+#include "src/model/self_contact.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 
@@ -54,8 +54,8 @@ class FreeEnergy : public ceres::FirstOrderFunction {
   bool Evaluate(const double* free, double* cost, double* free_gradient) const override {
     ++evaluations_;
     dofs_.Scatter(free, work_.data());
-    if (!model_.obstacles.empty() &&
-        ObstacleSafeFraction(model_, iterate_.data(), work_.data()) < 1.0) {
+    if ((!model_.obstacles.empty() || model_.self_contact.enabled) &&
+        StepSafeFraction(model_, iterate_.data(), work_.data()) < 1.0) {
       return false;
     }
     if (!EvaluateEnergy(model_, work_.data(), &last_energy_, &gradient_)) return false;

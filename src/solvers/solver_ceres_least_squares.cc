@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "src/model/ceres_problem.h"
-#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
+#include "src/model/self_contact.h"
 #include "src/solvers/solvers.h"
 
 namespace drape {
@@ -41,7 +41,7 @@ class ObstacleGuard : public ceres::EvaluationCallback {
   // With an evaluation callback, Ceres has copied the trial point into model.positions.
   void PrepareForEvaluation(bool /*evaluate_jacobians*/, bool new_evaluation_point) override {
     if (!new_evaluation_point) return;
-    crossing_ = ObstacleSafeFraction(model_, iterate_.data(), model_.positions.data()) < 1.0;
+    crossing_ = StepSafeFraction(model_, iterate_.data(), model_.positions.data()) < 1.0;
     if (crossing_) ++refused_;
   }
   // model.positions is the accepted iterate.
@@ -120,7 +120,7 @@ class CeresLeastSquaresSolver : public Solver {
     IterationMonitor monitor(model, options, &summary);
     ObstacleGuard guard(model);
     ceres::Problem::Options problem_options;
-    const bool guarded = !model.obstacles.empty();
+    const bool guarded = !model.obstacles.empty() || model.self_contact.enabled;
     if (guarded) problem_options.evaluation_callback = &guard;
     ceres::Problem problem(problem_options);
     BuildProblem(model, &problem);

@@ -54,9 +54,9 @@
 #include <string>
 #include <vector>
 
-#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
 #include "src/model/mesh.h"
+#include "src/model/self_contact.h"
 #include "src/numerics/sparse_hessian.h"
 #include "src/numerics/stability.h"
 #include "src/scene/solver_methods.h"
@@ -115,7 +115,8 @@ class Stopwatch {
 struct Counters {
   int factorizations = 0, failed_factorizations = 0, energy_evaluations = 0;
   int exact_hessian_steps = 0, line_search_failures = 0, projected_terms = 0;
-  int saddle_escapes = 0, projected_assemblies = 0, projected_unused = 0;
+  int saddle_escapes = 0, projected_assemblies = 0, projected_unused = 0, contact_rebuilds = 0;
+  int filtered_steps = 0;
   double assembly_s = 0.0, factorization_s = 0.0, solve_s = 0.0, line_search_s = 0.0;
 };
 
@@ -162,17 +163,15 @@ class NewtonIteration {
         settings_(ReadSettings(options.method_options)),
         monitor_(model, options, summary),
         own_workspace_(options.workspace ? nullptr : std::make_unique<HessianWorkspace>(model)),
-        workspace_(options.workspace ? *options.workspace : *own_workspace_),
-        dofs_(workspace_.dofs),
-        hessian_(workspace_.hessian),
-        cholesky_(workspace_.cholesky),
+        workspace_(options.workspace ? options.workspace : own_workspace_.get()),
+        dofs_(workspace_->dofs),
         weights_(PseudoTimeWeights(model, dofs_)),
         mu_(settings_.regularization),
         model_size_(BoundingBoxDiagonal(model)) {}
 
   void Run();
   const Counters& counters() const { return counters_; }
-  double factor_nonzeros() const { return cholesky_.factor_nonzeros(); }
+  double factor_nonzeros() const { return workspace_->cholesky.factor_nonzeros(); }
 
  private:
   bool Step(double residual);
@@ -191,11 +190,14 @@ class NewtonIteration {
   Model& model_;
   const NewtonSettings settings_;
   IterationMonitor monitor_;
-  const std::unique_ptr<HessianWorkspace> own_workspace_;  // when the caller gave none
-  HessianWorkspace& workspace_;
-  const DofMap& dofs_;
-  FreeHessian& hessian_;
-  SparseCholesky& cholesky_;
+  // The free Hessian's pattern and its analysis: the caller's, or this solve's own when the caller
+  // gave none or when the fabric's contact with itself changed the model's terms (RefreshModel).
+  std::unique_ptr<HessianWorkspace> own_workspace_;
+  HessianWorkspace* workspace_;
+  const DofMap dofs_;  // the free coordinates, which no change of terms moves
+  FreeHessian& hessian() { return workspace_->hessian; }
+  SparseCholesky& cholesky() { return workspace_->cholesky; }
+  bool RefreshModel();
   const std::vector<double> weights_;
   double mu_;
   const double model_size_;
@@ -218,14 +220,25 @@ class NewtonIteration {
   Counters counters_;
 };
 
+// The fabric's contact with itself at the iterate (UpdateSelfContact): where its terms changed,
+// a pattern of the new terms and its analysis. Returns whether they changed.
+bool NewtonIteration::RefreshModel() {
+  if (!UpdateSelfContact(&model_, model_.positions.data())) return false;
+  own_workspace_ = std::make_unique<HessianWorkspace>(model_);
+  workspace_ = own_workspace_.get();
+  ++counters_.contact_rebuilds;
+  return true;
+}
+
 void NewtonIteration::Run() {
   for (int iteration = 0;; ++iteration) {
     bool evaluable;
     {
       Stopwatch watch(&counters_.assembly_s);
-      hessian_.set_eigenvalue_filter(last_residual_ > settings_.absolute_projection_above
-                                         ? EigenvalueFilter::kAbsolute
-                                         : EigenvalueFilter::kClamp);
+      RefreshModel();
+      hessian().set_eigenvalue_filter(last_residual_ > settings_.absolute_projection_above
+                                          ? EigenvalueFilter::kAbsolute
+                                          : EigenvalueFilter::kClamp);
       // H₊ with H where it is used: at the start (the stiffness scale) and where H is blocked
       // (ExpectsProjectedStep); otherwise ComputeStep assembles it for a step that needs it (H
       // failed to factorise), so that no H₊ is assembled for an iteration whose exact step
@@ -233,7 +246,7 @@ void NewtonIteration::Run() {
       projected_ready_ = iteration == 0 || ExpectsProjectedStep();
       iterate_squared_residual_ = -1.0;
       evaluable =
-          hessian_.Assemble(model_.positions.data(), projected_ready_, &assembly_, &gradient_);
+          hessian().Assemble(model_.positions.data(), projected_ready_, &assembly_, &gradient_);
     }
     if (!evaluable) {
       monitor_.Stop("energy, gradient or Hessian not finite at the iterate");
@@ -250,7 +263,7 @@ void NewtonIteration::Run() {
       continue;
     }
     if (monitor_.Record(iteration, assembly_.energy, residual)) return;
-    if (iteration == 0) stiffness_scale_ = StiffnessScale(hessian_);
+    if (iteration == 0) stiffness_scale_ = StiffnessScale(hessian());
     if (!Step(residual)) return;
   }
 }
@@ -319,7 +332,7 @@ bool NewtonIteration::ExpectsProjectedStep() const {
 bool NewtonIteration::EnsureProjected() {
   if (projected_ready_) return true;
   Stopwatch watch(&counters_.assembly_s);
-  projected_ready_ = hessian_.Assemble(model_.positions.data(), true, &assembly_, &gradient_);
+  projected_ready_ = hessian().Assemble(model_.positions.data(), true, &assembly_, &gradient_);
   counters_.projected_terms = assembly_.projected_terms;
   ++counters_.projected_assemblies;
   return projected_ready_;
@@ -336,14 +349,14 @@ bool NewtonIteration::ComputeStep(bool exact, double residual, std::vector<doubl
   {
     Stopwatch watch(&counters_.factorization_s);
     factorized =
-        cholesky_.Factorize(exact ? hessian_.values() : hessian_.projected_values(), &shift);
+        cholesky().Factorize(exact ? hessian().values() : hessian().projected_values(), &shift);
   }
   if (!factorized) {
     ++counters_.failed_factorizations;
     return false;
   }
   Stopwatch watch(&counters_.solve_s);
-  cholesky_.Solve(free_gradient_, step);
+  cholesky().Solve(free_gradient_, step);
   for (double& value : *step) value = -value;
   return std::all_of(step->begin(), step->end(), [](double v) { return std::isfinite(v); });
 }
@@ -379,10 +392,12 @@ bool NewtonIteration::LineSearch(const std::vector<double>& step, double* alpha)
   const double rounding =
       64.0 * std::numeric_limits<double>::epsilon() * assembly_.energy_magnitude;
   trial_ = model_.positions;
-  // No node may pass through an obstacle (src/model/contact.h): the step starts at most there.
+  // No node may pass through an obstacle (src/model/contact.h) and no piece of the fabric through
+  // another (src/model/self_contact.h): the step starts at most there.
   SetTrial(step, 1.0, &trial_);
-  double a = ObstacleSafeFraction(model_, model_.positions.data(), trial_.data());
+  double a = StepSafeFraction(model_, model_.positions.data(), trial_.data());
   if (!(a > 0.0)) return false;
+  counters_.filtered_steps += a < 1.0;
   for (int evaluation = 0; evaluation < settings_.max_line_search; ++evaluation) {
     SetTrial(step, a, &trial_);
     double trial_energy;
@@ -395,7 +410,7 @@ bool NewtonIteration::LineSearch(const std::vector<double>& step, double* alpha)
     if (evaluation == 0) {
       // Gain ratio of the full step against its quadratic model (A + λD) p = −g:
       // predicted decrease −g·p − ½ pᵀA p = −½ g·p + ½ λ pᵀD p.
-      // For a step limited to a < 1 by an obstacle: −a g·p − ½ a² pᵀA p.
+      // For a step limited to a < 1 by the step filter: −a g·p − ½ a² pᵀA p.
       const double predicted =
           -a * slope + 0.5 * a * a * (slope + last_lambda_ * WeightedSquaredNorm(step));
       full_step_gain_ = flat     ? (accepted ? 1.0 : 0.0)
@@ -436,7 +451,7 @@ void NewtonIteration::Expand(const std::vector<double>& step, double energy, dou
   expanded_ = trial_;
   for (int k = 0; k < settings_.max_expansions; ++k) {
     SetTrial(step, 2.0 * *alpha, &expanded_);
-    if (ObstacleSafeFraction(model_, model_.positions.data(), expanded_.data()) < 1.0) return;
+    if (StepSafeFraction(model_, model_.positions.data(), expanded_.data()) < 1.0) return;
     double expanded_energy;
     ++counters_.energy_evaluations;
     if (!EvaluateEnergy(model_, expanded_.data(), &expanded_energy) ||
@@ -457,7 +472,7 @@ bool NewtonIteration::EscapeSaddle() {
   if (counters_.saddle_escapes >= kMaxEscapes) return false;
   double eigenvalue;
   std::vector<double> direction;
-  if (!NegativeCurvature(hessian_, &eigenvalue, &direction, &cholesky_)) return false;
+  if (!NegativeCurvature(hessian(), &eigenvalue, &direction, &cholesky())) return false;
   const double rounding =
       64.0 * std::numeric_limits<double>::epsilon() * assembly_.energy_magnitude;
   double best_energy = assembly_.energy - rounding;
@@ -466,7 +481,7 @@ bool NewtonIteration::EscapeSaddle() {
   for (double t = 0.1 * model_size_; t > 1e-7 * model_size_; t *= 0.3) {
     for (double sign : {1.0, -1.0}) {
       SetTrial(direction, sign * t, &trial_);
-      if (ObstacleSafeFraction(model_, model_.positions.data(), trial_.data()) < 1.0) continue;
+      if (StepSafeFraction(model_, model_.positions.data(), trial_.data()) < 1.0) continue;
       double energy;
       ++counters_.energy_evaluations;
       if (EvaluateEnergy(model_, trial_.data(), &energy) && energy < best_energy) {
@@ -497,6 +512,8 @@ class NewtonSolver : public Solver {
         {"energy_evaluations", c.energy_evaluations},
         {"exact_hessian_steps", c.exact_hessian_steps},
         {"saddle_escapes", c.saddle_escapes},
+        {"self_contact_rebuilds", c.contact_rebuilds},
+        {"filtered_steps", c.filtered_steps},
         {"line_search_failures", c.line_search_failures},
         {"projected_terms_last", c.projected_terms},
         {"projected_assemblies", c.projected_assemblies},

@@ -32,8 +32,8 @@
 #include <vector>
 
 #include "src/derivatives/local_energy.h"
-#include "src/model/contact.h"
 #include "src/model/equilibrium.h"
+#include "src/model/self_contact.h"
 #include "src/scene/solver_methods.h"
 #include "src/solvers/solvers.h"
 
@@ -119,11 +119,11 @@ struct Objective {
   }
 
   bool Crosses(const std::vector<double>& free) {
-    if (model.obstacles.empty()) return false;
+    if (model.obstacles.empty() && !model.self_contact.enabled) return false;
     if (best_point.empty()) return false;
     crossing_from.assign(model.positions.begin(), model.positions.end());
     dofs.Scatter(best_point.data(), crossing_from.data());
-    return ObstacleSafeFraction(model, crossing_from.data(), model.positions.data()) < 1.0;
+    return StepSafeFraction(model, crossing_from.data(), model.positions.data()) < 1.0;
   }
   std::vector<double> crossing_from;
 
