@@ -80,6 +80,7 @@ void ReturnToLastFinite(const Scene& scene, const std::string& method, const Las
                             " iterations (" + result->summary.termination + ")";
   const std::vector<double>& back = last.iteration >= 0 ? last.positions : model.initial;
   if (static_cast<int>(back.size()) == model.num_dofs()) model.positions = back;
+  UpdateSelfContact(&model, model.positions.data());  // the pairs near there
   // Constraint forces (Provot's) were those of the final state: they do not hold at this one.
   result->summary.constraint_forces.clear();
   result->certificate = ComputeCertificate(model, model.positions.data());
@@ -229,7 +230,9 @@ RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
   RunResult result;
   result.summary = found->make()->Solve(model, options);
   result.summary.solver = method;
-  if (model.self_contact.generation != generation) workspace.reset();
+  // The certificate's energy has every pair near the final state (newton's have them already; the
+  // other methods keep their start's, and a pair that came near without a term counts now).
+  UpdateSelfContact(&model, model.positions.data());
   const std::vector<double>* constraint =
       result.summary.constraint_forces.empty() ? nullptr : &result.summary.constraint_forces;
   result.certificate = ComputeCertificate(model, model.positions.data(), constraint);
@@ -237,6 +240,9 @@ RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
   result.contact = MeasureContact(scene.obstacles, scene.contact, model, model.positions.data(),
                                   result.certificate.contact_forces);
   result.self_intersections = FindSelfIntersections(model, model.positions);
+  // The pattern of the terms the model has now (newton, or the return to the last finite iterate,
+  // may have replaced the self-contact terms).
+  if (model.self_contact.generation != generation) workspace.reset();
   if (has_free && !workspace) workspace = std::make_unique<HessianWorkspace>(model);
   FreeHessian* hessian = workspace ? &workspace->hessian : nullptr;
   result.residual_floor = RelativeResidualFloor(model, model.positions.data(), hessian);
