@@ -75,6 +75,7 @@ struct Model {
     // compressed rows: those of k are items[start[k] .. start[k + 1])).
     std::vector<int> neighbour_triangle_start, neighbour_triangles;
     std::vector<int> neighbour_side_start, neighbour_sides;
+    bool neighbours_found = false;  // the lists above are made (at the first UpdateSelfContact)
     // The pairs that have terms: (node, triangle index) and (side index, side index), sorted.
     std::vector<std::array<int, 2>> point_triangle, edge_edge;
     std::vector<double> built_at;  // the positions the pairs were found at (3 per node)

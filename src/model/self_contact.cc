@@ -107,13 +107,24 @@ bool Listed(const std::vector<int>& starts, const std::vector<int>& items, int o
   return std::binary_search(items.begin() + starts[of], items.begin() + starts[of + 1], item);
 }
 
+// Whether node `node` and triangle `t` are rest-shape neighbours: from the list where it has been
+// made (FindRestNeighbours, at a model's first UpdateSelfContact), else from their distance.
 bool RestNeighbours(const Model& model, int node, int t) {
   const Model::SelfContact& self = model.self_contact;
+  if (!self.neighbours_found) {
+    return NodeTriangleDistance(model.initial.data(), node, model.triangles[t]) <
+           kSelfRestFactor * self.clearance;
+  }
   return Listed(self.neighbour_triangle_start, self.neighbour_triangles, node, t);
 }
 
+// The same for sides `s` and `o`.
 bool RestNeighbourSides(const Model& model, int s, int o) {
   const Model::SelfContact& self = model.self_contact;
+  if (!self.neighbours_found) {
+    return SideSideDistance(model.initial.data(), self.sides[s], self.sides[o]) <
+           kSelfRestFactor * self.clearance;
+  }
   return Listed(self.neighbour_side_start, self.neighbour_sides, s, o);
 }
 
@@ -149,6 +160,7 @@ void FindRestNeighbours(Model* model) {
            &self.neighbour_triangles);
   Compress(std::move(sides), static_cast<int>(self.sides.size()), &self.neighbour_side_start,
            &self.neighbour_sides);
+  self.neighbours_found = true;
 }
 
 // The pairs nearer than `radius` at x that may have a term: sharing no node, not all fixed, and
@@ -373,16 +385,18 @@ void SetUpSelfContact(const Scene& scene, Model* model) {
   self.stiffness = ContactStiffness(layers, *model);
   self.first_term = static_cast<int>(model->terms.size());
   self.sides = SidesOf(model->triangles);
-  FindRestNeighbours(model);
-  Pairs point_triangle, edge_edge;
-  FindPairs(*model, model->positions.data(), kSelfBuildFactor * self.clearance, &point_triangle,
-            &edge_edge);
-  BuildTerms(point_triangle, edge_edge, model->positions.data(), model);
+  // No pair has a term at the start: the model is built at Model::initial, the rest shape, where
+  // every pair nearer than the build radius is a rest-shape neighbour (kSelfRestFactor ≥
+  // kSelfBuildFactor). The neighbours are listed at the first UpdateSelfContact, so that a model
+  // only built (drape check, a scene's tests) does not pay for them.
+  assert(model->positions == model->initial && "built at the start");
+  BuildTerms({}, {}, model->positions.data(), model);
 }
 
 bool UpdateSelfContact(Model* model, const double* positions) {
   Model::SelfContact& self = model->self_contact;
   if (!self.enabled) return false;
+  if (!self.neighbours_found) FindRestNeighbours(model);
   assert(static_cast<int>(model->terms.size()) ==
              self.first_term +
                  static_cast<int>(self.point_triangle.size() + self.edge_edge.size()) &&

@@ -10,9 +10,9 @@
 // at least (1 − f) C = 0.9 C apart.
 //
 // Which pairs have terms. Only pairs that are near: the terms are the last of Model::terms and are
-// replaced as the fabric moves (UpdateSelfContact; newton asks at every iterate, the other methods
-// once at their start). A pair nearer than kSelfTriggerFactor × C must have its term; when one has
-// not, every pair nearer than kSelfBuildFactor × C gets one (so a layer approaching the margin
+// replaced as the fabric moves (UpdateSelfContact; newton asks at every iterate, RunSolve before
+// and after every method). A pair nearer than kSelfTriggerFactor × C must have its term; when one
+// has not, every pair nearer than kSelfBuildFactor × C gets one (so a layer approaching the margin
 // between the two is already covered), and the Hessian's pattern is built again
 // (Model::SelfContact::generation). A pair nearer than kSelfRestFactor × C in the fabric's rest
 // shape (Model::initial) never has a term: such points are neighbours along the fabric, within
@@ -21,13 +21,15 @@
 // kSelfRestFactor ≥ kSelfBuildFactor).
 //
 // The step filter. SelfSafeFraction limits a step as newton's obstacle step limit does
-// (ObstacleSafeFraction): every node–triangle and side–side pair that shares no node, with or
-// without a term, keeps at least half of min(d₀, C) all along the straight move, d₀ its distance
-// at the step's start, by conservative advancement (the pair's distance changes with the step's
-// fraction s at most as fast as |Δp| + max |Δcorner|). So no step passes a piece of the fabric
-// through another (IPC's filtered line search: Li et al. 2020, "Incremental Potential Contact",
-// ACM Trans. Graph. 39(4), §4.3, with a floor instead of a root of the distance). Candidate pairs
-// come from a bounding-box tree over the triangles' (and sides') boxes swept by the step.
+// (ObstacleSafeFraction): every node–triangle and side–side pair that shares no node and is not a
+// rest-shape neighbour, with or without a term, keeps at least half of min(d₀, C) all along the
+// straight move, d₀ its distance at the step's start, by conservative advancement (the pair's
+// distance changes with the step's fraction s at most as fast as the largest move of one of its
+// nodes relative to another). So no step passes a piece of the fabric through another (IPC's
+// filtered line search: Li et al. 2020, "Incremental Potential Contact", ACM Trans. Graph. 39(4),
+// §4.3, with a floor instead of a root of the distance). Candidate pairs come from a bounding-box
+// tree over the triangles' (and sides') boxes swept by the step; where no pair without a term can
+// have come within C/2 since the terms were found, only the pairs with terms are checked.
 #ifndef DRAPE_SRC_MODEL_SELF_CONTACT_H_
 #define DRAPE_SRC_MODEL_SELF_CONTACT_H_
 
@@ -39,6 +41,7 @@ namespace drape {
 constexpr double kSelfTriggerFactor = 1.5;  // × C: a pair this near must have its term
 constexpr double kSelfBuildFactor = 2.0;    // × C: pairs this near get one when terms are built
 constexpr double kSelfRestFactor = 2.0;     // × C: pairs this near at rest never get one
+static_assert(kSelfRestFactor >= kSelfBuildFactor, "no pair has a term at rest");
 
 // Whether the scene's fabric gets contact with itself: contact.self, a fabric of triangles (a
 // chain's links have no surface to press) in 3 dimensions.

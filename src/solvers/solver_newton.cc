@@ -118,6 +118,9 @@ struct Counters {
   int saddle_escapes = 0, projected_assemblies = 0, projected_unused = 0, contact_rebuilds = 0;
   int filtered_steps = 0;
   double assembly_s = 0.0, factorization_s = 0.0, solve_s = 0.0, line_search_s = 0.0;
+  // Of those: finding the self-contact pairs again (in assembly_s) and the step filter of the line
+  // search and its expansions (in line_search_s).
+  double self_contact_s = 0.0, step_filter_s = 0.0;
 };
 
 // Weights D of the pseudo-time term: lumped masses over their mean, 1 where there is no mass.
@@ -223,7 +226,12 @@ class NewtonIteration {
 // The fabric's contact with itself at the iterate (UpdateSelfContact): where its terms changed,
 // a pattern of the new terms and its analysis. Returns whether they changed.
 bool NewtonIteration::RefreshModel() {
-  if (!UpdateSelfContact(&model_, model_.positions.data())) return false;
+  bool changed = false;
+  {
+    Stopwatch watch(&counters_.self_contact_s);
+    changed = UpdateSelfContact(&model_, model_.positions.data());
+  }
+  if (!changed) return false;
   own_workspace_ = std::make_unique<HessianWorkspace>(model_);
   workspace_ = own_workspace_.get();
   ++counters_.contact_rebuilds;
@@ -395,7 +403,11 @@ bool NewtonIteration::LineSearch(const std::vector<double>& step, double* alpha)
   // No node may pass through an obstacle (src/model/contact.h) and no piece of the fabric through
   // another (src/model/self_contact.h): the step starts at most there.
   SetTrial(step, 1.0, &trial_);
-  double a = StepSafeFraction(model_, model_.positions.data(), trial_.data());
+  double a = 1.0;
+  {
+    Stopwatch filter(&counters_.step_filter_s);
+    a = StepSafeFraction(model_, model_.positions.data(), trial_.data());
+  }
   if (!(a > 0.0)) return false;
   counters_.filtered_steps += a < 1.0;
   for (int evaluation = 0; evaluation < settings_.max_line_search; ++evaluation) {
@@ -451,7 +463,12 @@ void NewtonIteration::Expand(const std::vector<double>& step, double energy, dou
   expanded_ = trial_;
   for (int k = 0; k < settings_.max_expansions; ++k) {
     SetTrial(step, 2.0 * *alpha, &expanded_);
-    if (StepSafeFraction(model_, model_.positions.data(), expanded_.data()) < 1.0) return;
+    double safe = 1.0;
+    {
+      Stopwatch filter(&counters_.step_filter_s);
+      safe = StepSafeFraction(model_, model_.positions.data(), expanded_.data());
+    }
+    if (safe < 1.0) return;
     double expanded_energy;
     ++counters_.energy_evaluations;
     if (!EvaluateEnergy(model_, expanded_.data(), &expanded_energy) ||
@@ -523,6 +540,8 @@ class NewtonSolver : public Solver {
         {"factorization_s", c.factorization_s},
         {"solve_s", c.solve_s},
         {"line_search_s", c.line_search_s},
+        {"self_contact_s", c.self_contact_s},
+        {"step_filter_s", c.step_filter_s},
     };
     return summary;
   }
