@@ -58,10 +58,7 @@ struct EdgeEdgeContact {
     }
     const T* q1 = end[nearest.other + 1];
     const T e[3] = {q1[0] - q0[0], q1[1] - q0[1], q1[2] - q0[2]};
-    const T w[3] = {u[1] * e[2] - u[2] * e[1], u[2] * e[0] - u[0] * e[2],
-                    u[0] * e[1] - u[1] * e[0]};
-    return SafeSqrt((w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) /
-                    (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
+    return DistanceToLine(u, e);
   }
 
   template <typename T>

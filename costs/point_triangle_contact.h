@@ -50,10 +50,7 @@ struct PointTriangleContact {
     if (nearest.corners == 2) {
       const T* q1 = corner[(nearest.first + 1) % 3];
       const T e[3] = {q1[0] - q0[0], q1[1] - q0[1], q1[2] - q0[2]};
-      const T w[3] = {u[1] * e[2] - u[2] * e[1], u[2] * e[0] - u[0] * e[2],
-                      u[0] * e[1] - u[1] * e[0]};
-      return SafeSqrt((w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) /
-                      (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]));
+      return DistanceToLine(u, e);
     }
     const T ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     const T ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
