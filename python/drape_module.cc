@@ -419,9 +419,11 @@ py::dict Drops(const PyScene& loaded, int drops, const std::string& directory, i
 // `drape fabrics`: the table solved on the base scene (empty: the standard tester) into `out`.
 py::dict Fabrics(const std::string& table, const std::string& scene,
                  const std::vector<std::string>& overrides, std::optional<int> drops,
-                 const std::string& out, int threads, const py::object& progress) {
+                 const std::string& out, int threads, const py::object& progress,
+                 const std::string& calibration) {
   FabricsOptions options;
   options.table = table;
+  options.calibration_file = calibration;
   options.scene = scene;
   options.overrides = overrides;
   options.drops = drops;
@@ -652,7 +654,8 @@ PYBIND11_MODULE(_drape, module) {
   module.def("sweep", &Sweep, py::arg("path"), py::arg("out"), py::arg("threads"), py::arg("plots"),
              py::arg("progress"));
   module.def("fabrics", &Fabrics, py::arg("table"), py::arg("scene"), py::arg("overrides"),
-             py::arg("drops"), py::arg("out"), py::arg("threads"), py::arg("progress"));
+             py::arg("drops"), py::arg("out"), py::arg("threads"), py::arg("progress"),
+             py::arg("calibration"));
   module.def("sensitivities", &Sensitivities, py::arg("scene"), py::arg("keys"), py::arg("solver"),
              py::arg("progress"));
   module.def("version", &DrapeVersion);

@@ -353,6 +353,41 @@ TEST_F(CliTest, KesInputsAreReportedInSiUnits) {
   EXPECT_EQ(given["units"]["kes.G"].as<std::string>(), "gf/(cm·deg)");
 }
 
+// --calibration: `drape check` prints the calibrated material and the calibration, `drape solve`
+// solves with it and records it in summary.json; a bad file exits 2 at its line and writes nothing.
+TEST_F(CliTest, ACalibrationIsAppliedAndRecorded) {
+  const std::string scene =
+      std::string(drape_tests::kSourceDir) + "/configs/fv/drape_tester_cotton_24.yaml";
+  const fs::path calibration = directory_ / "calibration.yaml";
+  std::ofstream(calibration) << "calibration: {bending_scale: 2}\nfitted: {fabrics: 3}\n";
+  const ProgramOutcome check = Drape({"check", scene, "--calibration", calibration.string()});
+  ASSERT_EQ(check.exit_status, 0) << check.err;
+  EXPECT_NE(check.out.find("D_warp " + RoundedNumber(2.0 * KesBendingRigidity(0.12), 6) + " N*m"),
+            std::string::npos)
+      << check.out;
+  EXPECT_NE(check.out.find("calibration " + calibration.string() + " (bending_scale 2)"),
+            std::string::npos)
+      << check.out;
+  const ProgramOutcome solve =
+      Drape({"solve", scene, "--out", out_.string(), "--calibration", calibration.string(), "--set",
+             "solver.max_iterations=1", "--set", "mesh.spacing=0.03"});
+  ASSERT_NE(solve.exit_status, 2) << solve.err;
+  const YAML::Node summary = Summary(out_);
+  EXPECT_EQ(summary["material_si"]["D_warp"].as<double>(), 2.0 * KesBendingRigidity(0.12));
+  EXPECT_EQ(summary["calibration"].as<std::string>(), calibration.string() + " (bending_scale 2)");
+
+  std::ofstream(calibration) << "calibration:\n  bending_scale: -1\n";
+  const fs::path other = directory_ / "other";
+  const ProgramOutcome bad =
+      Drape({"solve", scene, "--out", other.string(), "--calibration", calibration.string()});
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_NE(bad.err.find("calibration.yaml:2:18: calibration.bending_scale: must be in [0.01, "
+                         "100], got -1"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(other));
+}
+
 // `drape fabrics` refuses a bad table with its row and column, exit 2, and writes nothing; a good
 // one prints the statistics line and writes the table, its statistics and its report.
 TEST_F(CliTest, FabricsRefusesABadTableAndWritesNothing) {
@@ -378,6 +413,26 @@ TEST_F(CliTest, FabricsRefusesABadTableAndWritesNothing) {
   EXPECT_EQ(
       YAML::LoadFile((out_ / "fabrics.json").string())["statistics"]["fabrics_compared"].as<int>(),
       1);
+}
+
+// `drape fabrics --calibrate` refuses, exit 2 and nothing written, a table with too few measured
+// fabrics and a constant it does not know.
+TEST_F(CliTest, FabricsCalibrateRefusesWhatItCannotFit) {
+  const fs::path table = directory_ / "fabrics.csv";
+  std::ofstream(table) << "name,kes.W,kes.B_warp,kes.B_weft,kes.G,kes.EMT_warp,kes.EMT_weft,"
+                          "measured_dc\na,12,0.12,0.08,0.9,4,7,0.7\nb,12,0.05,0.05,0.9,4,7,0.5\n";
+  const ProgramOutcome small =
+      Drape({"fabrics", table.string(), "-o", out_.string(), "--calibrate", "bending_scale"});
+  EXPECT_EQ(small.exit_status, 2);
+  EXPECT_NE(small.err.find("fabrics.csv: measured_dc: a calibration of 1 constant needs at least "
+                           "3 fabrics with a measured_dc"),
+            std::string::npos)
+      << small.err;
+  const ProgramOutcome unknown =
+      Drape({"fabrics", table.string(), "-o", out_.string(), "--calibrate", "bending_scael"});
+  EXPECT_EQ(unknown.exit_status, 2);
+  EXPECT_NE(unknown.err.find("did you mean 'bending_scale'?"), std::string::npos) << unknown.err;
+  EXPECT_FALSE(fs::exists(out_));
 }
 
 TEST_F(CliTest, UsageErrorsExitTwoWithTheUsage) {

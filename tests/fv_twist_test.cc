@@ -18,48 +18,49 @@ namespace drape {
 namespace {
 
 // The corners P, E, N, C of a flat h1 × h2 cell, nodes 0..3.
-std::vector<double> FlatCell(double h1, double h2) {
+std::vector<double> TwistFlatCell(double h1, double h2) {
   return {0, 0, 0, h1, 0, 0, 0, h2, 0, h1, h2, 0};
 }
 
-std::unique_ptr<Term> Cell(double weight = 0.4e-5 * 0.02 * 0.03) {
+std::unique_ptr<Term> TwistCell(double weight = 0.4e-5 * 0.02 * 0.03) {
   return MakeTerm("fv_twist", {0, 1, 2, 3}, FvTwist::Create(weight, 0.02, 0.03));
 }
 
 TEST(FvTwist, DerivativesMatchDifferencesAtRandomStates) {
-  const auto term = Cell();
+  const auto term = TwistCell();
   for (unsigned seed = 1; seed <= 20; ++seed) {
     testing::ExpectDerivativesMatchDifferences(
-        *term, testing::Perturbed(FlatCell(0.02, 0.03), 0.01, seed));
+        *term, testing::Perturbed(TwistFlatCell(0.02, 0.03), 0.01, seed));
   }
 }
 
 TEST(FvTwist, DerivativesMatchDifferencesAtTheFlatRestState) {
-  testing::ExpectDerivativesMatchDifferences(*Cell(), FlatCell(0.02, 0.03));
+  testing::ExpectDerivativesMatchDifferences(*TwistCell(), TwistFlatCell(0.02, 0.03));
 }
 
 TEST(FvTwist, ZeroForceAtRestInAnyOrientation) {
-  testing::ExpectZeroForceInAnyOrientation(*Cell(), FlatCell(0.02, 0.03), 1e-15);
+  testing::ExpectZeroForceInAnyOrientation(*TwistCell(), TwistFlatCell(0.02, 0.03), 1e-15);
 }
 
 TEST(FvTwist, InvariantUnderRigidMotionAndBalanced) {
-  const auto term = Cell();
+  const auto term = TwistCell();
   for (unsigned seed = 1; seed <= 10; ++seed) {
-    const std::vector<double> positions = testing::Perturbed(FlatCell(0.02, 0.03), 0.008, seed);
+    const std::vector<double> positions =
+        testing::Perturbed(TwistFlatCell(0.02, 0.03), 0.008, seed);
     testing::ExpectRigidMotionInvariant(*term, positions);
     testing::ExpectForcesBalance(*term, positions);
   }
 }
 
 TEST(FvTwist, StagedProjectionIsSemidefiniteItsStandInAndExactWhereItCan) {
-  const auto term = Cell();
+  const auto term = TwistCell();
   for (EigenvalueFilter filter : {EigenvalueFilter::kClamp, EigenvalueFilter::kAbsolute}) {
     int changed = 0;
     for (unsigned seed = 1; seed <= 20; ++seed) {
       changed += testing::ExpectStagedProjectionValid(
-          *term, testing::Perturbed(FlatCell(0.02, 0.03), 0.01, seed), filter);
+          *term, testing::Perturbed(TwistFlatCell(0.02, 0.03), 0.01, seed), filter);
     }
-    EXPECT_FALSE(testing::ExpectStagedProjectionValid(*term, FlatCell(0.02, 0.03), filter));
+    EXPECT_FALSE(testing::ExpectStagedProjectionValid(*term, TwistFlatCell(0.02, 0.03), filter));
     EXPECT_GT(changed, 0);  // the indefinite case is exercised
   }
 }

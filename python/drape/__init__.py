@@ -654,20 +654,22 @@ class FabricsResult:
 
 
 def fabrics(table, scene=None, set=None, drops=None, out=None, threads=0,
-            progress=_print_to_stderr):
+            progress=_print_to_stderr, calibration=None):
     """Runs `drape fabrics` on a fabric table (CSV); returns a FabricsResult.
 
     scene: the base scene (a drape test), default the standard tester; set: overrides of every
     fabric's scene, after its material; drops: predict each fabric's mean over this many drops;
     out: where the files go (kept: a rerun solves only what is missing), else a temporary folder,
-    removed after reading; progress: a callable given a line per finished fabric.
+    removed after reading; progress: a callable given a line per finished fabric; calibration:
+    a calibration.yaml that `drape fabrics --calibrate` wrote, applied to every fabric.
     """
     path = _existing(table, "fabric table")
     base = "" if scene is None else _existing(scene, "scene file")
+    calibrated = "" if calibration is None else _existing(calibration, "calibration file")
     count = _drops_count(drops)
     return _run_in_folder(
         out, "drape_fabrics_",
         lambda folder: _drape.fabrics(path, base, _overrides(set), count, folder, threads,
-                                      _progress(progress)),
+                                      _progress(progress), calibrated),
         lambda folder, outcome: FabricsResult(folder, outcome["line"]),
         "drape.fabrics interrupted; the finished fabrics are `result`")

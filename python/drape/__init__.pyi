@@ -164,7 +164,7 @@ class FabricsResult:
 
 def fabrics(table: _Path, scene: _Path | None = None, set: _Overrides = None,
             drops: int | None = None, out: _Path | None = None, threads: int = 0,
-            progress: _Progress = ...) -> FabricsResult: ...
+            progress: _Progress = ..., calibration: _Path | None = None) -> FabricsResult: ...
 
 # d positions / d key for each key: shape (nodes, 3, len(keys)).
 def sensitivities(scene: Scene | _Path | dict[str, Any], keys: str | Sequence[str], set: _Overrides = None,

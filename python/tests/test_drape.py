@@ -474,6 +474,24 @@ def test_fabrics_in_python_are_the_command_lines(tmp_path):
     assert result.statistics["fabrics_compared"] == 1
     assert result.line.startswith("1 fabric: 1 predicted")
 
+    calibration = tmp_path / "calibration.yaml"
+    calibration.write_text("calibration: {bending_scale: 2}\n")
+    calibrated = drape.fabrics(table, set={"mesh.spacing": 0.05}, threads=1, progress=None,
+                               calibration=calibration)
+    subprocess.run([BINARY, "fabrics", str(table), "--set", "mesh.spacing=0.05", "--threads", "1",
+                    "--calibration", str(calibration), "-o", str(tmp_path / "calibrated")],
+                   check=True, capture_output=True,
+                   env=dict(os.environ, OPENBLAS_CORETYPE=module_blas_core()))
+    with open(tmp_path / "calibrated" / "fabrics.csv") as file:
+        cli = next(csv.DictReader(file))
+    calibrated_rows = (calibrated.table.to_dict("records")
+                       if hasattr(calibrated.table, "to_dict") else calibrated.table)
+    assert calibrated_rows[0]["predicted_dc"] == float(cli["predicted_dc"])
+    assert calibrated_rows[0]["si.D_warp [N*m]"] == 2 * rows[0]["si.D_warp [N*m]"]
+    calibration.write_text("calibration: {bending_scale: -1}\n")
+    with pytest.raises(drape.InputError, match="calibration.bending_scale: must be in"):
+        drape.fabrics(table, calibration=calibration, progress=None)
+
 
 def test_every_long_command_writes_into_a_temporary_folder_unless_told(tmp_path):
     before = set(os.listdir(config("sweep")))

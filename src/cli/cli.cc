@@ -41,6 +41,7 @@
 #include "src/parallel/task_farm.h"
 #include "src/run/run.h"
 #include "src/run/state_text.h"
+#include "src/scene/calibration.h"
 #include "src/scene/drape_tester.h"
 #include "src/scene/file_paths.h"
 #include "src/scene/material_models.h"
@@ -91,8 +92,21 @@ struct Arguments {
   int threads = 0;                    // fit, solve --drops: local threads (task_farm.h)
   std::optional<int> drops;           // solve: repeated drops of a drape test
   std::vector<std::string> overrides;
-  bool json = false;  // check: the resolved scene as JSON with units
+  bool json = false;                       // check: the resolved scene as JSON with units
+  std::optional<std::string> calibration;  // solve, check: --calibration FILE
 };
+
+// The scene with its overrides and, where given, the calibration applied (src/scene/calibration.h).
+Scene LoadCalibratedScene(const Arguments& arguments, Calibration* calibration) {
+  Scene scene = LoadScene(arguments.file, arguments.overrides);
+  if (arguments.calibration) *calibration = ReadCalibration(*arguments.calibration);
+  ApplyCalibration(*calibration, &scene);
+  return scene;
+}
+
+std::string CalibrationProvenance(const Calibration& calibration) {
+  return calibration.empty() ? "" : calibration.Provenance();
+}
 
 // "unknown solver 'newtn' (known: newton, ...); did you mean 'newton'?"
 
@@ -212,13 +226,14 @@ int DropsOf(const Arguments& arguments, const Scene& scene) {
   return drops;
 }
 
-int SolveDrops(const Arguments& arguments, const Scene& scene, const std::string& directory,
-               std::ostream& out, std::ostream& err) {
+int SolveDrops(const Arguments& arguments, const Scene& scene, const std::string& calibration,
+               const std::string& directory, std::ostream& out, std::ostream& err) {
   DropsCommand command;
   command.drops = DropsOf(arguments, scene);
   command.threads = arguments.threads;
   command.directory = directory;
   command.overrides = arguments.overrides;
+  command.calibration = calibration;
   EnableInterrupt();
   const DropsCommandResult outcome =
       RunDropsCommand(scene, command, CommandContext{err, arguments.command_line});
@@ -234,7 +249,8 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
   if (arguments.solver && !FindSolver(*arguments.solver)) {
     throw UsageError("--solver: " + UnknownSolverText(*arguments.solver));
   }
-  Scene scene = LoadScene(arguments.file, arguments.overrides);
+  Calibration calibration;
+  Scene scene = LoadCalibratedScene(arguments, &calibration);
   if (arguments.solver) scene.solver.method = *arguments.solver;
   if (arguments.out) scene.output.directory = *arguments.out;
   RequireKnownSolver(scene);
@@ -252,7 +268,9 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
   if (const std::optional<MeshAdvice> advice = AdviseMesh(scene, model); advice && advice->coarse) {
     err << "drape: warning: " << CoarseMeshWarning(*advice) << "\n";
   }
-  if (DropsOf(arguments, scene) > 1) return SolveDrops(arguments, scene, directory, out, err);
+  if (DropsOf(arguments, scene) > 1) {
+    return SolveDrops(arguments, scene, CalibrationProvenance(calibration), directory, out, err);
+  }
   // The folder's lock is held from before the solve to the end of the writing: a second run into
   // the same folder is refused here, before it solves, and nothing of either run is lost. A run
   // that fails before writing removes the folder if the lock created it.
@@ -276,7 +294,8 @@ int Solve(const Arguments& arguments, std::ostream& out, std::ostream& err,
 
   try {
     WriteOutputs(scene, model, report, directory,
-                 Provenance{arguments.command_line, arguments.overrides});
+                 Provenance{arguments.command_line, arguments.overrides,
+                            CalibrationProvenance(calibration)});
     lock->KeepFolder();
   } catch (const std::exception& error) {
     err << "drape: cannot write the results: " << error.what() << "\n";
@@ -315,7 +334,8 @@ std::string TwistLine(const FiniteVolumeSpec& fv) {
 }
 
 int Check(const Arguments& arguments, std::ostream& out) {
-  const Scene scene = LoadScene(arguments.file, arguments.overrides);
+  Calibration calibration;
+  const Scene scene = LoadCalibratedScene(arguments, &calibration);
   RequireKnownSolver(scene);
   const Model model = BuildModel(scene);
   if (arguments.json) {
@@ -344,6 +364,7 @@ int Check(const Arguments& arguments, std::ostream& out) {
         << (value.unit == "1" ? "" : " " + value.unit) << ";";
   }
   out << "\n";
+  if (!calibration.empty()) out << "calibration " << calibration.Provenance() << "\n";
   if (!material.finite_volume.measured.empty()) {
     out << "material as given:";
     for (const GivenMeasurement& value : material.finite_volume.measured) {
@@ -514,6 +535,16 @@ void AddSceneArguments(CLI::App* command, Arguments* arguments, const std::strin
   AddSetOption(command, &arguments->overrides);
 }
 
+// --calibration FILE: a calibration `drape fabrics --calibrate` wrote.
+template <typename Target>
+void AddCalibrationOption(CLI::App* command, Target* file) {
+  command
+      ->add_option("--calibration", *file,
+                   "apply this calibration of the fabric's inputs (calibration.yaml, written by "
+                   "drape fabrics --calibrate)")
+      ->type_name("FILE");
+}
+
 // A finite number > 0 ("inf", "nan", "5s" and "0" are refused).
 const CLI::Validator kFinitePositive(
     [](const std::string& text) {
@@ -628,6 +659,7 @@ CommandRun DefineSolve(CLI::App* solve) {
       ->check(kThreadCount)
       ->capture_default_str()
       ->type_name("N");
+  AddCalibrationOption(solve, &arguments->calibration);
   solve->footer(kExitStatus);
   return [arguments](const Invocation& call) {
     arguments->command_line = call.command_line;
@@ -642,6 +674,7 @@ CommandRun DefineCheck(CLI::App* check) {
   check->add_flag("--json", arguments->json,
                   "print the scene as solved (defaults filled in, SI) as JSON, each value "
                   "{\"value\": ..., \"unit\": ...}, instead of the summary");
+  AddCalibrationOption(check, &arguments->calibration);
   return [arguments](const Invocation& call) { return Check(*arguments, call.out); };
 }
 
@@ -780,6 +813,16 @@ CommandRun DefineFabrics(CLI::App* fabrics) {
       ->type_name("N");
   fabrics->add_option("-o,--out", options.out, "write into this folder (default: out/<table name>)")
       ->type_name("DIR");
+  AddCalibrationOption(fabrics, &options.calibration_file);
+  fabrics
+      ->add_option("--calibrate", options.calibrate,
+                   "fit these calibration constants, comma-separated or repeated (one or two of: "
+                   "bending_scale, bending_power, shear_scale, bending_friction_scale, "
+                   "bending_friction_share), to the table's measured drape coefficients; writes "
+                   "calibration.yaml")
+      ->allow_extra_args(false)
+      ->delimiter(',')
+      ->type_name("KEY[,KEY]");
   fabrics
       ->add_option("--only", options.only,
                    "run only this task (0-based: fabric × drops + drop − 1)")

@@ -113,6 +113,7 @@ DropsCommandResult RunDropsCommand(const Scene& scene, const DropsCommand& comma
   options.directory = command.directory;
   options.command_line = context.command_line;
   options.overrides = command.overrides;
+  options.calibration = command.calibration;
   DropsCommandResult outcome;
   outcome.summary = RunDrops(scene, options, context.log);
   outcome.interrupted = InterruptRequested();
@@ -161,8 +162,18 @@ SweepCommandResult RunSweepCommand(const SweepCommand& command, const CommandCon
 FabricsCommandResult RunFabricsCommand(FabricsOptions options, const CommandContext& context) {
   RequireThreadCount(options.threads);
   options.command_line = context.command_line;
-  const FabricsSpec spec = LoadFabrics(options);
   FabricsCommandResult outcome;
+  if (!options.calibrate.empty()) {
+    outcome.calibration = RunCalibrate(options, context.log);
+    const CalibrateSummary& s = *outcome.calibration;
+    outcome.line = CalibrateLine(s);
+    outcome.all_predicted = s.problem.empty() && !s.interrupted;
+    return outcome;
+  }
+  if (!options.calibration_file.empty()) {
+    options.calibration = ReadCalibration(options.calibration_file);
+  }
+  const FabricsSpec spec = LoadFabrics(options);
   outcome.summary = RunFabrics(spec, options, context.log);
   const FabricsSummary& s = outcome.summary;
   if (options.only) {

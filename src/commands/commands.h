@@ -17,6 +17,7 @@
 #include "src/fit/fit_solver.h"
 #include "src/run/solve_report.h"
 #include "src/scene/scene.h"
+#include "src/sweep/calibrate.h"
 #include "src/sweep/drops.h"
 #include "src/sweep/fabrics.h"
 #include "src/sweep/sweep.h"
@@ -69,6 +70,7 @@ struct DropsCommand {
   int threads = 0;
   std::string directory;
   std::vector<std::string> overrides;  // the scene's, for the provenance
+  std::string calibration;             // the calibration applied to the scene, for the provenance
 };
 struct DropsCommandResult {
   DropsSummary summary;
@@ -98,10 +100,13 @@ SweepCommandResult RunSweepCommand(const SweepCommand& command, const CommandCon
 // ---- drape fabrics ------------------------------------------------------------------------------
 struct FabricsCommandResult {
   FabricsSummary summary;
-  bool all_predicted = false;  // every fabric has a prediction, not interrupted
+  std::optional<CalibrateSummary> calibration;  // with --calibrate
+  bool all_predicted = false;                   // every fabric has a prediction, not interrupted
   std::string line;
 };
-// `options.command_line` is taken from the context.
+// `options.command_line` is taken from the context. With `options.calibrate`, the calibration
+// (src/sweep/calibrate.h); with `options.calibration_file`, that calibration applied to every
+// fabric.
 FabricsCommandResult RunFabricsCommand(FabricsOptions options, const CommandContext& context);
 
 // What a drape test asked of its drape coefficient's error bar and what the solve reached

@@ -280,6 +280,7 @@ class SweptPositions {
 // bound on its change per unit s.
 template <typename DistanceAt>
 double PairSafeFraction(double clearance, double rate, double limit, DistanceAt distance_at) {
+  if (std::isnan(rate)) return 0.0;  // a step that is not finite passes nothing
   if (!(rate > 0.0)) return limit;
   const double start = distance_at(0.0);
   if (!(start > 0.0)) return limit;  // touching or crossed already: nothing to guard

@@ -9,10 +9,15 @@
 namespace drape {
 
 std::vector<std::pair<std::string, std::string>> ProvenanceMembers(const Provenance& provenance) {
-  return {{"drape_version", JsonString(DrapeVersion())},
-          {"blas_kernels", JsonString(BlasKernelsText())},
-          {"command_line", JsonString(provenance.command_line)},
-          {"overrides", JsonList(JsonStrings(provenance.overrides))}};
+  std::vector<std::pair<std::string, std::string>> members = {
+      {"drape_version", JsonString(DrapeVersion())},
+      {"blas_kernels", JsonString(BlasKernelsText())},
+      {"command_line", JsonString(provenance.command_line)},
+      {"overrides", JsonList(JsonStrings(provenance.overrides))}};
+  if (!provenance.calibration.empty()) {
+    members.emplace_back("calibration", JsonString(provenance.calibration));
+  }
+  return members;
 }
 
 std::string ProvenanceLine(const Provenance& provenance) {
@@ -25,6 +30,7 @@ std::string ProvenanceLine(const Provenance& provenance) {
     }
   }
   if (!missing.empty()) line += "; overrides: " + missing;
+  if (!provenance.calibration.empty()) line += "; calibration: " + provenance.calibration;
   std::replace(line.begin(), line.end(), '\n', ' ');
   std::replace(line.begin(), line.end(), '\r', ' ');
   return line;

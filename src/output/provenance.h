@@ -15,11 +15,21 @@
 namespace drape {
 
 struct Provenance {
+  Provenance() = default;
+  Provenance(std::string command, std::vector<std::string> set,  // NOLINT: {a, b} reads as before
+             std::string applied_calibration = "")
+      : command_line(std::move(command)),
+        overrides(std::move(set)),
+        calibration(std::move(applied_calibration)) {}
+
   std::string command_line;            // the command as run, shell-quoted
   std::vector<std::string> overrides;  // the --set key.path=value overrides, in order
+  // the calibration applied (--calibration: "FILE (bending_scale 1.5)"); "" for none
+  std::string calibration;
 };
 
-// `"key": JSON value` pairs, in order: drape_version, blas_kernels, command_line, overrides.
+// `"key": JSON value` pairs, in order: drape_version, blas_kernels, command_line, overrides, and
+// calibration where one was applied.
 std::vector<std::pair<std::string, std::string>> ProvenanceMembers(const Provenance& provenance);
 
 // The same as text on one line: "drape 0.1 (git 4bf4acd); command: drape solve a.yaml --set

@@ -135,9 +135,9 @@ std::string SolveDrop(const Scene& scene, const DropsOptions& options, int drop)
     record.state = "interrupted";
     return TaskResult(record, {});
   }
-  WriteOutputs(
-      drop_scene, model, report, folder,
-      Provenance{options.command_line + " (drop " + std::to_string(drop) + ")", options.overrides});
+  WriteOutputs(drop_scene, model, report, folder,
+               Provenance{options.command_line + " (drop " + std::to_string(drop) + ")",
+                          options.overrides, options.calibration});
   record.drape_coefficient = report.drape ? report.drape->coefficient.cusick : 0.0;
   record.folds = report.drape ? report.drape->folds.count : 0;
   record.energy = result.certificate.energy;
@@ -202,7 +202,8 @@ void WriteDropsSummary(const Scene& scene, const DropsOptions& options, const Dr
       {"most_frequent_folds_drape_coefficient_mean", any ? JsonNumber(s.modal_mean) : "null"},
       {"specimen_size_advice", advice ? JsonString(*advice) : "null"}};
   if (summary.mesh_advice) members.emplace_back("mesh_rule", MeshRuleJson(*summary.mesh_advice));
-  for (auto& member : ProvenanceMembers(Provenance{options.command_line, options.overrides})) {
+  for (auto& member : ProvenanceMembers(
+           Provenance{options.command_line, options.overrides, options.calibration})) {
     members.push_back(std::move(member));
   }
   out << JsonObject(members, 0) << "\n";
@@ -362,7 +363,8 @@ DropsSummary RunDrops(const Scene& scene, const DropsOptions& options, std::ostr
   WriteAtomically(directory / "summary.json",
                   [&](std::ostream& out) { WriteDropsSummary(scene, options, summary, out); });
   WriteAtomically(directory / "report.html", [&](std::ostream& out) {
-    WriteDropsReport(scene, summary, Provenance{options.command_line, options.overrides}, out,
+    WriteDropsReport(scene, summary,
+                     Provenance{options.command_line, options.overrides, options.calibration}, out,
                      directory);
   });
   return summary;

@@ -40,6 +40,7 @@ struct DropsOptions {
   std::string directory;     // OUT
   std::string command_line;  // as run, for each drop's summary.json and OUT/summary.json
   std::vector<std::string> overrides;
+  std::string calibration;  // the calibration applied, for the provenance ("" for none)
 };
 
 // One drop: its perturbation and its result (a row of drops.csv).

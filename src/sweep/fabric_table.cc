@@ -126,6 +126,10 @@ void ReadRowNumbers(const std::string& file, FabricRow* row) {
     } else if (kind == Kind::kMeasuredDcSd) {
       if (value < 0.0) fail("must not be negative, got " + cell.text);
       row->measured_dc_sd = value;
+    } else if (kind == Kind::kMeasuredFolds) {
+      if (value < 1.0 || value != std::floor(value) || value > 1000.0)
+        fail("a fold count is a whole number from 1 to 1000, got " + cell.text);
+      row->measured_folds = static_cast<int>(value);
     } else if (kind == Kind::kSpecimenDiameter) {
       row->specimen_diameter = value;  // checked by the loader (drape_test.specimen_diameter)
     }
@@ -178,6 +182,8 @@ const std::vector<FabricColumn>& FabricColumns() {
                     "the measured drape coefficient, a fraction (mean over the lab's drops)"});
     list.push_back({"measured_dc_sd", Kind::kMeasuredDcSd, "", "",
                     "its standard deviation over the lab's drops"});
+    list.push_back({"measured_folds", Kind::kMeasuredFolds, "", "",
+                    "the number of folds (nodes) the lab saw, where published"});
     return list;
   }();
   return columns;

@@ -24,6 +24,7 @@ struct FabricColumn {
     kSpecimenDiameter,  // drape_test.specimen_diameter
     kMeasuredDc,        // the measured drape coefficient, a fraction in [0, 1]
     kMeasuredDcSd,      // its standard deviation over the lab's drops, ≥ 0
+    kMeasuredFolds,     // the fold (node) count the lab saw, a whole number ≥ 1
   };
   std::string name;  // as the header writes it
   Kind kind = Kind::kText;
@@ -56,6 +57,7 @@ struct FabricRow {
   std::string name;
   std::vector<FabricCell> cells;  // every non-empty cell but the name, in column order
   std::optional<double> measured_dc, measured_dc_sd, specimen_diameter;
+  std::optional<int> measured_folds;
 
   // The cell of `column` (by its name), or null.
   const FabricCell* Cell(const std::string& column) const;

@@ -115,6 +115,7 @@ std::vector<std::string> FabricTaskIdentities(const FabricsSpec& spec) {
                        "\nscene: " + fs::path(spec.scene_label).filename().string() + " " +
                        Fingerprint(spec.scene_text) + "\n";
     for (const std::string& set : fabric.overrides) text += "set: " + set + "\n";
+    if (!spec.calibration.empty()) text += "calibration: " + spec.calibration.ExactText() + "\n";
     text +=
         "drop: " + std::to_string(DropOf(spec, task)) + " of " + std::to_string(spec.drops) + "\n";
     identities[task] = text;
@@ -191,7 +192,8 @@ FabricTaskRecord SolveFabricTask(const FabricsContext& context, int task) {
   const std::string what = fabric.row.name + (drop > 0 ? ", drop " + std::to_string(drop) : "");
   WriteOutputs(
       scene, model, report, folder,
-      Provenance{context.options.command_line + " (fabric " + what + ")", fabric.overrides});
+      Provenance{context.options.command_line + " (fabric " + what + ")", fabric.overrides,
+                 context.spec.calibration.empty() ? "" : context.spec.calibration.Provenance()});
   record.solved = true;
   record.counted =
       result.converged && !result.Saddle() && !result.PassesThrough() && report.drape.has_value();
@@ -271,19 +273,28 @@ std::vector<std::pair<std::string, std::string>> SiColumns(const FabricsSpec& sp
 
 const std::vector<std::pair<std::string, std::string>>& ResultColumns() {
   static const std::vector<std::pair<std::string, std::string>> columns = {
-      {"predicted_dc", ""},  {"predicted_dc_error", ""},
-      {"folds", ""},         {"drops", ""},
-      {"drops_counted", ""}, {"predicted_dc_sd", ""},
-      {"measured_dc", ""},   {"measured_dc_sd", ""},
-      {"difference", ""},    {"within_error_bar", ""},
-      {"time_s", "s"},       {"state", ""},
-      {"folder", ""},        {"drape_version", ""}};
+      {"predicted_dc", ""},
+      {"predicted_dc_error", ""},
+      {"folds", ""},
+      {"drops", ""},
+      {"drops_counted", ""},
+      {"predicted_dc_sd", ""},
+      {"measured_dc", ""},
+      {"measured_dc_sd", ""},
+      {"measured_folds", ""},
+      {"difference", ""},
+      {"within_error_bar", ""},
+      {"time_s", "s"},
+      {"state", ""},
+      {"folder", ""},
+      {"drape_version", ""}};
   return columns;
 }
 
 bool IsResultColumn(const FabricColumn& column) {
   return column.kind == FabricColumn::Kind::kMeasuredDc ||
          column.kind == FabricColumn::Kind::kMeasuredDcSd ||
+         column.kind == FabricColumn::Kind::kMeasuredFolds ||
          column.kind == FabricColumn::Kind::kName;
 }
 
@@ -371,6 +382,7 @@ void WriteFabricsCsv(const FabricsSpec& spec, const std::vector<FabricPrediction
          p.drape_coefficient ? std::to_string(p.folds) : "", std::to_string(spec.drops),
          std::to_string(p.counted), OptionalNumber(p.standard_deviation),
          OptionalNumber(fabric.row.measured_dc), OptionalNumber(fabric.row.measured_dc_sd),
+         fabric.row.measured_folds ? std::to_string(*fabric.row.measured_folds) : "",
          OptionalNumber(delta), delta ? JsonBool(Within(fabric, p)) : "",
          CsvNumber(TotalTime(records[f])), p.state, fabric.folder, RecordVersions(records[f])});
     out << CsvLine(cells) << '\n';
@@ -508,6 +520,7 @@ FabricsSpec LoadFabrics(const FabricsOptions& options) {
       options.scene.empty() ? SceneDocument::Parse(StandardTesterScene(), kStandardTesterLabel, ".")
                             : SceneDocument::Read(options.scene);
   spec.scene_text = base.text();
+  spec.calibration = options.calibration;
   spec.directory = options.out.empty() ? (fs::path("out") / fs::path(options.table).stem()).string()
                                        : options.out;
   const int count = static_cast<int>(spec.table.rows.size());
@@ -528,6 +541,7 @@ FabricsSpec LoadFabrics(const FabricsOptions& options) {
                        "drape fabrics predicts drape coefficients: the base scene needs a "
                        "drape_test");
     }
+    ApplyCalibration(options.calibration, &fabric.scene);
     AddNeededOutputs(&fabric.scene);
     fabric.folder = FabricFolder(f, count, fabric.row.name);
     spec.fabrics.push_back(std::move(fabric));
@@ -607,7 +621,8 @@ FabricsSummary RunFabrics(const FabricsSpec& spec, const FabricsOptions& options
       names.push_back(fabric.row.name);
       advice.push_back(AdviseMeshOfScene(fabric.scene));
     }
-    if (const auto line = CoarseMeshesLine(names, advice, "fabric", "predicted_dc_error")) {
+    const auto line = CoarseMeshesLine(names, advice, "fabric", "predicted_dc_error");
+    if (line && options.mesh_warning) {
       log << "drape fabrics: warning: " << *line << std::endl;
     }
   }
@@ -635,6 +650,7 @@ FabricsSummary RunFabrics(const FabricsSpec& spec, const FabricsOptions& options
     }
   }
   summary.statistics = ComputeFabricStatistics(comparisons);
+  summary.predictions = predictions;
   std::map<std::string, int> other_versions;  // records kept from another drape, by its version
   for (const auto& records : collector.records()) {
     for (const FabricTaskRecord& record : records) {
@@ -646,7 +662,8 @@ FabricsSummary RunFabrics(const FabricsSpec& spec, const FabricsOptions& options
         << " kept from drape " << version << " (this is " << DrapeVersion()
         << "; fabrics.csv's drape_version column says which drape solved each row)" << std::endl;
   }
-  const Provenance provenance{options.command_line, options.overrides};
+  const Provenance provenance{options.command_line, options.overrides,
+                              spec.calibration.empty() ? "" : spec.calibration.Provenance()};
   const fs::path directory(spec.directory);
   WriteAtomically(directory / "fabrics.csv", [&](std::ostream& out) {
     WriteFabricsCsv(spec, predictions, collector.records(), out);

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "src/scene/calibration.h"
 #include "src/scene/scene.h"
 #include "src/sweep/fabric_table.h"
 
@@ -40,6 +41,12 @@ struct FabricsOptions {
   int threads = 0;                     // local worker threads without MPI (0: the cores)
   std::string out;                     // empty: out/<table's stem>
   std::string command_line;
+  // --calibration FILE: read by RunFabricsCommand into `calibration`, applied to every fabric
+  std::string calibration_file;
+  Calibration calibration;
+  // --calibrate KEY...: fit these constants instead (src/sweep/calibrate.h)
+  std::vector<std::string> calibrate;
+  bool mesh_warning = true;  // the coarse-mesh warning (once per calibration, not per grid point)
 };
 
 // One fabric as the run sees it: its row, its scene (loaded, checked) and its tasks' overrides.
@@ -55,6 +62,7 @@ struct FabricsSpec {
   std::string scene_label;  // the base scene's file, or "the standard tester"
   std::string scene_text;   // its YAML
   std::string directory;    // OUT
+  Calibration calibration;  // applied to every fabric's scene
   int drops = 1;
   std::vector<FabricCase> fabrics;
   int tasks() const { return static_cast<int>(fabrics.size()) * drops; }
@@ -111,6 +119,7 @@ struct FabricsSummary {
   int fabrics = 0, tasks = 0, solved = 0, skipped = 0;
   int predicted = 0;  // fabrics with a counted prediction
   FabricStatistics statistics;
+  std::vector<FabricPrediction> predictions;  // per fabric (coordinator, whole runs)
   bool interrupted = false;
   bool coordinator = true;
 };

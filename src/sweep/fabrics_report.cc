@@ -53,7 +53,10 @@ ReportBlock FabricsTable(const FabricsSpec& spec,
          PlusMinus(p.drape_coefficient, p.error) +
              (p.standard_deviation ? " (SD " + FixedText(*p.standard_deviation, 3) + ")" : ""),
          compared ? (delta >= 0 ? "+" : "") + FixedText(delta, 3) : "",
-         p.drape_coefficient ? std::to_string(p.folds) : "",
+         (p.drape_coefficient ? std::to_string(p.folds) : "") +
+             (fabric.row.measured_folds
+                  ? " (measured " + std::to_string(*fabric.row.measured_folds) + ")"
+                  : ""),
          std::to_string(p.counted) + " of " + std::to_string(p.tasks), p.state,
          ReportLink(fabric.folder, fabric.folder + "/")});
   }
