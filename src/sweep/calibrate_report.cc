@@ -136,7 +136,8 @@ std::string RmsOverGridChart(const CalibrateSummary& s) {
 }  // namespace
 
 std::string CalibrationChart(const CalibrateSummary& s) {
-  const auto [low, high] = Window(s);
+  const std::pair<double, double> window = Window(s);
+  const double low = window.first, high = window.second;
   ChartAxes a{low, high, low, high};
   a.width = a.height = 360;
   a.left = 70;
