@@ -545,6 +545,16 @@ void AddCalibrationOption(CLI::App* command, Target* file) {
       ->type_name("FILE");
 }
 
+// --calibrate's help, naming the constants of CalibrationConstants().
+std::string CalibrateHelp() {
+  std::string names;
+  for (const CalibrationConstant& c : CalibrationConstants()) {
+    names += (names.empty() ? "" : ", ") + c.name;
+  }
+  return "fit these calibration constants, comma-separated or repeated (one or two of: " + names +
+         "), to the table's measured drape coefficients; writes calibration.yaml";
+}
+
 // A finite number > 0 ("inf", "nan", "5s" and "0" are refused).
 const CLI::Validator kFinitePositive(
     [](const std::string& text) {
@@ -814,12 +824,7 @@ CommandRun DefineFabrics(CLI::App* fabrics) {
   fabrics->add_option("-o,--out", options.out, "write into this folder (default: out/<table name>)")
       ->type_name("DIR");
   AddCalibrationOption(fabrics, &options.calibration_file);
-  fabrics
-      ->add_option("--calibrate", options.calibrate,
-                   "fit these calibration constants, comma-separated or repeated (one or two of: "
-                   "bending_scale, bending_power, shear_scale, bending_friction_scale, "
-                   "bending_friction_share), to the table's measured drape coefficients; writes "
-                   "calibration.yaml")
+  fabrics->add_option("--calibrate", options.calibrate, CalibrateHelp())
       ->allow_extra_args(false)
       ->delimiter(',')
       ->type_name("KEY[,KEY]");
