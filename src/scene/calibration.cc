@@ -199,10 +199,13 @@ std::string CalibrationYaml(const Calibration& calibration,
 
 void ApplyCalibration(const Calibration& calibration, Scene* scene, const std::string& label) {
   if (calibration.empty()) return;
-  if (scene->material.model != MaterialModel::kFiniteVolume) {
-    throw CalibrationError(calibration, label, calibration.values.front().first,
-                           "a calibration applies to a finite_volume material; scene '" +
-                               scene->name + "' has another");
+  switch (scene->material.model) {  // a switch: a new model names itself here (-Wswitch)
+    case MaterialModel::kFiniteVolume:
+      break;
+    case MaterialModel::kSprings:
+      throw CalibrationError(calibration, label, calibration.values.front().first,
+                             "a calibration applies to a finite_volume material; scene '" +
+                                 scene->name + "' has springs");
   }
   RefuseRegionsItRescales(calibration, *scene, label);
   FiniteVolumeSpec& fv = scene->material.finite_volume;
