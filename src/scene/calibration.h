@@ -17,7 +17,7 @@
 //     mean of the warp's and weft's factors, a default D_66 is the default rule of the new D's;
 //   shear_scale: G' = shear_scale · G;
 //   bending_friction_scale f: a given bending friction H (KES 2HB/2) becomes f · H, the part of
-//     the hysteresis measured from ±2.5 cm⁻¹ that acts in a drape settled from the flat sheet;
+//     the hysteresis of KES-FB2's loop (to ±2.5 cm⁻¹) that acts in a drape settled from flat;
 //   bending_friction_share h (1/m): a fabric given no bending friction gets H = h · D' in each
 //     direction (KES 2HB/2 in proportion to B; the one published pair, Matsudaira's cotton broad,
 //     has 2HB/2 / B = 52.5 m⁻¹).
