@@ -8,15 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "src/scene/fabric_parameters.h"
 #include "src/scene/scene_loader.h"
+#include "tests/reference_block.h"
 #include "tests/scratch_folder.h"
-#include "tests/test_paths.h"
 
 namespace drape {
 namespace {
@@ -187,24 +185,8 @@ TEST_F(CalibrationFileTest, EachErrorIsLocated) {
 // docs/reference.md lists the constants as CalibrationConstants() has them
 // (DRAPE_WRITE_SCHEMA_DOCS=1 writes the block instead of comparing it).
 TEST(CalibrationConstants, TheReferenceListsThem) {
-  const std::string path = std::string(drape_tests::kSourceDir) + "/docs/reference.md";
-  std::ifstream in(path);
-  std::stringstream whole;
-  whole << in.rdbuf();
-  std::string doc = whole.str();
-  const std::string begin = "<!-- calibration-constants -->\n";
-  const std::string end = "<!-- /calibration-constants -->";
-  const size_t from = doc.find(begin), to = doc.find(end);
-  ASSERT_NE(from, std::string::npos);
-  ASSERT_NE(to, std::string::npos);
-  const size_t start = from + begin.size();
-  if (std::getenv("DRAPE_WRITE_SCHEMA_DOCS") != nullptr) {
-    doc.replace(start, to - start, CalibrationConstantsMarkdown());
-    std::ofstream(path) << doc;
-    return;
-  }
-  EXPECT_EQ(doc.substr(start, to - start), CalibrationConstantsMarkdown())
-      << "docs/reference.md's calibration constants are not CalibrationConstants(): regenerate";
+  testing::ExpectReferenceBlock("calibration-constants", CalibrationConstantsMarkdown(),
+                                "CalibrationConstants()");
 }
 
 }  // namespace

@@ -5,15 +5,14 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "src/scene/scene_loader.h"
 #include "src/scene/scene_schema.h"
 #include "src/sweep/fabrics.h"
+#include "tests/reference_block.h"
 #include "tests/scratch_folder.h"
 #include "tests/test_paths.h"
 
@@ -130,23 +129,7 @@ TEST_F(FabricTableTest, SetAndTheSpecimenDiameterApply) {
 // docs/reference.md lists the columns as FabricColumns() has them (DRAPE_WRITE_SCHEMA_DOCS=1
 // writes the block instead of comparing it).
 TEST(FabricColumns, TheReferenceListsThem) {
-  const std::string path = std::string(drape_tests::kSourceDir) + "/docs/reference.md";
-  std::ifstream in(path);
-  std::stringstream whole;
-  whole << in.rdbuf();
-  std::string doc = whole.str();
-  const std::string begin = "<!-- fabric-columns -->\n", end = "<!-- /fabric-columns -->";
-  const size_t from = doc.find(begin), to = doc.find(end);
-  ASSERT_NE(from, std::string::npos);
-  ASSERT_NE(to, std::string::npos);
-  const size_t start = from + begin.size();
-  if (std::getenv("DRAPE_WRITE_SCHEMA_DOCS") != nullptr) {
-    doc.replace(start, to - start, FabricColumnsMarkdown());
-    std::ofstream(path) << doc;
-    return;
-  }
-  EXPECT_EQ(doc.substr(start, to - start), FabricColumnsMarkdown())
-      << "docs/reference.md's fabric columns are not FabricColumns(): regenerate them";
+  testing::ExpectReferenceBlock("fabric-columns", FabricColumnsMarkdown(), "FabricColumns()");
 }
 
 struct BadTable {
