@@ -16,8 +16,8 @@ namespace drape {
 //   φ = max_i q_i            inside (negative),
 // and U = ContactPenalty(φ, t, k) (costs/contact_penalty.h): the clearance t rounds the table's
 // edges to radius t, over which the fabric folds. φ has a continuous gradient outside the box
-// (the energy is C¹ across the face/edge regions, C² inside each). Frictionless. Units: m,
-// N/m², J.
+// (the energy is C¹ across the face/edge regions, C² inside each). The push only (its friction:
+// costs/obstacle_friction.h). Units: m, N/m², J.
 struct BoxContact {
   static constexpr int kNumNodes = 1;
   static constexpr int kNumOutputs = 1;

@@ -17,7 +17,8 @@ namespace drape {
 //   φ = max(q_r, q_z)   inside (negative),
 // and U = ContactPenalty(φ, t, k) (costs/contact_penalty.h): the rims are rounded by the
 // clearance t. φ has a continuous gradient outside the solid (the energy is C¹ where the region
-// changes, C² elsewhere). Frictionless. Units: m, N/m², J.
+// changes, C² elsewhere). The push only (its friction: costs/obstacle_friction.h). Units: m, N/m²,
+// J.
 struct CylinderContact {
   static constexpr int kNumNodes = 1;
   static constexpr int kNumOutputs = 1;

@@ -16,7 +16,7 @@ namespace drape {
 // and U = ContactPenalty(φ, t, k) (costs/contact_penalty.h): the clearance t turns the disc into a
 // slab of thickness 2t with a rounded rim of radius t, over which the fabric folds. φ has a
 // continuous gradient across the rim circle (the energy is C¹ there and C² elsewhere). Works
-// from both sides. Frictionless. Units: m, N/m², J.
+// from both sides. The push only (its friction: costs/obstacle_friction.h). Units: m, N/m², J.
 struct DiskContact {
   static constexpr int kNumNodes = 1;
   static constexpr int kNumOutputs = 1;

@@ -21,9 +21,10 @@ namespace drape {
 //   vertex a:                                    φ = s |x − a|,
 // s = ±1 the side. φ is the exact signed distance, continuous with a continuous gradient (the
 // unit vector from the nearest point) wherever the nearest point is unique; its curvature jumps
-// where the nearest feature changes (a face's border), as a faceted body's does. Frictionless.
-// Units: m, N/m², J. Not invariant (the body is fixed in space). Source: the pseudo-normal sign
-// test of Bærentzen & Aanæs (IEEE TVCG 11(3), 2005); the penalty is every obstacle's.
+// where the nearest feature changes (a face's border), as a faceted body's does. The push only (its
+// friction: costs/obstacle_friction.h). Units: m, N/m², J. Not invariant (the body is fixed in
+// space). Source: the pseudo-normal sign test of Bærentzen & Aanæs (IEEE TVCG 11(3), 2005); the
+// penalty is every obstacle's.
 //
 // Surface: a type with `Feature Nearest(const double* x) const` where Feature has `corners`
 // (1, 2 or 3), `corner[k][c]`, `normal[c]` and `sign`.

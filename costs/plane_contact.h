@@ -8,7 +8,8 @@ namespace drape {
 
 // Contact of one node with a rigid half-space (a floor or wall) through point p with unit outer
 // normal n: φ = n·(x − p),  U = ContactPenalty(φ, t, k)  (costs/contact_penalty.h).
-// One-sided: everything behind the plane is solid. Frictionless. Units: m, N/m², J.
+// One-sided: everything behind the plane is solid. The push only (its friction:
+// costs/obstacle_friction.h). Units: m, N/m², J.
 struct PlaneContact {
   static constexpr int kNumNodes = 1;
   static constexpr int kNumOutputs = 1;

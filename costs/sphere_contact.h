@@ -12,7 +12,8 @@ namespace drape {
 // Contact of one node with a rigid sphere (centre c, radius R), and with a pin: a point support
 // is the sphere of radius 0 around the pin's tip, so the clearance t makes it a small ball.
 //   φ = |x − c| − R,   U = ContactPenalty(φ, t, k)  (costs/contact_penalty.h).
-// Frictionless. Units: m, N/m², J. Not invariant (the sphere is fixed in space).
+// The push only (its friction: costs/obstacle_friction.h). Units: m, N/m², J. Not invariant (the
+// sphere is fixed in space).
 struct SphereContact {
   static constexpr int kNumNodes = 1;
   static constexpr int kNumOutputs = 1;

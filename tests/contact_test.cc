@@ -87,14 +87,56 @@ TEST(Contact, AnchoredFabricMeetsOnlyObstaclesWithinReach) {
   EXPECT_EQ(CountType(model, "pin_contact"), 23);
 }
 
-TEST(Contact, RejectsFrictionAndZeroThickness) {
+TEST(Contact, RejectsZeroThickness) {
   Model model = testing::Sheet(SmallSheet({0}));
-  ObstacleSpec rough = Floor(-0.1);
-  rough.friction = 0.3;
-  EXPECT_THROW(AddContactTerms({rough}, ContactSpec{}, &model), InputError);
   ContactSpec thin;
   thin.thickness = 0.0;
   EXPECT_THROW(AddContactTerms({Floor(-0.1)}, thin, &model), InputError);
+}
+
+// A floor of friction μ under a sheet whose free nodes sit g = 0.5 mm deep in its 2 mm layer: one
+// friction term per free node, made with the floor's push k g² straight up; the pushes at the
+// state they were made at have not moved, and one node pressed deeper moves them by its change.
+TEST(Contact, FrictionTermsTakeTheObstaclesPushesAtTheLaggedState) {
+  Model model = testing::Sheet(SmallSheet({0}));
+  ContactSpec contact;
+  contact.thickness = 0.002;
+  ObstacleSpec rough = Floor(-0.0015);
+  rough.friction = 0.3;
+  AddContactTerms({rough}, contact, &model);
+  AddObstacleFrictionTerms(model.positions, model.positions, &model);
+  EXPECT_EQ(CountType(model, "plane_friction"), 24);
+  const double k = ContactStiffness(contact, model);
+  const double push = k * 0.0005 * 0.0005;
+  ASSERT_EQ(model.friction_pushes.size(), 24u);
+  for (const Model::Push& push_on_node : model.friction_pushes) {
+    EXPECT_NEAR((push_on_node.force - Eigen::Vector3d(0, 0, push)).norm(), 0.0, 1e-12 * push);
+  }
+  EXPECT_NEAR(FrictionPushChange(model, model.positions.data()), 0.0, 1e-12);
+  std::vector<double> pressed = model.positions;
+  pressed[3 * 7 + 2] -= 0.0005;  // node 7 1 mm deep: its push is k (1 mm)², four times
+  EXPECT_NEAR(FrictionPushChange(model, pressed.data()), 3.0 * push / ContactReferenceForce(model),
+              1e-9);
+  // The friction terms are the obstacle's: its force counts them, and the pushes leave them out.
+  std::vector<double> slid = model.positions;
+  slid[3 * 7] += 0.001;
+  EXPECT_NEAR(FrictionPushChange(model, slid.data()), 0.0, 1e-12);
+  const Certificate certificate = ComputeCertificate(model, slid.data());
+  // The friction opposes the slip u = 1 mm with μ λ u / √(u² + ε²).
+  const double smoothing = kFrictionSlipFraction * contact.thickness;
+  EXPECT_NEAR(-certificate.contact_forces[3 * 7],
+              0.3 * push * 0.001 / std::sqrt(0.001 * 0.001 + smoothing * smoothing), 1e-9 * push);
+}
+
+TEST(Contact, NoFrictionTermsOnAFrictionlessObstacle) {
+  Model model = testing::Sheet(SmallSheet({0}));
+  ContactSpec contact;
+  contact.thickness = 0.002;
+  AddContactTerms({Floor(-0.0015)}, contact, &model);
+  AddObstacleFrictionTerms(model.positions, model.positions, &model);
+  EXPECT_EQ(CountType(model, "plane_friction"), 0);
+  EXPECT_TRUE(model.friction_pushes.empty());
+  EXPECT_EQ(FrictionPushChange(model, model.positions.data()), 0.0);
 }
 
 TEST(Contact, MeasuresTheDeepestNodeInsideTheClearance) {

@@ -32,6 +32,7 @@
 #include "costs/fv_shear_friction.h"
 #include "costs/fv_twist.h"
 #include "costs/mesh_contact.h"
+#include "costs/obstacle_friction.h"
 #include "costs/plane_contact.h"
 #include "costs/point_triangle_contact.h"
 #include "costs/pressure_potential.h"
@@ -142,6 +143,20 @@ struct Sample<PlaneContact> {
     return PlaneContact::Create(kOrigin, kUp, kClearance, kContactStiffness);
   }
   static std::vector<std::vector<double>> States() { return {{0.3, 0.4, 0.006}, {0, 0, 0.002}}; }
+};
+
+// A node slipped 3 mm across a tilted normal (in the smooth part, |u| ≫ ε), and at its start x0,
+// the kink's centre (the smoothed state where a step begins).
+template <>
+struct Sample<ObstacleFriction> {
+  static constexpr const char* kName = "ObstacleFriction";
+  static ObstacleFriction Make() {
+    const double normal[3] = {0.6, 0.0, 0.8}, start[3] = {0.1, 0.2, 0.3};
+    return ObstacleFriction::Create(0.4, 2.0, normal, start, 0.001);
+  }
+  static std::vector<std::vector<double>> States() {
+    return {{0.1, 0.203, 0.301}, {0.1, 0.2, 0.3}};
+  }
 };
 
 template <>
@@ -353,7 +368,7 @@ using Functors =
                      DiskContact, EdgeContact<DiskContact>, CylinderContact, BoxContact,
                      MeshContact<TriangleSurface>, PointTriangleContact, EdgeEdgeContact,
                      FvMembrane, FvBendingEdge, FvBending, FvBendingFriction, FvBendingFrictionStep,
-                     FvShearFriction, FvTwist, FvCellShear>;
+                     FvShearFriction, FvTwist, FvCellShear, ObstacleFriction>;
 
 class FunctorNames {
  public:

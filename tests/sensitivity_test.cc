@@ -24,12 +24,12 @@ loads: {gravity: [0, 0, -9.81]}
 solver: {method: newton, tolerance: 1.0e-12, max_iterations: 500}
 )";
 
-Scene Sheet(const std::vector<std::string>& overrides = {}) {
+Scene SheetScene(const std::vector<std::string>& overrides = {}) {
   return LoadSceneText(kSheet, "<sheet>", ".", overrides);
 }
 
 std::vector<double> Solved(const std::vector<std::string>& overrides) {
-  const Scene scene = Sheet(overrides);
+  const Scene scene = SheetScene(overrides);
   Model model = BuildModel(scene);
   EXPECT_TRUE(RunSolve(scene, model, "newton").converged);
   return model.positions;
@@ -46,8 +46,8 @@ ParameterModels Parameter(const std::string& key, double value) {
   ParameterModels parameter;
   parameter.key = key;
   parameter.step = SensitivityStep(value);
-  parameter.minus = BuildModel(Sheet({key + "=" + std::to_string(value - parameter.step)}));
-  parameter.plus = BuildModel(Sheet({key + "=" + std::to_string(value + parameter.step)}));
+  parameter.minus = BuildModel(SheetScene({key + "=" + std::to_string(value - parameter.step)}));
+  parameter.plus = BuildModel(SheetScene({key + "=" + std::to_string(value + parameter.step)}));
   return parameter;
 }
 
@@ -55,7 +55,7 @@ ParameterModels Parameter(const std::string& key, double value) {
 // 1e-5 of the largest derivative (the differences' truncation is O(h²) ≈ 1e-6, the solves' error
 // 1e-12 / 2e-3).
 TEST(Sensitivity, IsTheCentralDifferenceOfSolves) {
-  const Scene scene = Sheet();
+  const Scene scene = SheetScene();
   Model model = BuildModel(scene);
   const RunResult result = RunSolve(scene, model, "newton");
   ASSERT_TRUE(result.converged);
@@ -87,7 +87,7 @@ TEST(Sensitivity, IsTheCentralDifferenceOfSolves) {
 
 // A heavier sheet hangs lower at every free node.
 TEST(Sensitivity, AHeavierSheetHangsLower) {
-  const Scene scene = Sheet();
+  const Scene scene = SheetScene();
   Model model = BuildModel(scene);
   const RunResult result = RunSolve(scene, model, "newton");
   const auto derivatives =
@@ -100,7 +100,7 @@ TEST(Sensitivity, AHeavierSheetHangsLower) {
 }
 
 TEST(Sensitivity, IsRefusedWithoutAConvergedEquilibrium) {
-  const Scene scene = Sheet({"solver.max_iterations=1"});
+  const Scene scene = SheetScene({"solver.max_iterations=1"});
   Model model = BuildModel(scene);
   const RunResult result = RunSolve(scene, model, "newton");
   ASSERT_FALSE(result.converged);
@@ -109,14 +109,14 @@ TEST(Sensitivity, IsRefusedWithoutAConvergedEquilibrium) {
 }
 
 TEST(Sensitivity, IsRefusedForAKeyThatMovesTheNodes) {
-  const Scene scene = Sheet();
+  const Scene scene = SheetScene();
   Model model = BuildModel(scene);
   const RunResult result = RunSolve(scene, model, "newton");
   ParameterModels nodes;
   nodes.key = "mesh.nodes";
   nodes.step = 1.0;
-  nodes.minus = BuildModel(Sheet({"mesh.nodes=[6, 6]"}));
-  nodes.plus = BuildModel(Sheet({"mesh.nodes=[8, 8]"}));
+  nodes.minus = BuildModel(SheetScene({"mesh.nodes=[6, 6]"}));
+  nodes.plus = BuildModel(SheetScene({"mesh.nodes=[8, 8]"}));
   try {
     PositionSensitivities(model, result, One(std::move(nodes)));
     FAIL() << "accepted";

@@ -4,11 +4,13 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
 #include <utility>
 
+#include "costs/obstacle_friction.h"
 #include "src/model/obstacle_kinds.h"
 #include "src/model/self_intersection.h"
 
@@ -19,9 +21,6 @@ namespace {
 void CheckContactInput(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact) {
   for (const ObstacleSpec& obstacle : obstacles) {
     CheckedObstacleKind(obstacle);
-    if (obstacle.friction > 0.0) {
-      throw InputError(obstacle.where, "friction is not supported yet: obstacles are frictionless");
-    }
   }
   if (!obstacles.empty() && !(contact.thickness > 0.0)) {
     const Location& where = contact.where.line > 0 ? contact.where : obstacles.front().where;
@@ -43,14 +42,88 @@ std::set<std::pair<int, int>> FabricEdges(const Model& model) {
 
 }  // namespace
 
-double ContactStiffness(const ContactSpec& contact, const Model& model) {
+bool HasObstacleFriction(const std::vector<ObstacleSpec>& obstacles) {
+  return std::any_of(obstacles.begin(), obstacles.end(),
+                     [](const ObstacleSpec& obstacle) { return obstacle.friction > 0.0; });
+}
+
+double ContactReferenceForce(const Model& model) {
   double reference = 0.0;
   for (int k = 0; k < model.num_nodes; ++k) {
     reference += model.applied_force(k).norm();
   }
-  if (!(reference > 0.0)) reference = 1.0;
+  return reference > 0.0 ? reference : 1.0;
+}
+
+double ContactStiffness(const ContactSpec& contact, const Model& model) {
   const double allowed = kAllowedPenetration * contact.thickness;
-  return reference / (allowed * allowed);
+  return ContactReferenceForce(model) / (allowed * allowed);
+}
+
+std::vector<Model::Push> FrictionObstaclePushes(const Model& model, const double* positions) {
+  std::vector<std::vector<double>> forces(model.obstacles.size());
+  double gradient[3 * 32];
+  for (const Model::ContactTerm& contact : model.contact_terms) {
+    if (contact.friction || !(model.obstacles[contact.obstacle].friction > 0.0)) continue;
+    const Term& term = *model.terms[contact.term];
+    double energy = 0.0;
+    if (!term.Touches(positions) || !term.EnergyGradient(positions, &energy, gradient)) continue;
+    std::vector<double>& force = forces[contact.obstacle];
+    if (force.empty()) force.assign(model.num_dofs(), 0.0);
+    const std::vector<int>& nodes = term.nodes();
+    for (size_t a = 0; a < nodes.size(); ++a) {
+      for (int c = 0; c < 3; ++c) force[3 * nodes[a] + c] -= gradient[3 * a + c];
+    }
+  }
+  std::vector<Model::Push> pushes;
+  for (size_t obstacle = 0; obstacle < forces.size(); ++obstacle) {
+    if (forces[obstacle].empty()) continue;
+    for (int node = 0; node < model.num_nodes; ++node) {
+      const Eigen::Vector3d force = NodeAt(forces[obstacle], node);
+      if (force.squaredNorm() > 0.0 && force.allFinite()) {
+        pushes.push_back({static_cast<int>(obstacle), node, force});
+      }
+    }
+  }
+  return pushes;
+}
+
+void AddObstacleFrictionTerms(const std::vector<double>& start,
+                              const std::vector<double>& pushed_at, Model* model) {
+  if (!HasObstacleFriction(model->obstacles)) return;
+  assert(start.size() == model->positions.size() && pushed_at.size() == start.size());
+  const double smoothing = kFrictionSlipFraction * model->contact.thickness;
+  model->friction_pushes = FrictionObstaclePushes(*model, pushed_at.data());
+  for (const Model::Push& push : model->friction_pushes) {
+    if (model->fully_fixed(push.node)) continue;
+    const ObstacleSpec& obstacle = model->obstacles[push.obstacle];
+    const double normal_force = push.force.norm();
+    const Eigen::Vector3d normal = push.force / normal_force;
+    // Least-squares shift (src/model/term.h): the friction's work over a slip of the fabric's size.
+    const double shift = obstacle.friction * normal_force * model->size;
+    model->contact_terms.push_back(
+        {static_cast<int>(model->terms.size()), push.obstacle, 0, /*friction=*/true});
+    model->terms.push_back(
+        MakeTerm(obstacle.kind + "_friction", {push.node},
+                 ObstacleFriction::Create(obstacle.friction, normal_force, normal.data(),
+                                          &start[3 * push.node], smoothing),
+                 shift));
+  }
+}
+
+double FrictionPushChange(const Model& model, const double* positions) {
+  if (!HasObstacleFriction(model.obstacles)) return 0.0;
+  std::map<std::pair<int, int>, Eigen::Vector3d> difference;
+  for (const Model::Push& push : FrictionObstaclePushes(model, positions)) {
+    difference[{push.obstacle, push.node}] = push.force;
+  }
+  for (const Model::Push& push : model.friction_pushes) {
+    auto [it, added] = difference.try_emplace({push.obstacle, push.node}, Eigen::Vector3d::Zero());
+    it->second -= push.force;
+  }
+  double change = 0.0;
+  for (const auto& [key, force] : difference) change += force.norm();
+  return change / ContactReferenceForce(model);
 }
 
 double ObstacleDistance(const ObstacleSpec& obstacle, const double* x) {

@@ -41,6 +41,14 @@ struct ContactReport {
   int edges_through_disk = 0;                     // UnderDisks: edges through a disk
   double under_disk_inside = 0.0;                 // UnderDisks: those edges' farthest inside, m
   int edges_through_body = 0;                     // fabric edges crossing a mesh obstacle's surface
+  // The obstacles' friction, where one has it (src/run/run.cc, SettleObstacleFriction): the solves
+  // with its normal forces taken again at the last one's result, how far the pushes at the final
+  // state are from those its terms were made with (FrictionPushChange), and whether that is within
+  // kFrictionPushTolerance.
+  bool friction = false;
+  int friction_passes = 0;
+  double friction_push_change = 0.0;
+  bool friction_settled = true;
   // Whether the fabric has passed through a support disk (the state is no drape over it).
   bool ThroughDisk() const { return edges_through_disk > 0; }
   // Whether the fabric has passed through a mesh obstacle's surface (no edge crosses an analytic
@@ -56,10 +64,49 @@ double ContactStiffness(const ContactSpec& contact, const Model& model);
 // reachable node, and one "<kind>_edge_contact" term per obstacle (but a plane or a pin) and edge
 // (triangle side or chain link) with a reachable, not fully fixed end and EdgeContactPoints > 0.
 // Call after the loads are in the model (the stiffness depends on them).
-// Throws InputError for a zero thickness with obstacles, or friction (not supported: obstacles
-// are frictionless).
+// Throws InputError for a zero thickness with obstacles.
 void AddContactTerms(const std::vector<ObstacleSpec>& obstacles, const ContactSpec& contact,
                      Model* model);
+
+// The obstacles' friction (costs/obstacle_friction.h), Coulomb's with the normal force lagged.
+// Its smoothing ε, the slip below which the kink at a node's start is rounded, is
+// kFrictionSlipFraction × contact.thickness: a node that sticks under a tangential force F < μ λ
+// creeps ε (F/μλ) / √(1 − (F/μλ)²), 0.58 ε at half the limit, so a stuck node is resolved to the
+// same 10 % of the thickness that the stiffness rule holds its depth to.
+constexpr double kFrictionSlipFraction = kAllowedPenetration;
+// The friction's normal forces are lagged: a solve takes them from the state its model was built
+// at, and is repeated from its result with that result's pushes until they move by at most
+// kFrictionPushTolerance of the load (FrictionPushChange), in at most kMaxFrictionPasses solves.
+// 1 %: the friction force it leaves uncertain, μ × 1 % of the load, is below the scatter of a
+// measured fabric friction coefficient (several % between specimens on the inclined plane or
+// KES-FB4), so a tighter lag would be precision the input has not.
+constexpr double kFrictionPushTolerance = 0.01;
+constexpr int kMaxFrictionPasses = 10;
+
+// Whether an obstacle has a friction (ObstacleSpec::friction > 0).
+bool HasObstacleFriction(const std::vector<ObstacleSpec>& obstacles);
+
+// F_ref of the stiffness rule: Σ |weight + applied load| over the nodes, N (1 N without any).
+double ContactReferenceForce(const Model& model);
+
+// The push of every obstacle with a friction (μ > 0) on each node at `positions`: −∇ of that
+// obstacle's node and edge contact terms (not its friction terms) on the node, N. Only the
+// nonzero ones, by obstacle, then node.
+std::vector<Model::Push> FrictionObstaclePushes(const Model& model, const double* positions);
+
+// Adds one "<kind>_friction" term per obstacle with a friction and node not fully fixed that it
+// pushes on at `pushed_at` (FrictionObstaclePushes): λ n that push, x0 the node's place in `start`
+// (3 per node each). Records the pushes in model->friction_pushes. Nothing without a friction.
+// Call after AddContactTerms. A node that touches only later in the step still has its kink at
+// `start`: its friction opposes its whole slip across n since then, contact or not, which load
+// steps (FiniteVolumeSpec::friction_load_steps) make small.
+void AddObstacleFrictionTerms(const std::vector<double>& start,
+                              const std::vector<double>& pushed_at, Model* model);
+
+// How far the obstacles' pushes at `positions` are from those the friction terms were made with:
+// Σ |f − f_made| over the obstacles with a friction and their nodes, over ContactReferenceForce.
+// 0 without a friction.
+double FrictionPushChange(const Model& model, const double* positions);
 
 // How many points inside the edge a–b its contact term (costs/edge_contact.h) samples: the fewest
 // that leave no gap longer than the clearance t along it, ⌈|b − a| / t⌉ − 1 (0: an edge no longer

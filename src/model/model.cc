@@ -510,7 +510,8 @@ void CheckPressureHeld(const Scene& scene, const Model& model) {
 
 }  // namespace
 
-Model BuildModel(const Scene& scene, const std::vector<double>* friction_reference) {
+Model BuildModel(const Scene& scene, const std::vector<double>* friction_reference,
+                 const std::vector<double>* pushed_at) {
   const BuildClock clock(scene);
   const Mesh mesh = BuildMesh(scene.mesh);
   const std::string nodes = std::to_string(mesh.nodes.size()) + " nodes";
@@ -565,7 +566,12 @@ Model BuildModel(const Scene& scene, const std::vector<double>* friction_referen
   AddLines(scene.material, mesh, &model);
   clock.Check("the elastic terms of " + nodes);
   AddLoads(scene, mesh, &model);
-  if (!scene.obstacles.empty()) AddContactTerms(scene.obstacles, scene.contact, &model);
+  if (!scene.obstacles.empty()) {
+    AddContactTerms(scene.obstacles, scene.contact, &model);
+    assert(!pushed_at || pushed_at->size() == model.positions.size());
+    AddObstacleFrictionTerms(friction_reference ? *friction_reference : model.initial,
+                             pushed_at ? *pushed_at : model.initial, &model);
+  }
   SetUpSelfContact(scene, &model);  // last: its terms are replaced as the fabric moves
   clock.Check("the loads and contact terms of " + nodes);
   CheckNoNodeStartsInside(scene, model);

@@ -56,11 +56,21 @@ struct Model {
   std::vector<ObstacleSpec> obstacles;
   ContactSpec contact;
   struct ContactTerm {
-    int term = 0;         // its index in `terms`
-    int obstacle = 0;     // its obstacle's index in `obstacles`
-    int edge_points = 0;  // 0: a node's term; else an edge's, at that many points inside it
+    int term = 0;           // its index in `terms`
+    int obstacle = 0;       // its obstacle's index in `obstacles`
+    int edge_points = 0;    // 0: a node's term; else an edge's, at that many points inside it
+    bool friction = false;  // the obstacle's friction on a node (costs/obstacle_friction.h)
   };
   std::vector<ContactTerm> contact_terms;
+  // The obstacles' pushes the friction terms were made with (src/model/contact.h,
+  // AddObstacleFrictionTerms): the lagged normal forces, one per obstacle with a friction and node
+  // it pushed on.
+  struct Push {
+    int obstacle = 0;
+    int node = 0;
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();  // N
+  };
+  std::vector<Push> friction_pushes;
   // The fabric's contact with itself (src/model/self_contact.h): its pairs' terms are
   // terms[self_contact.first_term ..), the last of `terms`, and change as the fabric moves.
   struct SelfContact {
@@ -111,8 +121,11 @@ struct Model {
 // than 2 nodes, an unreadable mesh file, an energy with no minimum.
 // `friction_reference`, when given (the positions of every node, 3 per node), puts the frictions'
 // kinks there instead of at the flat state: a later load step of the incremental form
-// (FiniteVolumeSpec::friction_load_steps).
-Model BuildModel(const Scene& scene, const std::vector<double>* friction_reference = nullptr);
+// (FiniteVolumeSpec::friction_load_steps). `pushed_at`, when given (3 per node), is where the
+// obstacles' friction takes its normal forces (the lagged state: src/model/contact.h,
+// AddObstacleFrictionTerms); null: the start.
+Model BuildModel(const Scene& scene, const std::vector<double>* friction_reference = nullptr,
+                 const std::vector<double>* pushed_at = nullptr);
 
 // Checks the invariants that ceres::Problem would otherwise abort on (node ids in range, no node
 // twice in one term, storage sized). Programmer errors: asserts.

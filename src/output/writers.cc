@@ -98,21 +98,28 @@ void AddContactMembers(const Scene& scene, const RunResult& result,
   std::vector<std::string> by_obstacle;
   for (const auto& sum : certificate.contact_sum_by_obstacle)
     by_obstacle.push_back(JsonVector(sum));
-  members->emplace_back(
-      "contact",
-      JsonObject({{"thickness", JsonNumber(contact.thickness)},
-                  {"stiffness", JsonNumber(contact.stiffness)},
-                  {"nodes_in_contact", std::to_string(contact.nodes_in_contact)},
-                  {"max_penetration", JsonNumber(contact.max_penetration)},
-                  {"max_penetration_fraction", JsonNumber(contact.max_penetration_fraction)},
-                  {"allowed_fraction", JsonNumber(contact.allowed_fraction)},
-                  {"nodes_under_disk", std::to_string(contact.nodes_under_disk)},
-                  {"edges_through_disk", std::to_string(contact.edges_through_disk)},
-                  {"under_disk_inside_m", JsonNumber(contact.under_disk_inside)},
-                  {"edges_through_body", std::to_string(contact.edges_through_body)},
-                  {"force_sum", JsonVector(certificate.contact_sum)},
-                  {"force_by_obstacle", JsonList(by_obstacle)}},
-                 1));
+  std::vector<std::pair<std::string, std::string>> fields = {
+      {"thickness", JsonNumber(contact.thickness)},
+      {"stiffness", JsonNumber(contact.stiffness)},
+      {"nodes_in_contact", std::to_string(contact.nodes_in_contact)},
+      {"max_penetration", JsonNumber(contact.max_penetration)},
+      {"max_penetration_fraction", JsonNumber(contact.max_penetration_fraction)},
+      {"allowed_fraction", JsonNumber(contact.allowed_fraction)},
+      {"nodes_under_disk", std::to_string(contact.nodes_under_disk)},
+      {"edges_through_disk", std::to_string(contact.edges_through_disk)},
+      {"under_disk_inside_m", JsonNumber(contact.under_disk_inside)},
+      {"edges_through_body", std::to_string(contact.edges_through_body)},
+      {"force_sum", JsonVector(certificate.contact_sum)},
+      {"force_by_obstacle", JsonList(by_obstacle)}};
+  if (contact.friction) {
+    fields.emplace_back("friction",
+                        JsonObject({{"passes", std::to_string(contact.friction_passes)},
+                                    {"push_change", JsonNumber(contact.friction_push_change)},
+                                    {"push_tolerance", JsonNumber(kFrictionPushTolerance)},
+                                    {"settled", JsonBool(contact.friction_settled)}},
+                                   2));
+  }
+  members->emplace_back("contact", JsonObject(fields, 1));
 }
 
 // summary.json's `self_intersections`: whether the fabric's surface was tested (its positions
@@ -271,6 +278,8 @@ std::string UnitsObject() {
       {"contact.allowed_fraction", "1"},
       {"contact.force_sum", "N"},
       {"contact.force_by_obstacle", "N"},
+      {"contact.friction.push_change", "1"},
+      {"contact.friction.push_tolerance", "1"},
       {"tolerance", "1"},
       {"levels[].energy", "J"},
       {"levels[].drape_coefficient", "1"},

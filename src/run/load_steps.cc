@@ -9,22 +9,33 @@
 namespace drape {
 namespace {
 
-// One step: the continuation in the frictions' smoothing, then `method` at the scene's own.
+// One step: the continuation in the frictions' smoothing, then `method` at the scene's own, in
+// as many passes as the obstacles' friction needs (SettleObstacleFriction).
 SolverSummary SolveStep(const Scene& step, Model& model, const std::string& method,
                         const std::function<bool(const IterationRecord&)>& on_iteration,
                         const std::vector<double>* reference) {
   const SolverSummary continuation =
       RunFrictionContinuation(step, model, method, on_iteration, reference);
-  SolverSummary summary = SolveWithSceneOptions(step, model, method, on_iteration);
-  summary.iterations += continuation.iterations;
-  summary.wall_time_s += continuation.wall_time_s;
+  SolverSummary summary;
+  int iterations = continuation.iterations;
+  double wall_time_s = continuation.wall_time_s;
+  const FrictionPasses passes = SettleObstacleFriction(step, model, reference, [&](Model& pass) {
+    summary = SolveWithSceneOptions(step, pass, method, on_iteration);
+    iterations += summary.iterations;
+    wall_time_s += summary.wall_time_s;
+    return summary.termination != kStoppedByCaller && !InterruptRequested();
+  });
+  summary.iterations = iterations;
+  summary.wall_time_s = wall_time_s;
+  summary.converged = summary.converged && passes.settled;
   return summary;
 }
 
 }  // namespace
 
 int FrictionLoadSteps(const Scene& scene) {
-  return HasFriction(scene) ? scene.material.finite_volume.friction_load_steps : 0;
+  const bool friction = HasFriction(scene) || HasObstacleFriction(scene.obstacles);
+  return friction ? scene.material.finite_volume.friction_load_steps : 0;
 }
 
 LoadsSpec ScaledLoads(const LoadsSpec& loads, double fraction) {
@@ -51,7 +62,7 @@ LoadPathSummary RunLoadPath(const Scene& scene, Model& model, const std::string&
   for (int k = 1; k < steps; ++k) {
     Scene step = scene;
     step.loads = ScaledLoads(scene.loads, static_cast<double>(k) / steps);
-    Model step_model = BuildModel(step, reference);
+    Model step_model = BuildModel(step, reference, &positions);
     step_model.positions = positions;
     const SolverSummary summary = SolveStep(step, step_model, method, on_iteration, reference);
     path.steps = k;
@@ -65,7 +76,7 @@ LoadPathSummary RunLoadPath(const Scene& scene, Model& model, const std::string&
     reference = &positions;
     if (InterruptRequested() || summary.termination == kStoppedByCaller) break;
   }
-  Model last = BuildModel(scene, reference);
+  Model last = BuildModel(scene, reference, &positions);
   last.positions = positions;
   model = std::move(last);
   path.reference = std::move(positions);

@@ -15,7 +15,7 @@
 namespace drape {
 
 // The load steps a solve of `scene` takes: friction_load_steps for a finite-volume fabric with a
-// friction, else 0 (the loads at once).
+// friction or on an obstacle with one (costs/obstacle_friction.h), else 0 (the loads at once).
 int FrictionLoadSteps(const Scene& scene);
 
 // The loads times `fraction` (gravity, every force, the pressure).

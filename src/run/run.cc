@@ -286,6 +286,31 @@ RunResult RunSolveOnce(const Scene& scene, Model& model, const SolverInfo& info,
   return result;
 }
 
+// The obstacles' friction in the result: its passes in the contact report and the termination,
+// and normal forces that did not settle, which leave the state short of Coulomb's law.
+void NoteFrictionPasses(const Scene& scene, const FrictionPasses& passes, RunResult* result) {
+  if (!HasObstacleFriction(scene.obstacles)) return;
+  ContactReport& contact = result->contact;
+  contact.friction = true;
+  contact.friction_passes = passes.passes;
+  contact.friction_push_change = passes.push_change;
+  contact.friction_settled = passes.settled;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "; %d solves of the obstacles' friction, its normal forces settled to %.2g of the "
+                "load",
+                passes.passes, passes.push_change);
+  result->summary.termination += text;
+  if (!passes.settled && result->converged) {
+    result->converged = false;
+    std::snprintf(text, sizeof text,
+                  "; but the obstacles' friction did not settle: its normal forces moved by %.2g "
+                  "of the load in the last of %d solves (at most %g)",
+                  passes.push_change, passes.passes, kFrictionPushTolerance);
+    result->summary.termination += text;
+  }
+}
+
 // The load path's steps in the result: their iterations and time, and a step that did not
 // converge, which leaves the path's end not the equilibrium the incremental form defines.
 void NoteLoadPath(const LoadPathSummary& path, RunResult* result) {
@@ -309,9 +334,22 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
   const SolverInfo* info = FindSolver(method);
   if (!info) throw InputError(scene.solver.where, "unknown solver '" + method + "'");
   const LoadPathSummary path = RunLoadPath(scene, model, method, on_iteration);
-  const SolverSummary continuation = RunFrictionContinuation(
-      scene, model, method, on_iteration, path.steps > 0 ? &path.reference : nullptr);
-  RunResult result = RunSolveOnce(scene, model, *info, method, on_iteration);
+  const std::vector<double>* reference = path.steps > 0 ? &path.reference : nullptr;
+  const SolverSummary continuation =
+      RunFrictionContinuation(scene, model, method, on_iteration, reference);
+  RunResult result;
+  int iterations = 0;
+  double wall_time_s = 0.0;
+  const FrictionPasses passes = SettleObstacleFriction(scene, model, reference, [&](Model& pass) {
+    result = RunSolveOnce(scene, pass, *info, method, on_iteration);
+    iterations += result.summary.iterations;
+    wall_time_s += result.summary.wall_time_s;
+    return !result.non_finite && result.summary.termination != kStoppedByCaller &&
+           !InterruptRequested();
+  });
+  result.summary.iterations = iterations;
+  result.summary.wall_time_s = wall_time_s;
+  NoteFrictionPasses(scene, passes, &result);
   if (continuation.iterations > 0) {
     result.summary.iterations += continuation.iterations;
     result.summary.wall_time_s += continuation.wall_time_s;
@@ -375,6 +413,24 @@ bool HasFriction(const Scene& scene) {
   return HasBendingFriction(scene) || HasFriction(scene, {&FiniteVolumeSpec::shear_friction});
 }
 
+FrictionPasses SettleObstacleFriction(const Scene& scene, Model& model,
+                                      const std::vector<double>* friction_reference,
+                                      const std::function<bool(Model&)>& solve) {
+  FrictionPasses passes;
+  for (;;) {
+    const bool go_on = solve(model);
+    ++passes.passes;
+    if (!HasObstacleFriction(scene.obstacles) || !AllFinite(model.positions)) return passes;
+    passes.push_change = FrictionPushChange(model, model.positions.data());
+    passes.settled = passes.push_change <= kFrictionPushTolerance;
+    if (passes.settled || !go_on || passes.passes >= kMaxFrictionPasses) return passes;
+    const std::vector<double> pushed_at = model.positions;
+    Model next = BuildModel(scene, friction_reference, &pushed_at);
+    next.positions = pushed_at;
+    model = std::move(next);
+  }
+}
+
 SolverSummary RunFrictionContinuation(
     const Scene& scene, Model& model, const std::string& method,
     const std::function<bool(const IterationRecord&)>& on_iteration,
@@ -384,7 +440,7 @@ SolverSummary RunFrictionContinuation(
     Scene stage = scene;
     stage.material.finite_volume.bending_friction_smoothing = smoothings.bending;
     stage.material.finite_volume.shear_friction_smoothing = smoothings.shear;
-    Model stage_model = BuildModel(stage, reference);
+    Model stage_model = BuildModel(stage, reference, &model.positions);
     assert(stage_model.positions.size() == model.positions.size());
     stage_model.positions = model.positions;
     const SolverSummary summary = SolveWithSceneOptions(stage, stage_model, method, on_iteration);

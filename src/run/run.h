@@ -58,6 +58,21 @@ SolverSummary SolveWithSceneOptions(
 // Whether the scene's fabric, or one of its regions, has a friction (in bending or in shear).
 bool HasFriction(const Scene& scene);
 
+// The obstacles' friction's passes (src/model/contact.h, kFrictionPushTolerance): `solve` solves
+// `model` from its positions (false: stop after it, interrupted or not finite); where an obstacle
+// has a friction and the pushes at the result moved by more than the tolerance from those the
+// model's friction terms were made with, `model` is built again (its kinks at
+// `friction_reference`, as for BuildModel) with the result's pushes, positioned at the result, and
+// solved again, at most kMaxFrictionPasses times in all. Without a friction: one solve.
+struct FrictionPasses {
+  int passes = 0;            // solves
+  double push_change = 0.0;  // FrictionPushChange at the last result
+  bool settled = true;       // push_change ≤ kFrictionPushTolerance
+};
+FrictionPasses SettleObstacleFriction(const Scene& scene, Model& model,
+                                      const std::vector<double>* friction_reference,
+                                      const std::function<bool(Model&)>& solve);
+
 // The options a solve of `method` takes from the scene: solver.<method>.<key> as given, and where
 // the fabric has a bending friction, newton's max_expansions 0 unless given (src/run/run.cc,
 // kFrictionMaxExpansions, has the evidence). The solvers take the catalogue's defaults for the

@@ -1092,9 +1092,11 @@ std::vector<SchemaRow> Obstacles() {
       Row(t, "friction")
           .Number("1", AtLeast(0))
           .Field(&ObstacleSpec::friction)
-          .Doc("accepted by the format, but only 0 is supported (obstacles are frictionless)")
-          .Example({"obstacles=[{pin: {position: [0, 0, -1], friction: 0}}]"},
-                   "obstacles[0].pin.friction", "0"),
+          .Doc("Coulomb's coefficient μ of the fabric on this obstacle (0: frictionless): a "
+               "node it pushes on with force λ slides only under a tangential force above μ λ "
+               "(costs/obstacle_friction.h)")
+          .Example({"obstacles=[{plane: {point: [0, 0, -1], normal: [0, 0, 1], friction: 0.3}}]"},
+                   "obstacles[0].plane.friction", "0.3"),
   };
 }
 
