@@ -133,6 +133,7 @@ void ExpectCertifiedMinimum(const Slope& slope) {
 // Each node's move down the slope (x), m.
 std::vector<double> MovesDownTheSlope(const Model& model) {
   std::vector<double> moves;
+  moves.reserve(model.num_nodes);
   for (int node = 0; node < model.num_nodes; ++node) {
     moves.push_back(model.positions[3 * node] - model.initial[3 * node]);
   }
