@@ -104,7 +104,7 @@ TEST(Contact, FrictionTermsTakeTheObstaclesPushesAtTheLaggedState) {
   ObstacleSpec rough = Floor(-0.0015);
   rough.friction = 0.3;
   AddContactTerms({rough}, contact, &model);
-  AddObstacleFrictionTerms(model.positions, model.positions, &model);
+  AddObstacleFrictionTerms(model.positions, &model.positions, &model);
   EXPECT_EQ(CountType(model, "plane_friction"), 24);
   const double k = ContactStiffness(contact, model);
   const double push = k * 0.0005 * 0.0005;
@@ -128,12 +128,35 @@ TEST(Contact, FrictionTermsTakeTheObstaclesPushesAtTheLaggedState) {
               0.3 * push * 0.001 / std::sqrt(0.001 * 0.001 + smoothing * smoothing), 1e-9 * push);
 }
 
+// Nothing solved yet (no lagged state): a sheet laid on the edge of a rough floor's layer, where
+// the floor does not push, takes the push of each free node's own weight; a floor farther than the
+// layer's edge (and the stiffness rule's tenth) gives none.
+TEST(Contact, TheFirstPushesAreTheNodesOwnWeightOnTheLayersEdge) {
+  Model model = testing::Sheet(SmallSheet({0}));
+  ContactSpec contact;
+  contact.thickness = 0.002;
+  ObstacleSpec rough = Floor(-0.002);
+  rough.friction = 0.3;
+  AddContactTerms({rough}, contact, &model);
+  AddObstacleFrictionTerms(model.positions, nullptr, &model);
+  ASSERT_EQ(model.friction_pushes.size(), 24u);
+  for (const Model::Push& push : model.friction_pushes) {
+    const Eigen::Vector3d weight = model.applied_force(push.node);
+    EXPECT_NEAR((push.force + weight).norm(), 0.0, 1e-9 * weight.norm()) << push.node;
+  }
+  Model away = testing::Sheet(SmallSheet({0}));
+  rough.center.z() = -0.0023;  // 1.15 t below: beyond 1.1 t
+  AddContactTerms({rough}, contact, &away);
+  AddObstacleFrictionTerms(away.positions, nullptr, &away);
+  EXPECT_TRUE(away.friction_pushes.empty());
+}
+
 TEST(Contact, NoFrictionTermsOnAFrictionlessObstacle) {
   Model model = testing::Sheet(SmallSheet({0}));
   ContactSpec contact;
   contact.thickness = 0.002;
   AddContactTerms({Floor(-0.0015)}, contact, &model);
-  AddObstacleFrictionTerms(model.positions, model.positions, &model);
+  AddObstacleFrictionTerms(model.positions, &model.positions, &model);
   EXPECT_EQ(CountType(model, "plane_friction"), 0);
   EXPECT_TRUE(model.friction_pushes.empty());
   EXPECT_EQ(FrictionPushChange(model, model.positions.data()), 0.0);

@@ -184,17 +184,42 @@ TEST(ObstacleFriction, ASheetAboveTheFrictionAngleSlidesToTheWall) {
   }
 }
 
-// The sheet starts without a push (on the layer's edge), so the first solve has no friction: the
-// sheet slides to the wall, and the second, with the pushes found there, brings it back.
-TEST(ObstacleFriction, TheNormalForcesAreTakenAgainUntilTheySettle) {
-  const Slope slope = SolveOnSlope(0.5);
-  EXPECT_GE(slope.solved.result.contact.friction_passes, 2);
-  EXPECT_LE(slope.solved.result.contact.friction_passes, kMaxFrictionPasses);
+// A sheet laid on the slope's layer edge starts with the pushes of its own weight, exact for a
+// flat sheet: one solve. Laid 0.5 mm above it, nothing pushes at the start, so the first solve has
+// no friction and the sheet slides to the wall; the second, with the pushes found there, brings it
+// back to where friction holds it.
+TEST(ObstacleFriction, ThePushesAreTakenAgainUntilTheySettle) {
+  const Slope laid = SolveOnSlope(0.5);
+  EXPECT_EQ(laid.solved.result.contact.friction_passes, 1);
+  ExpectCertifiedMinimum(laid);
+  const Slope above = SolveOnSlope(0.5, {"mesh.origin=[0, 0, 0.0015]"});
+  ExpectCertifiedMinimum(above);
+  EXPECT_GE(above.solved.result.contact.friction_passes, 2);
+  const double slip = kFrictionSlipFraction * kSlopeThickness;
+  const double creep = slip * 0.5 / std::sqrt(1.0 - 0.25);
+  const std::vector<double> laid_moves = MovesDownTheSlope(laid.solved.model);
+  const std::vector<double> above_moves = MovesDownTheSlope(above.solved.model);
+  for (size_t k = 0; k < laid_moves.size(); ++k) {
+    EXPECT_NEAR(above_moves[k], laid_moves[k], kFrictionPushTolerance / 0.75 * creep);
+  }
   const Slope frictionless = SolveOnSlope(0.5, {"obstacles[0].plane.friction=0"});
   EXPECT_FALSE(frictionless.solved.result.contact.friction);
   for (double move : MovesDownTheSlope(frictionless.solved.model)) {
     EXPECT_NEAR(move, kWallGap - kSlopeThickness, kAllowedPenetration * kSlopeThickness);
   }
+}
+
+// Without the wall, friction alone holds the sheet below the friction angle (the scene is not
+// refused for lacking a support down the slope); above it nothing does, and the solve says so.
+TEST(ObstacleFriction, WithoutTheWallFrictionAloneHoldsTheSheetOrItRunsAway) {
+  const Slope held = SolveOnSlope(0.5, {"obstacles=[{plane: {point: [0, 0, 0], normal: [0, 0, 1], "
+                                        "friction: 0.3}}]",
+                                        "solver.max_iterations=200"});
+  ExpectCertifiedMinimum(held);
+  const Slope sliding = SolveOnSlope(1.5, {"obstacles=[{plane: {point: [0, 0, 0], normal: [0, 0, "
+                                           "1], friction: 0.3}}]",
+                                           "solver.max_iterations=200"});
+  EXPECT_FALSE(sliding.solved.result.converged);
 }
 
 // In load steps each step's kinks sit at the previous step's state and its friction carries the

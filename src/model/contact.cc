@@ -88,12 +88,60 @@ std::vector<Model::Push> FrictionObstaclePushes(const Model& model, const double
   return pushes;
 }
 
+namespace {
+
+// The outward normal of `obstacle`'s surface nearest x: the signed distance's gradient, by central
+// differences at a thousandth of the clearance.
+Eigen::Vector3d OutwardNormal(const ObstacleSpec& obstacle, double clearance, const double* x) {
+  const double step = 1e-3 * clearance;
+  Eigen::Vector3d gradient;
+  for (int c = 0; c < 3; ++c) {
+    double plus[3] = {x[0], x[1], x[2]}, minus[3] = {x[0], x[1], x[2]};
+    plus[c] += step;
+    minus[c] -= step;
+    gradient[c] =
+        (ObstacleDistance(obstacle, plus) - ObstacleDistance(obstacle, minus)) / (2 * step);
+  }
+  return gradient.normalized();
+}
+
+// FrictionObstaclePushes at `positions`, and for a node on a frictional obstacle's layer edge that
+// it does not push on, the push of the node's own load against the surface
+// (AddObstacleFrictionTerms).
+std::vector<Model::Push> PushesWithLoads(const Model& model, const double* positions) {
+  std::vector<Model::Push> pushes = FrictionObstaclePushes(model, positions);
+  std::set<std::pair<int, int>> pushed;
+  for (const Model::Push& push : pushes) pushed.insert({push.obstacle, push.node});
+  const double clearance = model.contact.thickness;
+  for (size_t index = 0; index < model.obstacles.size(); ++index) {
+    const ObstacleSpec& obstacle = model.obstacles[index];
+    if (!(obstacle.friction > 0.0)) continue;
+    const int o = static_cast<int>(index);
+    for (int node = 0; node < model.num_nodes; ++node) {
+      if (pushed.count({o, node}) || model.fully_fixed(node)) continue;
+      const double* x = positions + 3 * node;
+      if (ObstacleDistance(obstacle, x) > (1.0 + kAllowedPenetration) * clearance) continue;
+      const Eigen::Vector3d normal = OutwardNormal(obstacle, clearance, x);
+      const double against = -model.applied_force(node).dot(normal);
+      if (against > 0.0 && normal.allFinite()) pushes.push_back({o, node, against * normal});
+    }
+  }
+  std::sort(pushes.begin(), pushes.end(), [](const Model::Push& a, const Model::Push& b) {
+    return std::make_pair(a.obstacle, a.node) < std::make_pair(b.obstacle, b.node);
+  });
+  return pushes;
+}
+
+}  // namespace
+
 void AddObstacleFrictionTerms(const std::vector<double>& start,
-                              const std::vector<double>& pushed_at, Model* model) {
+                              const std::vector<double>* pushed_at, Model* model) {
   if (!HasObstacleFriction(model->obstacles)) return;
-  assert(start.size() == model->positions.size() && pushed_at.size() == start.size());
+  assert(start.size() == model->positions.size());
+  assert(!pushed_at || pushed_at->size() == start.size());
   const double smoothing = kFrictionSlipFraction * model->contact.thickness;
-  model->friction_pushes = FrictionObstaclePushes(*model, pushed_at.data());
+  model->friction_pushes = pushed_at ? FrictionObstaclePushes(*model, pushed_at->data())
+                                     : PushesWithLoads(*model, start.data());
   for (const Model::Push& push : model->friction_pushes) {
     if (model->fully_fixed(push.node)) continue;
     const ObstacleSpec& obstacle = model->obstacles[push.obstacle];

@@ -97,11 +97,17 @@ std::vector<Model::Push> FrictionObstaclePushes(const Model& model, const double
 // Adds one "<kind>_friction" term per obstacle with a friction and node not fully fixed that it
 // pushes on at `pushed_at` (FrictionObstaclePushes): λ n that push, x0 the node's place in `start`
 // (3 per node each). Records the pushes in model->friction_pushes. Nothing without a friction.
-// Call after AddContactTerms. A node that touches only later in the step still has its kink at
-// `start`: its friction opposes its whole slip across n since then, contact or not, which load
-// steps (FiniteVolumeSpec::friction_load_steps) make small.
+// Call after AddContactTerms. `pushed_at` null: nothing is solved yet, and a fabric laid on an
+// obstacle touches its layer's edge without a push; so at `start`, a node within
+// (1 + kAllowedPenetration) × t of a frictional obstacle that does not push on it gets the push its
+// own weight and load make against the surface, max(0, −F·n) n (n the surface's outward normal):
+// exact for a sheet lying flat, a first guess elsewhere that the passes correct. Without it the
+// first solve would have no friction, and a fabric that only friction holds would slide away. A
+// node that touches only later in the step still has its kink at `start`: its friction opposes its
+// whole slip across n since then, contact or not, which load steps
+// (FiniteVolumeSpec::friction_load_steps) make small.
 void AddObstacleFrictionTerms(const std::vector<double>& start,
-                              const std::vector<double>& pushed_at, Model* model);
+                              const std::vector<double>* pushed_at, Model* model);
 
 // How far the obstacles' pushes at `positions` are from those the friction terms were made with:
 // Σ |f − f_made| over the obstacles with a friction and their nodes, over ContactReferenceForce.

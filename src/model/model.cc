@@ -481,6 +481,9 @@ void CheckHasMinimum(const Scene& scene, const Model& model) {
       Eigen::Vector3d direction = Eigen::Vector3d::Zero();
       direction[c] = net > 0.0 ? 1.0 : -1.0;
       if (SomeObstacleOnThePath(scene, model, direction)) continue;
+      // An obstacle's friction may hold the fabric in any direction; where it does not, the solve
+      // runs away (not converged).
+      if (HasObstacleFriction(scene.obstacles)) continue;
       throw InputError(scene.loads.where,
                        "gravity/loads act along " + axis + " but no node is fixed along " + axis +
                            " and no obstacle holds the fabric: the energy has no minimum (fix "
@@ -568,9 +571,8 @@ Model BuildModel(const Scene& scene, const std::vector<double>* friction_referen
   AddLoads(scene, mesh, &model);
   if (!scene.obstacles.empty()) {
     AddContactTerms(scene.obstacles, scene.contact, &model);
-    assert(!pushed_at || pushed_at->size() == model.positions.size());
-    AddObstacleFrictionTerms(friction_reference ? *friction_reference : model.initial,
-                             pushed_at ? *pushed_at : model.initial, &model);
+    AddObstacleFrictionTerms(friction_reference ? *friction_reference : model.initial, pushed_at,
+                             &model);
   }
   SetUpSelfContact(scene, &model);  // last: its terms are replaced as the fabric moves
   clock.Check("the loads and contact terms of " + nodes);

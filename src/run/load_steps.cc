@@ -23,7 +23,7 @@ SolverSummary SolveStep(const Scene& step, Model& model, const std::string& meth
     summary = SolveWithSceneOptions(step, pass, method, on_iteration);
     iterations += summary.iterations;
     wall_time_s += summary.wall_time_s;
-    return summary.termination != kStoppedByCaller && !InterruptRequested();
+    return summary.converged && !InterruptRequested();
   });
   summary.iterations = iterations;
   summary.wall_time_s = wall_time_s;

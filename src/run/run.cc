@@ -297,9 +297,9 @@ void NoteFrictionPasses(const Scene& scene, const FrictionPasses& passes, RunRes
   contact.friction_settled = passes.settled;
   char text[200];
   std::snprintf(text, sizeof text,
-                "; %d solves of the obstacles' friction, its normal forces settled to %.2g of the "
-                "load",
-                passes.passes, passes.push_change);
+                "; %d solve%s of the obstacles' friction, its normal forces moved by %.2g of the "
+                "load in the last",
+                passes.passes, passes.passes == 1 ? "" : "s", passes.push_change);
   result->summary.termination += text;
   if (!passes.settled && result->converged) {
     result->converged = false;
@@ -344,8 +344,9 @@ RunResult RunSolve(const Scene& scene, Model& model, const std::string& method,
     result = RunSolveOnce(scene, pass, *info, method, on_iteration);
     iterations += result.summary.iterations;
     wall_time_s += result.summary.wall_time_s;
-    return !result.non_finite && result.summary.termination != kStoppedByCaller &&
-           !InterruptRequested();
+    // A solve that did not converge (friction too weak to hold the fabric: it slid away) is
+    // not made better by taking its pushes again.
+    return result.converged && !InterruptRequested();
   });
   result.summary.iterations = iterations;
   result.summary.wall_time_s = wall_time_s;
