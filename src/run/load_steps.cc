@@ -62,7 +62,9 @@ LoadPathSummary RunLoadPath(const Scene& scene, Model& model, const std::string&
   for (int k = 1; k < steps; ++k) {
     Scene step = scene;
     step.loads = ScaledLoads(scene.loads, static_cast<double>(k) / steps);
-    Model step_model = BuildModel(step, reference, &positions);
+    // The obstacles' friction's pushes: the previous step's, or in the first the fabric's own
+    // weight's where it lies on a rough body (AddObstacleFrictionTerms).
+    Model step_model = BuildModel(step, reference, k > 1 ? &positions : nullptr);
     step_model.positions = positions;
     const SolverSummary summary = SolveStep(step, step_model, method, on_iteration, reference);
     path.steps = k;
