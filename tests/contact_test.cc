@@ -53,6 +53,20 @@ int CountType(const Model& model, const std::string& type) {
   return count;
 }
 
+constexpr double kFrictionTestThickness = 0.002;  // t, m, of the friction tests below
+
+// The small sheet (node 0 fixed) with the contact terms of a floor at height z of friction μ, its
+// contact thickness kFrictionTestThickness; the friction's terms are the test's to add.
+Model SheetOverFloor(double z, double friction) {
+  Model model = testing::Sheet(SmallSheet({0}));
+  ContactSpec contact;
+  contact.thickness = kFrictionTestThickness;
+  ObstacleSpec floor = Floor(z);
+  floor.friction = friction;
+  AddContactTerms({floor}, contact, &model);
+  return model;
+}
+
 TEST(Contact, StiffnessKeepsTheWholeLoadWithinATenthOfTheThickness) {
   const Model model = testing::Sheet(SmallSheet({0}));
   ContactSpec contact;
@@ -98,15 +112,10 @@ TEST(Contact, RejectsZeroThickness) {
 // friction term per free node, made with the floor's push k g² straight up; the pushes at the
 // state they were made at have not moved, and one node pressed deeper moves them by its change.
 TEST(Contact, FrictionTermsTakeTheObstaclesPushesAtTheLaggedState) {
-  Model model = testing::Sheet(SmallSheet({0}));
-  ContactSpec contact;
-  contact.thickness = 0.002;
-  ObstacleSpec rough = Floor(-0.0015);
-  rough.friction = 0.3;
-  AddContactTerms({rough}, contact, &model);
+  Model model = SheetOverFloor(-0.0015, 0.3);
   AddObstacleFrictionTerms(model.positions, &model.positions, &model);
   EXPECT_EQ(CountType(model, "plane_friction"), 24);
-  const double k = ContactStiffness(contact, model);
+  const double k = ContactStiffness(model.contact, model);
   const double push = k * 0.0005 * 0.0005;
   ASSERT_EQ(model.friction_pushes.size(), 24u);
   for (const Model::Push& push_on_node : model.friction_pushes) {
@@ -123,7 +132,7 @@ TEST(Contact, FrictionTermsTakeTheObstaclesPushesAtTheLaggedState) {
   EXPECT_NEAR(FrictionPushChange(model, slid.data()), 0.0, 1e-12);
   const Certificate certificate = ComputeCertificate(model, slid.data());
   // The friction opposes the slip u = 1 mm with μ λ u / √(u² + ε²).
-  const double smoothing = kFrictionSlipFraction * contact.thickness;
+  const double smoothing = kFrictionSlipFraction * kFrictionTestThickness;
   EXPECT_NEAR(-certificate.contact_forces[3 * 7],
               0.3 * push * 0.001 / std::sqrt(0.001 * 0.001 + smoothing * smoothing), 1e-9 * push);
 }
@@ -132,30 +141,20 @@ TEST(Contact, FrictionTermsTakeTheObstaclesPushesAtTheLaggedState) {
 // the floor does not push, takes the push of each free node's own weight; a floor farther than the
 // layer's edge (and the stiffness rule's tenth) gives none.
 TEST(Contact, TheFirstPushesAreTheNodesOwnWeightOnTheLayersEdge) {
-  Model model = testing::Sheet(SmallSheet({0}));
-  ContactSpec contact;
-  contact.thickness = 0.002;
-  ObstacleSpec rough = Floor(-0.002);
-  rough.friction = 0.3;
-  AddContactTerms({rough}, contact, &model);
+  Model model = SheetOverFloor(-0.002, 0.3);
   AddObstacleFrictionTerms(model.positions, nullptr, &model);
   ASSERT_EQ(model.friction_pushes.size(), 24u);
   for (const Model::Push& push : model.friction_pushes) {
     const Eigen::Vector3d weight = model.applied_force(push.node);
     EXPECT_NEAR((push.force + weight).norm(), 0.0, 1e-9 * weight.norm()) << push.node;
   }
-  Model away = testing::Sheet(SmallSheet({0}));
-  rough.center.z() = -0.0023;  // 1.15 t below: beyond 1.1 t
-  AddContactTerms({rough}, contact, &away);
+  Model away = SheetOverFloor(-0.0023, 0.3);  // 1.15 t below: beyond 1.1 t
   AddObstacleFrictionTerms(away.positions, nullptr, &away);
   EXPECT_TRUE(away.friction_pushes.empty());
 }
 
 TEST(Contact, NoFrictionTermsOnAFrictionlessObstacle) {
-  Model model = testing::Sheet(SmallSheet({0}));
-  ContactSpec contact;
-  contact.thickness = 0.002;
-  AddContactTerms({Floor(-0.0015)}, contact, &model);
+  Model model = SheetOverFloor(-0.0015, 0.0);
   AddObstacleFrictionTerms(model.positions, &model.positions, &model);
   EXPECT_EQ(CountType(model, "plane_friction"), 0);
   EXPECT_TRUE(model.friction_pushes.empty());

@@ -437,15 +437,15 @@ SolverSummary RunFrictionContinuation(
     const std::function<bool(const IterationRecord&)>& on_iteration,
     const std::vector<double>* reference) {
   SolverSummary total;
-  const std::vector<Smoothings> stages = ContinuationStages(scene);
-  for (const Smoothings& smoothings : stages) {
+  bool solved = reference != nullptr;  // a state was solved before this stage
+  for (const Smoothings& smoothings : ContinuationStages(scene)) {
     Scene stage = scene;
     stage.material.finite_volume.bending_friction_smoothing = smoothings.bending;
     stage.material.finite_volume.shear_friction_smoothing = smoothings.shear;
     // The obstacles' friction's pushes: those of the last state solved (a load step's, or a
     // stage's), or at the flat start the fabric's own weight's (AddObstacleFrictionTerms).
-    const bool solved = reference != nullptr || &smoothings != &stages.front();
     Model stage_model = BuildModel(stage, reference, solved ? &model.positions : nullptr);
+    solved = true;
     assert(stage_model.positions.size() == model.positions.size());
     stage_model.positions = model.positions;
     const SolverSummary summary = SolveWithSceneOptions(stage, stage_model, method, on_iteration);
